@@ -1,0 +1,41 @@
+# Build-time kernel generation: pdgen (generator library + every laws/*.cpp) writes
+# one kernel header/source pair per law file, plus the law table, into the build
+# tree. pdgen rewrites a file only when its content changes, so editing one law
+# recompiles only that law's kernels.
+file(GLOB PD_LAW_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/laws/*.cpp)
+add_executable(pdgen ${CMAKE_SOURCE_DIR}/generator/pdgen_main.cpp ${PD_LAW_FILES})
+target_link_libraries(pdgen PRIVATE pd_generator)
+target_compile_options(pdgen PRIVATE ${PD_WARNINGS})
+
+set(PD_GEN_DIR ${CMAKE_BINARY_DIR}/generated)
+set(PD_GEN_FILES ${PD_GEN_DIR}/law_table.cpp)
+foreach(law_file ${PD_LAW_FILES})
+  get_filename_component(stem ${law_file} NAME_WE)
+  list(APPEND PD_GEN_FILES ${PD_GEN_DIR}/${stem}.cpp ${PD_GEN_DIR}/${stem}.hpp)
+endforeach()
+
+add_custom_command(
+  OUTPUT ${PD_GEN_DIR}/pdgen.stamp
+  BYPRODUCTS ${PD_GEN_FILES}
+  COMMAND pdgen --out ${PD_GEN_DIR}
+  COMMAND ${CMAKE_COMMAND} -E touch ${PD_GEN_DIR}/pdgen.stamp
+  DEPENDS pdgen
+  COMMENT "Generating law kernels (pdgen)"
+  VERBATIM)
+add_custom_target(generate_kernels DEPENDS ${PD_GEN_DIR}/pdgen.stamp)
+
+set(PD_GEN_SOURCES ${PD_GEN_FILES})
+list(FILTER PD_GEN_SOURCES INCLUDE REGEX "\\.cpp$")
+add_library(pd_kernels STATIC ${PD_GEN_SOURCES})
+add_dependencies(pd_kernels generate_kernels)
+target_include_directories(pd_kernels PUBLIC ${CMAKE_SOURCE_DIR}/runtime ${PD_GEN_DIR})
+# Generated code must compile cleanly: warnings are errors here.
+target_compile_options(pd_kernels PRIVATE -Wall -Wextra -Werror)
+
+# `cmake --build build --target refresh_generated` copies the build's kernels into
+# the committed snapshot generated/, removing snapshot files no longer emitted.
+add_custom_target(refresh_generated
+  COMMAND ${CMAKE_COMMAND} -DFROM=${PD_GEN_DIR} -DTO=${CMAKE_SOURCE_DIR}/generated
+          -P ${CMAKE_SOURCE_DIR}/cmake/SyncGenerated.cmake
+  DEPENDS generate_kernels
+  COMMENT "Refreshing the committed snapshot generated/")

@@ -1,0 +1,105 @@
+// The kernel ABI: the only contract between generated law kernels and the runtime.
+//
+// A law is evaluated one *family* at a time: the center particle (local index 0)
+// and its L neighbours (local indices 1..L). Bond k (0-based, k < L) joins the
+// center to local particle k+1.
+//
+// Sign and volume convention (see docs/conventions.md): the family of particle B
+// adds V_B V_A t_B<A> to the nodal force of B and subtracts it from A, so forces
+// are nodal forces (not densities) and momentum is conserved bond by bond.
+// The tangent is the exact derivative of those nodal forces with respect to the
+// deformed positions y of the family's particles: d f / d y.  (The stiffness
+// matrix a solver wants is its negative.)
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+namespace pd::abi {
+
+// Inputs of one family. Arrays are bond-major: component c of bond k of a vector
+// quantity is at [k*dim + c].
+struct Family {
+  int n_bonds = 0;                 // L
+  const double* xi = nullptr;      // [L*dim] reference bonds  x_k - x_0
+  const double* Y = nullptr;       // [L*dim] deformed bonds   y_k - y_0
+  const double* w = nullptr;       // [L] influence weights
+  const double* alpha = nullptr;   // [L] bond factors, 1 intact, 0 broken (unused by the intact variant)
+  const double* V = nullptr;       // [L] neighbour volumes
+  double V0 = 0.0;                 // center volume
+  double delta = 0.0;              // horizon of the center particle
+  const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
+  const double* moments = nullptr; // [n_moments] output of the moments kernel (setup)
+};
+
+// Factored tangent of one family. With T_ik = d t_i / d Y_k (bond i's force state
+// against bond k's deformed vector):
+//     T_ik = delta_ik * direct_i + sum_s left_i[s] (outer) right_k[s]
+// direct_i = partial t_i / partial Y_i (states held fixed), left_i[s] = partial t_i /
+// partial S_s, right_k[s] = total d S_s / d Y_k (through earlier states too).
+// The center block follows from translation invariance: d/dy_0 = -sum_k d/dY_k.
+struct TangentFactors {
+  double* direct = nullptr;  // [L*dim*dim] row-major per bond
+  double* left = nullptr;    // [L*n_states*dim]
+  double* right = nullptr;   // [L*n_states*dim]
+};
+
+// Setup: horizon sums that do not depend on the deformation (weighted volume,
+// shape tensor, ...). Recompute when alpha changes.
+using MomentsKernel = void (*)(const Family&, double* moments);
+// Nodal forces of the family, [(L+1)*dim], overwritten.
+using ResidualKernel = void (*)(const Family&, double* forces);
+// Tangent factors; also writes the nodal forces when `forces` is not null.
+using TangentKernel = void (*)(const Family&, double* forces, const TangentFactors& factors);
+// Directional derivative of the nodal forces along a local increment dy of the
+// positions of particles 0..L: df = (d f / d y) dy. Cost linear in L.
+using JvpKernel = void (*)(const Family&, const double* dy, double* df);
+// Strain-energy density W of the center particle; the family's energy is V0*W
+// and forces = -d(V0 W)/dy. Null when the law has no energy.
+using EnergyKernel = double (*)(const Family&);
+// Per-particle derived quantities for output (dilatation, strain, ...).
+using OutputsKernel = void (*)(const Family&, double* outputs);
+
+struct OpCounts {
+  int adds = 0, muls = 0, divs = 0, calls = 0;  // calls: sqrt, pow, exp, log, ...
+};
+
+struct KernelVariant {
+  MomentsKernel moments = nullptr;
+  ResidualKernel residual = nullptr;
+  TangentKernel tangent = nullptr;
+  JvpKernel jvp = nullptr;
+  EnergyKernel energy = nullptr;    // may be null
+  OutputsKernel outputs = nullptr;  // may be null when n_outputs == 0
+  OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
+};
+
+struct LawDescriptor {
+  const char* name = "";
+  const char* summary = "";
+  int dim = 0;
+  int n_params = 0;
+  const char* const* param_names = nullptr;
+  int n_moments = 0;
+  int n_states = 0;   // scalar state components (the s index of TangentFactors)
+  int n_outputs = 0;
+  const char* const* output_names = nullptr;
+  KernelVariant damaged;  // reads alpha per bond
+  KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
+};
+
+// Influence function w(r, delta), generated from laws/influence.cpp.
+struct InfluenceDescriptor {
+  const char* name = "";
+  const char* formula = "";
+  double (*weight)(double r, double delta) = nullptr;
+};
+
+// The tables, generated into law_table.cpp.
+std::span<const LawDescriptor> all_laws();
+std::span<const InfluenceDescriptor> all_influences();
+const LawDescriptor* find_law(std::string_view name);
+const InfluenceDescriptor* find_influence(std::string_view name);
+
+}  // namespace pd::abi
