@@ -1,0 +1,27 @@
+// From a law to its kernel programs: moments, residual, tangent factors (the
+// loop-aware chain rule through horizon sums), tangent-vector product, energy, outputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pdgen/kernel_program.hpp"
+#include "pdgen/law.hpp"
+
+namespace pdgen {
+
+struct LawKernelSet {
+  int n_moments = 0;
+  int n_states = 0;  // scalar states the force state depends on (the tangent's s index)
+  std::vector<std::string> moment_names, state_names;
+  KernelProgram moments, residual, tangent, jvp;
+  bool has_energy = false;
+  KernelProgram energy;
+  bool has_outputs = false;
+  KernelProgram outputs;
+};
+
+// `prefix` starts every kernel's function name (e.g. "silling_plane_strain_intact").
+LawKernelSet build_kernels(const Law& law, const std::string& prefix);
+
+}  // namespace pdgen

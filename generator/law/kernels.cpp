@@ -1,0 +1,277 @@
+// The kernel builders. The tangent follows paper 000's Appendix: for bond i and
+// neighbour k,  d t_i / d Y_k = delta_ik dt/dY |_i + sum_s dt/dS_s |_i (x) dS_s/dY_k,
+// where a state S_s = sum_j g_s(Y_j, earlier states) has the total derivative
+//     dS_s/dY_k = dg_s/dY |_k + sum_{s'} C[s][s'] dS_{s'}/dY_k,  C[s][s'] = sum_j dg_s/dS_{s'} |_j.
+// C is one more horizon sum, accumulated in the loop of S_s, so every block
+// factor costs O(1) per bond and the factored tangent O(L).
+#include "pdgen/kernels.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <set>
+#include <stdexcept>
+
+#include "pdgen/diff.hpp"
+
+namespace pdgen {
+
+namespace {
+std::string str(int i) { return std::to_string(i); }
+
+class Builder {
+ public:
+  Builder(const Law& law, std::string prefix) : law_(law), prefix_(std::move(prefix)), D_(law.dim()) {
+    for (const SumDef& s : law.sums()) (s.is_state ? states_ : moments_).push_back(&s);
+    // Only the states the force needs enter the tangent.
+    std::vector<Expr> force_roots;
+    for (int c = 0; c < D_; ++c) force_roots.push_back(law.force_state()[c]);
+    force_states_ = needed(force_roots, true);
+  }
+
+  LawKernelSet build() {
+    LawKernelSet out;
+    for (const SumDef* m : moments_) out.moment_names.push_back(m->name);
+    for (const SumDef* s : force_states_) out.state_names.push_back(s->name);
+    out.n_moments = static_cast<int>(moments_.size());
+    out.n_states = static_cast<int>(force_states_.size());
+    out.moments = moments_kernel();
+    out.residual = residual_kernel();
+    out.tangent = tangent_kernel();
+    out.jvp = jvp_kernel();
+    out.has_energy = law_.has_energy();
+    if (out.has_energy) out.energy = particle_value_kernel("energy", "double", {{"W", law_.energy_density()}});
+    out.has_outputs = !law_.outputs().empty();
+    if (out.has_outputs) {
+      std::vector<std::pair<std::string, Expr>> values;
+      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({"outputs[" + str(static_cast<int>(i)) + "]", law_.outputs()[i].value});
+      out.outputs = particle_value_kernel("outputs", "void", values);
+    }
+    return out;
+  }
+
+ private:
+  // The states (or moments) reachable from `roots`, through sum bodies, in declaration order.
+  std::vector<const SumDef*> needed(const std::vector<Expr>& roots, bool states) const {
+    std::set<int> seen;
+    std::vector<Expr> work = roots;
+    while (!work.empty()) {
+      const Expr e = work.back();
+      work.pop_back();
+      for (int s : free_symbols(e))
+        for (const SumDef& d : law_.sums())
+          if (symbol_index(d.symbol) == s && seen.insert(s).second) work.push_back(d.body);
+    }
+    std::vector<const SumDef*> out;
+    for (const SumDef& d : law_.sums())
+      if (d.is_state == states && seen.count(symbol_index(d.symbol))) out.push_back(&d);
+    return out;
+  }
+
+  static std::string var(const SumDef& s) { return "s_" + s.name; }
+
+  // Bindings shared by every kernel of the law. Moments are read from fam.moments
+  // unless the kernel computes them.
+  std::map<int, Binding> base_bindings(bool moments_are_inputs) const {
+    std::map<int, Binding> b;
+    const std::string D = str(D_);
+    for (int c = 0; c < D_; ++c) {
+      b[symbol_index(law_.xi()[c])] = {"xi_" + str(c), "fam.xi[k * " + D + " + " + str(c) + "]", true};
+      b[symbol_index(law_.Y()[c])] = {"Y_" + str(c), "fam.Y[k * " + D + " + " + str(c) + "]", true};
+    }
+    b[symbol_index(law_.w())] = {"w", "fam.w[k]", true};
+    b[symbol_index(law_.alpha())] = {"alpha", "fam.alpha[k]", true};
+    b[symbol_index(law_.V())] = {"V", "fam.V[k]", true};
+    b[symbol_index(law_.V0())] = {"V0", "fam.V0", false};
+    b[symbol_index(law_.delta())] = {"delta", "fam.delta", false};
+    for (std::size_t i = 0; i < law_.params().size(); ++i)
+      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], "fam.params[" + str(static_cast<int>(i)) + "]", false};
+    for (std::size_t i = 0; i < moments_.size(); ++i)
+      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? "fam.moments[" + str(static_cast<int>(i)) + "]" : "", false};
+    for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};
+    return b;
+  }
+
+  KernelProgram program(const std::string& kind, const std::string& ret, std::vector<std::string> params,
+                        std::vector<std::string> names, bool moments_are_inputs) const {
+    KernelProgram p;
+    p.name = prefix_ + "_" + kind;
+    p.return_type = ret;
+    p.params = std::move(params);
+    p.param_names = std::move(names);
+    p.bindings = base_bindings(moments_are_inputs);
+    return p;
+  }
+
+  // One loop per level of the given sums: level-l sums only use sums of lower levels.
+  // `extra(sum, segment)` adds companion accumulations (tangent couplings, JVP sums).
+  void sum_loops(KernelProgram& p, const std::vector<const SumDef*>& sums,
+                 const std::function<void(const SumDef&, Segment&)>& extra = {}) const {
+    int max_level = -1;
+    for (const SumDef* s : sums) max_level = std::max(max_level, s->level);
+    for (int level = 0; level <= max_level; ++level) {
+      Segment seg;
+      seg.loop = true;
+      for (const SumDef* s : sums) {
+        if (s->level != level) continue;
+        seg.before.push_back("double " + var(*s) + " = 0.0;");
+        seg.stores.push_back({var(*s), s->body, StoreMode::Accumulate, ""});
+        if (extra) extra(*s, seg);
+      }
+      if (!seg.stores.empty()) p.segments.push_back(seg);
+    }
+  }
+
+  std::vector<Expr> force_roots() const {
+    std::vector<Expr> r;
+    for (int c = 0; c < D_; ++c) r.push_back(law_.force_state()[c]);
+    return r;
+  }
+
+  // Nodal forces: f_0 += V0 V t, f_{k+1} = -V0 V t (the convention of kernel_abi.hpp).
+  void force_stores(Segment& seg, const std::vector<Expr>& t, const std::string& array, const std::string& guard) const {
+    const std::string D = str(D_);
+    std::string zero;
+    for (int c = 0; c < D_; ++c) zero += array + "[" + str(c) + "] = 0.0; ";
+    seg.before.push_back(guard.empty() ? zero : "if (" + guard + ") { " + zero + "}");
+    for (int c = 0; c < D_; ++c) {
+      const Expr v = law_.V0() * law_.V() * t[static_cast<std::size_t>(c)];
+      seg.stores.push_back({array + "[(k + 1) * " + D + " + " + str(c) + "]", v, StoreMode::SetNegated, guard});
+      seg.stores.push_back({array + "[" + str(c) + "]", v, StoreMode::Accumulate, guard});
+    }
+  }
+
+  KernelProgram moments_kernel() const {
+    KernelProgram p = program("moments", "void", {"const pd::abi::Family& fam", "double* moments"}, {"fam", "moments"}, false);
+    sum_loops(p, moments_);
+    Segment out;
+    for (std::size_t i = 0; i < moments_.size(); ++i)
+      out.stores.push_back({"moments[" + str(static_cast<int>(i)) + "]", moments_[i]->symbol, StoreMode::Set, ""});
+    if (!out.stores.empty()) p.segments.push_back(out);
+    return p;
+  }
+
+  KernelProgram residual_kernel() const {
+    KernelProgram p = program("residual", "void", {"const pd::abi::Family& fam", "double* forces"}, {"fam", "forces"}, true);
+    sum_loops(p, force_states_);
+    Segment seg;
+    seg.loop = true;
+    force_stores(seg, force_roots(), "forces", "");
+    p.segments.push_back(seg);
+    return p;
+  }
+
+  KernelProgram tangent_kernel() const {
+    KernelProgram p = program("tangent", "void",
+                              {"const pd::abi::Family& fam", "double* forces", "const pd::abi::TangentFactors& factors"},
+                              {"fam", "forces", "factors"}, true);
+    const int NS = static_cast<int>(force_states_.size());
+    // Coupling sums C[s][s'] between states, bound to per-family variables.
+    std::map<std::pair<int, int>, Expr> coupling;
+    for (int s = 0; s < NS; ++s)
+      for (int q = 0; q < s; ++q) {
+        const Expr dg = diff(force_states_[s]->body, force_states_[q]->symbol);
+        if (dg.is_const(0.0)) continue;
+        const std::string name = "c_" + str(s) + "_" + str(q);
+        const Expr sym = symbol(name, SymbolKind::Sum, 0);
+        p.bindings[symbol_index(sym)] = {name, "", false};
+        coupling[{s, q}] = sym;
+      }
+    sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
+      const int s = index_of(sd);
+      for (auto& [key, sym] : coupling)
+        if (key.first == s) {
+          seg.before.push_back("double c_" + str(key.first) + "_" + str(key.second) + " = 0.0;");
+          seg.stores.push_back({"c_" + str(key.first) + "_" + str(key.second),
+                                diff(sd.body, force_states_[key.second]->symbol), StoreMode::Accumulate, ""});
+        }
+    });
+    Segment seg;
+    seg.loop = true;
+    const std::vector<Expr> t = force_roots();
+    force_stores(seg, t, "forces", "forces != nullptr");
+    const std::string D = str(D_), DD = str(D_ * D_), NSs = str(NS);
+    for (int r = 0; r < D_; ++r)
+      for (int c = 0; c < D_; ++c)
+        seg.stores.push_back({"factors.direct[k * " + DD + " + " + str(r * D_ + c) + "]", diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
+    std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS), std::vector<Expr>(static_cast<std::size_t>(D_)));
+    for (int s = 0; s < NS; ++s) {
+      for (int c = 0; c < D_; ++c) {
+        Expr v = diff(force_states_[s]->body, law_.Y()[c]);
+        for (int q = 0; q < s; ++q)
+          if (auto it = coupling.find({s, q}); it != coupling.end()) v = v + it->second * R[q][c];
+        R[s][c] = v;
+        seg.stores.push_back({"factors.right[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(c) + "]", v, StoreMode::Set, ""});
+      }
+      for (int r = 0; r < D_; ++r)
+        seg.stores.push_back({"factors.left[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(r) + "]",
+                              diff(t[r], force_states_[s]->symbol), StoreMode::Set, ""});
+    }
+    p.segments.push_back(seg);
+    return p;
+  }
+
+  // df = (df/dy) dy with dY_k = dy_{k+1} - dy_0, through the states' increments.
+  KernelProgram jvp_kernel() const {
+    KernelProgram p = program("jvp", "void", {"const pd::abi::Family& fam", "const double* dy", "double* df"},
+                              {"fam", "dy", "df"}, true);
+    const std::string D = str(D_);
+    Vec dY(D_);
+    for (int c = 0; c < D_; ++c) {
+      dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput, 9 + c);
+      p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), "dy[(k + 1) * " + D + " + " + str(c) + "] - dy[" + str(c) + "]", true};
+    }
+    std::vector<Expr> dS;
+    for (const SumDef* s : force_states_) {
+      dS.push_back(symbol("d_" + s->name, SymbolKind::Sum, 0));
+      p.bindings[symbol_index(dS.back())] = {"ds_" + s->name, "", false};
+    }
+    auto directional = [&](Expr e) {
+      std::vector<Expr> terms;
+      for (int c = 0; c < D_; ++c) terms.push_back(diff(e, law_.Y()[c]) * dY[c]);
+      for (std::size_t s = 0; s < force_states_.size(); ++s) terms.push_back(diff(e, force_states_[s]->symbol) * dS[s]);
+      return add(terms);
+    };
+    sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
+      seg.before.push_back("double ds_" + sd.name + " = 0.0;");
+      seg.stores.push_back({"ds_" + sd.name, directional(sd.body), StoreMode::Accumulate, ""});
+    });
+    Segment seg;
+    seg.loop = true;
+    std::vector<Expr> dt;
+    for (Expr t : force_roots()) dt.push_back(directional(t));
+    force_stores(seg, dt, "df", "");
+    p.segments.push_back(seg);
+    return p;
+  }
+
+  KernelProgram particle_value_kernel(const std::string& kind, const std::string& ret,
+                                      const std::vector<std::pair<std::string, Expr>>& values) const {
+    const bool returns = ret != "void";
+    KernelProgram p = returns ? program(kind, ret, {"const pd::abi::Family& fam"}, {"fam"}, true)
+                              : program(kind, ret, {"const pd::abi::Family& fam", "double* outputs"}, {"fam", "outputs"}, true);
+    std::vector<Expr> roots;
+    for (auto& v : values) roots.push_back(v.second);
+    sum_loops(p, needed(roots, true));
+    Segment seg;
+    for (auto& [target, value] : values) seg.stores.push_back({returns ? "const double " + target : target, value, StoreMode::Set, ""});
+    p.segments.push_back(seg);
+    if (returns) p.epilogue.push_back("return " + values.front().first + ";");
+    return p;
+  }
+
+  int index_of(const SumDef& sd) const {
+    for (std::size_t i = 0; i < force_states_.size(); ++i)
+      if (force_states_[i] == &sd) return static_cast<int>(i);
+    throw std::logic_error("state not found");
+  }
+
+  const Law& law_;
+  std::string prefix_;
+  int D_;
+  std::vector<const SumDef*> moments_, states_, force_states_;
+};
+}  // namespace
+
+LawKernelSet build_kernels(const Law& law, const std::string& prefix) { return Builder(law, prefix).build(); }
+
+}  // namespace pdgen

@@ -1,0 +1,115 @@
+// The law model: inputs, parameters, horizon sums (moment/state classification), force state.
+#include "pdgen/law.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include "pdgen/diff.hpp"
+
+namespace pdgen {
+
+namespace {
+void check_identifier(const std::string& s) {
+  const bool ok = !s.empty() && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') &&
+                  std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  if (!ok) throw std::invalid_argument("law: '" + s + "' is not a C identifier");
+}
+Vec bond_vector(const std::string& name, int dim, int first_slot) {
+  Vec v(dim);
+  for (int i = 0; i < dim; ++i) v[i] = symbol(name + "_" + std::to_string(i), SymbolKind::BondInput, first_slot + i);
+  return v;
+}
+}  // namespace
+
+// Bond-input slots: xi 0..2, Y 3..5, w 6, alpha 7, V 8 (read by the emitter).
+Law::Law(std::string name, int dim, std::string summary)
+    : name_(std::move(name)), summary_(std::move(summary)), dim_(dim) {
+  check_identifier(name_);
+  if (dim != 2 && dim != 3) throw std::invalid_argument("law " + name_ + ": dimension must be 2 or 3");
+  xi_ = bond_vector("xi", dim, 0);
+  Y_ = bond_vector("Y", dim, 3);
+  w_ = symbol("w", SymbolKind::BondInput, 6);
+  alpha_ = symbol("alpha", SymbolKind::BondInput, 7);
+  V_ = symbol("V", SymbolKind::BondInput, 8);
+  V0_ = symbol("V0", SymbolKind::ParticleInput, 0);
+  delta_ = symbol("delta", SymbolKind::ParticleInput, 1);
+}
+
+Expr Law::param(const std::string& name) {
+  check_identifier(name);
+  for (std::size_t i = 0; i < param_names_.size(); ++i)
+    if (param_names_[i] == name) return params_[i];
+  param_names_.push_back(name);
+  params_.push_back(symbol(name, SymbolKind::Param, static_cast<int>(params_.size())));
+  return params_.back();
+}
+
+bool Law::is_bond_input(int s) const {
+  return Context::global().symbol(s).kind == SymbolKind::BondInput;
+}
+
+Expr Law::sum(const std::string& name, Expr body) {
+  check_identifier(name);
+  for (const SumDef& d : sums_)
+    if (d.name == name) throw std::invalid_argument("law " + name_ + ": sum '" + name + "' declared twice");
+  SumDef def{name, symbol(name, SymbolKind::Sum, static_cast<int>(sums_.size())), body, false, 0};
+  std::vector<int> y_symbols;
+  for (int c = 0; c < dim_; ++c) y_symbols.push_back(symbol_index(Y_[c]));
+  for (int s : free_symbols(body)) {
+    if (std::find(y_symbols.begin(), y_symbols.end(), s) != y_symbols.end()) def.is_state = true;
+    for (const SumDef& earlier : sums_) {
+      if (symbol_index(earlier.symbol) != s) continue;
+      def.is_state = def.is_state || earlier.is_state;
+      def.level = std::max(def.level, earlier.level + 1);
+    }
+  }
+  sums_.push_back(def);
+  return def.symbol;
+}
+
+Vec Law::sum(const std::string& name, const Vec& body) {
+  Vec r(body.dim());
+  for (int i = 0; i < body.dim(); ++i) r[i] = sum(name + "_" + std::to_string(i), body[i]);
+  return r;
+}
+
+Mat Law::sum(const std::string& name, const Mat& body) {
+  Mat r(body.dim());
+  for (int i = 0; i < body.dim(); ++i)
+    for (int j = 0; j < body.dim(); ++j) r(i, j) = sum(name + "_" + std::to_string(i) + "_" + std::to_string(j), body(i, j));
+  return r;
+}
+
+void Law::force(const Vec& t) {
+  if (t.dim() != dim_) throw std::invalid_argument("law " + name_ + ": force state has the wrong dimension");
+  force_ = t;
+}
+
+Law Law::with_alpha_folded() const {
+  const std::unordered_map<int, Expr> one{{symbol_index(alpha_), Expr(1.0)}};
+  Law r = *this;
+  for (SumDef& d : r.sums_) d.body = substitute(d.body, one);
+  for (int c = 0; c < dim_; ++c) r.force_[c] = substitute(force_[c], one);
+  if (has_energy_) r.energy_ = substitute(energy_, one);
+  for (OutputDef& o : r.outputs_) o.value = substitute(o.value, one);
+  return r;
+}
+
+std::vector<LawEntry>& law_registry() {
+  static std::vector<LawEntry> r;
+  return r;
+}
+std::vector<InfluenceDef>& influence_registry() {
+  static std::vector<InfluenceDef> r;
+  return r;
+}
+std::string file_stem(const char* path) {
+  std::string p(path);
+  const auto slash = p.find_last_of("/\\");
+  if (slash != std::string::npos) p = p.substr(slash + 1);
+  const auto dot = p.find('.');
+  return dot == std::string::npos ? p : p.substr(0, dot);
+}
+
+}  // namespace pdgen
