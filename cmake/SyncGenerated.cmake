@@ -1,5 +1,6 @@
 # Compares (MODE=check) or copies (default) the generated kernels FROM the build
 # tree TO the committed snapshot. Only .cpp and .hpp files take part.
+cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...) in script mode
 file(GLOB from_files RELATIVE ${FROM} ${FROM}/*.cpp ${FROM}/*.hpp)
 file(GLOB to_files RELATIVE ${TO} ${TO}/*.cpp ${TO}/*.hpp)
 set(stale "")

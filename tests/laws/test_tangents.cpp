@@ -1,0 +1,174 @@
+// Every generated law: the factored tangent against central finite differences of the
+// generated residual, block kind by block kind, on interior, truncated and damaged
+// families; the tangent-vector product; momentum balance; translation invariance;
+// energy consistency; the intact variant against the damaged one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "family_fixture.hpp"
+
+using pd::test::FamilyOptions;
+using pd::test::make_family;
+using pd::test::TestFamily;
+using pd::test::Truncation;
+
+namespace {
+struct Case {
+  const pd::abi::LawDescriptor* law;
+  Truncation truncation;
+  bool broken;
+};
+
+std::string case_name(const testing::TestParamInfo<Case>& info) {
+  const char* t[] = {"interior", "edge", "corner"};
+  return std::string(info.param.law->name) + "_" + t[static_cast<int>(info.param.truncation)] +
+         (info.param.broken ? "_broken" : "_intact");
+}
+
+std::vector<Case> all_cases() {
+  std::vector<Case> cases;
+  for (const auto& law : pd::abi::all_laws())
+    for (Truncation t : {Truncation::Interior, Truncation::Edge, Truncation::Corner})
+      for (bool broken : {false, true}) cases.push_back({&law, t, broken});
+  return cases;
+}
+
+class LawTangent : public testing::TestWithParam<Case> {
+ protected:
+  TestFamily family(unsigned seed) const {
+    FamilyOptions o;
+    o.dim = GetParam().law->dim;
+    o.truncation = GetParam().truncation;
+    o.broken_bonds = GetParam().broken;
+    o.horizon_ratio = o.dim == 2 ? 3.0 : 2.0;
+    o.seed = seed;
+    return make_family(*GetParam().law, o);
+  }
+};
+
+// Relative error of one kind of block: max |M - M_fd| over the kind's entries
+// divided by max |M_fd| over them (so small off-diagonal blocks are judged on their own scale).
+struct BlockErrors {
+  double center = 0, on_diagonal = 0, off_diagonal = 0, center_coupling = 0;
+};
+
+BlockErrors block_errors(const TestFamily& f, const std::vector<double>& M, const std::vector<double>& Mfd) {
+  const int d = f.dim, n = f.dofs();
+  double err[4] = {0, 0, 0, 0}, scale[4] = {0, 0, 0, 0};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i / d, b = j / d;
+      const int kind = (a == 0 && b == 0) ? 0 : (a == 0 || b == 0) ? 3 : (a == b ? 1 : 2);
+      err[kind] = std::max(err[kind], std::fabs(M[i * n + j] - Mfd[i * n + j]));
+      scale[kind] = std::max(scale[kind], std::fabs(Mfd[i * n + j]));
+    }
+  auto rel = [&](int k) { return scale[k] > 0 ? err[k] / scale[k] : err[k]; };
+  return {rel(0), rel(1), rel(2), rel(3)};
+}
+}  // namespace
+
+TEST_P(LawTangent, EveryBlockKindMatchesCentralDifferences) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    TestFamily f = family(seed);
+    ASSERT_GT(f.bonds(), 3);
+    const auto M = f.tangent_matrix(f.law->damaged);
+    const auto Mfd = f.fd_matrix(f.law->damaged, 1e-6 * f.delta);
+    const BlockErrors e = block_errors(f, M, Mfd);
+    EXPECT_LE(e.center, 1e-6) << "seed " << seed;
+    EXPECT_LE(e.on_diagonal, 1e-6) << "seed " << seed;
+    EXPECT_LE(e.off_diagonal, 1e-6) << "seed " << seed;
+    EXPECT_LE(e.center_coupling, 1e-6) << "seed " << seed;
+  }
+}
+
+TEST_P(LawTangent, TangentKernelAlsoWritesTheResidual) {
+  TestFamily f = family(4);
+  pd::TangentScratch scratch;
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs()), -7.0);
+  f.law->damaged.tangent(f.view(), forces.data(), scratch.view(f.dim, f.law->n_states, f.bonds()));
+  const auto expected = f.forces(f.law->damaged);
+  for (int i = 0; i < f.dofs(); ++i) EXPECT_DOUBLE_EQ(forces[i], expected[i]);
+}
+
+TEST_P(LawTangent, TangentVectorProductEqualsTangentTimesVector) {
+  TestFamily f = family(5);
+  const int n = f.dofs();
+  std::vector<double> dy(static_cast<std::size_t>(n)), df(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) dy[i] = std::sin(1.3 * i + 0.4);
+  f.law->damaged.jvp(f.view(), dy.data(), df.data());
+  const auto M = f.tangent_matrix(f.law->damaged);
+  double scale = 0;
+  for (int i = 0; i < n; ++i) {
+    double v = 0;
+    for (int j = 0; j < n; ++j) v += M[i * n + j] * dy[j];
+    scale = std::max(scale, std::fabs(v));
+    EXPECT_NEAR(df[i], v, 1e-10 * (1 + scale)) << "dof " << i;
+  }
+}
+
+TEST_P(LawTangent, ForcesOfAFamilySumToZero) {
+  TestFamily f = family(6);
+  const auto forces = f.forces(f.law->damaged);
+  for (int c = 0; c < f.dim; ++c) {
+    double s = 0, scale = 0;
+    for (int a = 0; a <= f.bonds(); ++a) s += forces[a * f.dim + c], scale += std::fabs(forces[a * f.dim + c]);
+    EXPECT_LE(std::fabs(s), 1e-12 * scale) << "component " << c;
+  }
+}
+
+TEST_P(LawTangent, RigidTranslationGivesZeroForce) {
+  TestFamily f = family(7);
+  std::vector<double> y = f.x;
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] += (i % f.dim == 0 ? 0.37 : -1.21);
+  f.set_positions(y);
+  for (double v : f.forces(f.law->damaged)) EXPECT_NEAR(v, 0.0, 1e-12);
+}
+
+TEST_P(LawTangent, IntactVariantEqualsDamagedWithAllBondsIntact) {
+  // The intact variant is only valid when no bond is broken: mend them all.
+  TestFamily f = family(9);
+  std::fill(f.alpha.begin(), f.alpha.end(), 1.0);
+  f.update_moments(f.law->damaged);
+  const auto damaged = f.forces(f.law->damaged);
+  std::vector<double> m_intact(static_cast<std::size_t>(f.law->n_moments) + 1);
+  f.law->intact.moments(f.view(), m_intact.data());
+  for (int i = 0; i < f.law->n_moments; ++i) EXPECT_NEAR(m_intact[i], f.moments[i], 1e-13 * std::fabs(f.moments[i]));
+  const auto intact = f.forces(f.law->intact);
+  for (int i = 0; i < f.dofs(); ++i) EXPECT_NEAR(intact[i], damaged[i], 1e-13 * (1 + std::fabs(damaged[i])));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllLaws, LawTangent, testing::ValuesIn(all_cases()), case_name);
+
+// Laws that declare a strain-energy density.
+class LawEnergy : public LawTangent {};
+
+TEST_P(LawEnergy, ForcesAreMinusTheGradientOfTheEnergy) {
+  TestFamily f = family(8);
+  const auto forces = f.forces(f.law->damaged);
+  const double step = 1e-6 * f.delta;
+  double scale = 0;
+  for (double v : forces) scale = std::max(scale, std::fabs(v));
+  std::vector<double> y0 = f.y;
+  for (int j = 0; j < f.dofs(); ++j) {
+    std::vector<double> p = y0;
+    p[j] += step;
+    f.set_positions(p);
+    const double ep = f.V0 * f.law->damaged.energy(f.view());
+    p[j] -= 2 * step;
+    f.set_positions(p);
+    const double em = f.V0 * f.law->damaged.energy(f.view());
+    EXPECT_NEAR(forces[j], -(ep - em) / (2 * step), 1e-6 * scale) << "dof " << j;
+  }
+}
+
+std::vector<Case> energy_cases() {
+  std::vector<Case> cases;
+  for (const Case& c : all_cases())
+    if (c.law->damaged.energy != nullptr) cases.push_back(c);
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(LawsWithEnergy, LawEnergy, testing::ValuesIn(energy_cases()), case_name);

@@ -1,0 +1,146 @@
+// Random families for law tests: a perturbed lattice neighbourhood of one center
+// particle, interior or truncated by a free edge or corner, optionally with broken
+// bonds, under a random smooth deformation plus noise.
+#pragma once
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "kernel_abi.hpp"
+#include "local_matrix.hpp"
+
+namespace pd::test {
+
+enum class Truncation { Interior, Edge, Corner };
+
+struct TestFamily {
+  int dim = 2;
+  std::vector<double> x;  // [(L+1)*dim] reference positions, center first
+  std::vector<double> y;  // [(L+1)*dim] deformed positions
+  std::vector<double> xi, Y, w, alpha, V, params, moments;
+  double V0 = 1.0, delta = 3.0;
+  const abi::LawDescriptor* law = nullptr;
+
+  int bonds() const { return static_cast<int>(w.size()); }
+  int dofs() const { return (bonds() + 1) * dim; }
+
+  abi::Family view() const {
+    abi::Family f;
+    f.n_bonds = bonds();
+    f.xi = xi.data();
+    f.Y = Y.data();
+    f.w = w.data();
+    f.alpha = alpha.data();
+    f.V = V.data();
+    f.V0 = V0;
+    f.delta = delta;
+    f.params = params.data();
+    f.moments = moments.data();
+    return f;
+  }
+  void set_positions(const std::vector<double>& positions) {
+    y = positions;
+    for (int k = 0; k < bonds(); ++k)
+      for (int c = 0; c < dim; ++c) Y[k * dim + c] = y[(k + 1) * dim + c] - y[c];
+  }
+  void update_moments(const abi::KernelVariant& v) {
+    moments.assign(static_cast<std::size_t>(law->n_moments) + 1, 0.0);
+    v.moments(view(), moments.data());
+  }
+  std::vector<double> forces(const abi::KernelVariant& v) const {
+    std::vector<double> f(static_cast<std::size_t>(dofs()));
+    v.residual(view(), f.data());
+    return f;
+  }
+  // d f / d y formed from the kernel's tangent factors.
+  std::vector<double> tangent_matrix(const abi::KernelVariant& v) const {
+    TangentScratch scratch;
+    const auto fac = scratch.view(dim, law->n_states, bonds());
+    v.tangent(view(), nullptr, fac);
+    std::vector<double> M(static_cast<std::size_t>(dofs() * dofs()));
+    form_local_matrix(dim, law->n_states, view(), fac, M.data());
+    return M;
+  }
+  // Central differences of the residual in y, column by column.
+  std::vector<double> fd_matrix(const abi::KernelVariant& v, double step) {
+    const int n = dofs();
+    std::vector<double> M(static_cast<std::size_t>(n * n));
+    const std::vector<double> y0 = y;
+    for (int j = 0; j < n; ++j) {
+      std::vector<double> p = y0;
+      p[j] += step;
+      set_positions(p);
+      const auto fp = forces(v);
+      p[j] -= 2 * step;
+      set_positions(p);
+      const auto fm = forces(v);
+      for (int i = 0; i < n; ++i) M[i * n + j] = (fp[i] - fm[i]) / (2 * step);
+    }
+    set_positions(y0);
+    return M;
+  }
+};
+
+struct FamilyOptions {
+  int dim = 2;
+  double horizon_ratio = 3.0;  // delta / h
+  Truncation truncation = Truncation::Interior;
+  bool broken_bonds = false;
+  double strain = 0.05;  // size of the random displacement gradient
+  unsigned seed = 1;
+};
+
+inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions& o) {
+  std::mt19937 rng(o.seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int d = o.dim;
+  const double h = 0.5 + 0.5 * (u(rng) + 1.0);  // lattice spacing in [0.5, 1.5]
+  TestFamily f;
+  f.dim = d;
+  f.law = &law;
+  f.delta = o.horizon_ratio * h;
+  f.V0 = std::pow(h, d);
+  for (int c = 0; c < d; ++c) f.x.push_back(0.1 * h * u(rng));
+  const int n = static_cast<int>(std::ceil(o.horizon_ratio)) + 1;
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j)
+      for (int l = (d == 3 ? -n : 0); l <= (d == 3 ? n : 0); ++l) {
+        if (i == 0 && j == 0 && l == 0) continue;
+        const int idx[3] = {i, j, l};
+        double p[3], r2 = 0.0;
+        for (int c = 0; c < d; ++c) {
+          p[c] = idx[c] * h + 0.15 * h * u(rng);
+          r2 += (p[c] - f.x[c]) * (p[c] - f.x[c]);
+        }
+        if (r2 > f.delta * f.delta) continue;
+        if (o.truncation != Truncation::Interior && p[0] > 0.5 * h) continue;
+        if (o.truncation == Truncation::Corner && p[1] > 0.5 * h) continue;
+        for (int c = 0; c < d; ++c) f.x.push_back(p[c]);
+      }
+  const int L = static_cast<int>(f.x.size()) / d - 1;
+  f.xi.resize(static_cast<std::size_t>(L * d));
+  f.Y.resize(f.xi.size());
+  for (int k = 0; k < L; ++k) {
+    for (int c = 0; c < d; ++c) f.xi[k * d + c] = f.x[(k + 1) * d + c] - f.x[c];
+    f.w.push_back(0.2 + 0.4 * (u(rng) + 1.0));
+    f.V.push_back(f.V0 * (0.8 + 0.2 * (u(rng) + 1.0)));
+    f.alpha.push_back(o.broken_bonds && (k % 4 == 1 || u(rng) > 0.6) ? 0.0 : 1.0);
+  }
+  for (int p = 0; p < law.n_params; ++p) f.params.push_back(0.5 + 0.5 * (u(rng) + 1.0));
+  // y = x + H x + noise, with a random displacement gradient H.
+  double H[9];
+  for (double& e : H) e = o.strain * u(rng);
+  std::vector<double> y(f.x.size());
+  for (int a = 0; a <= L; ++a)
+    for (int r = 0; r < d; ++r) {
+      double v = f.x[a * d + r] + 0.2 * o.strain * h * u(rng);
+      for (int c = 0; c < d; ++c) v += H[r * 3 + c] * f.x[a * d + c];
+      y[a * d + r] = v;
+    }
+  f.set_positions(y);
+  f.update_moments(law.damaged);
+  return f;
+}
+
+}  // namespace pd::test
