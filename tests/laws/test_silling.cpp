@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "family_fixture.hpp"
+#include "verify/random_family.hpp"
 
-using pd::test::FamilyOptions;
-using pd::test::make_family;
-using pd::test::TestFamily;
-using pd::test::Truncation;
+using pd::verify::FamilyOptions;
+using pd::verify::make_family;
+using pd::verify::TestFamily;
+using pd::verify::Truncation;
 
 namespace {
 // Nodal forces of one family, bond by bond, with K = params[0], G = params[1].

@@ -8,12 +8,13 @@
 #include <cmath>
 #include <string>
 
-#include "family_fixture.hpp"
+#include "verify/random_family.hpp"
+#include "verify/tangent_check.hpp"
 
-using pd::test::FamilyOptions;
-using pd::test::make_family;
-using pd::test::TestFamily;
-using pd::test::Truncation;
+using pd::verify::FamilyOptions;
+using pd::verify::make_family;
+using pd::verify::TestFamily;
+using pd::verify::Truncation;
 
 namespace {
 struct Case {
@@ -49,25 +50,6 @@ class LawTangent : public testing::TestWithParam<Case> {
   }
 };
 
-// Relative error of one kind of block: max |M - M_fd| over the kind's entries
-// divided by max |M_fd| over them (so small off-diagonal blocks are judged on their own scale).
-struct BlockErrors {
-  double center = 0, on_diagonal = 0, off_diagonal = 0, center_coupling = 0;
-};
-
-BlockErrors block_errors(const TestFamily& f, const std::vector<double>& M, const std::vector<double>& Mfd) {
-  const int d = f.dim, n = f.dofs();
-  double err[4] = {0, 0, 0, 0}, scale[4] = {0, 0, 0, 0};
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const int a = i / d, b = j / d;
-      const int kind = (a == 0 && b == 0) ? 0 : (a == 0 || b == 0) ? 3 : (a == b ? 1 : 2);
-      err[kind] = std::max(err[kind], std::fabs(M[i * n + j] - Mfd[i * n + j]));
-      scale[kind] = std::max(scale[kind], std::fabs(Mfd[i * n + j]));
-    }
-  auto rel = [&](int k) { return scale[k] > 0 ? err[k] / scale[k] : err[k]; };
-  return {rel(0), rel(1), rel(2), rel(3)};
-}
 }  // namespace
 
 TEST_P(LawTangent, EveryBlockKindMatchesCentralDifferences) {
@@ -76,7 +58,7 @@ TEST_P(LawTangent, EveryBlockKindMatchesCentralDifferences) {
     ASSERT_GT(f.bonds(), 3);
     const auto M = f.tangent_matrix(f.law->damaged);
     const auto Mfd = f.fd_matrix(f.law->damaged, 1e-6 * f.delta);
-    const BlockErrors e = block_errors(f, M, Mfd);
+    const pd::verify::BlockErrors e = pd::verify::block_errors(f, M, Mfd);
     EXPECT_LE(e.center, 1e-6) << "seed " << seed;
     EXPECT_LE(e.on_diagonal, 1e-6) << "seed " << seed;
     EXPECT_LE(e.off_diagonal, 1e-6) << "seed " << seed;

@@ -1,4 +1,4 @@
-// Random families for law tests: a perturbed lattice neighbourhood of one center
+// Random families for law checks (tests and `pd check-law`): a perturbed lattice neighbourhood of one center
 // particle, interior or truncated by a free edge or corner, optionally with broken
 // bonds, under a random smooth deformation plus noise.
 #pragma once
@@ -10,7 +10,7 @@
 #include "kernel_abi.hpp"
 #include "local_matrix.hpp"
 
-namespace pd::test {
+namespace pd::verify {
 
 enum class Truncation { Interior, Edge, Corner };
 
@@ -143,4 +143,4 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
   return f;
 }
 
-}  // namespace pd::test
+}  // namespace pd::verify

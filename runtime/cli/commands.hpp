@@ -1,0 +1,14 @@
+// The `pd` subcommands. Each returns the process exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pd::cli {
+
+using Args = std::vector<std::string>;
+
+int laws_command(const Args& args);       // pd laws: the generated laws and influence functions
+int check_law_command(const Args& args);  // pd check-law NAME: tangent vs finite differences
+
+}  // namespace pd::cli
