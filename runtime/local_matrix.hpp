@@ -9,35 +9,76 @@ namespace pd {
 
 // M = d f / d y for the family's particles 0..L, row-major, size n = (L+1)*dim.
 // With c_i = V0*V_i, f_0 = sum_i c_i t_i and f_{i+1} = -c_i t_i (kernel_abi.hpp),
-// and T_ik = d t_i / d Y_k:
+// and T_ik = d t_i / d Y_k = delta_ik direct_i + sum_s left_i[s] (x) right_k[s]:
 //   M[i+1][k+1] = -c_i T_ik       M[i+1][0] =  c_i sum_k T_ik
 //   M[0][k+1]   = sum_i c_i T_ik   M[0][0]   = -sum_i c_i sum_k T_ik
-// Cost O(L^2 dim^2 n_states): the price of an explicit matrix; the JVP kernel is O(L).
-inline void form_local_matrix(int dim, int n_states, const abi::Family& fam,
-                              const abi::TangentFactors& fac, double* M) {
-  const int L = fam.n_bonds;
-  const int n = (L + 1) * dim;
-  for (int a = 0; a < n * n; ++a) M[a] = 0.0;
-  const int dd = dim * dim;
-  double T[9];
+// The neighbour block is a rank-n_states product written row by row (contiguous
+// stores); the center row and column use the sums over k of right_k and over i of
+// c_i left_i, so only the neighbour block costs O(L^2).
+inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac,
+                              double* M) {
+  const int L = fam.n_bonds, d = dim, S = n_states;
+  const int n = (L + 1) * d, dd = d * d;
+  double right_sum[3 * 16] = {}, left_sum[3 * 16] = {};  // [s*d + q], n_states <= 16 on the stack
+  std::vector<double> heap;
+  double* rs = right_sum;
+  double* ls = left_sum;
+  if (S > 16) {
+    heap.assign(static_cast<std::size_t>(2 * S * d), 0.0);
+    rs = heap.data();
+    ls = heap.data() + S * d;
+  }
+  for (int k = 0; k < L; ++k) {
+    const double c = fam.V0 * fam.V[k];
+    for (int a = 0; a < S * d; ++a) {
+      rs[a] += fac.right[k * S * d + a];
+      ls[a] += c * fac.left[k * S * d + a];
+    }
+  }
+  double center[9] = {};
   for (int i = 0; i < L; ++i) {
     const double c = fam.V0 * fam.V[i];
-    const double* left_i = fac.left + static_cast<std::ptrdiff_t>(i) * n_states * dim;
-    for (int k = 0; k < L; ++k) {
-      const double* right_k = fac.right + static_cast<std::ptrdiff_t>(k) * n_states * dim;
-      for (int a = 0; a < dd; ++a) T[a] = (i == k) ? fac.direct[i * dd + a] : 0.0;
-      for (int s = 0; s < n_states; ++s)
-        for (int r = 0; r < dim; ++r)
-          for (int q = 0; q < dim; ++q) T[r * dim + q] += left_i[s * dim + r] * right_k[s * dim + q];
-      for (int r = 0; r < dim; ++r) {
-        for (int q = 0; q < dim; ++q) {
-          const double v = c * T[r * dim + q];
-          const int row_i = (i + 1) * dim + r, col_k = (k + 1) * dim + q;
-          M[row_i * n + col_k] -= v;
-          M[row_i * n + q] += v;
-          M[r * n + col_k] += v;
-          M[r * n + q] -= v;
+    const double* left_i = fac.left + static_cast<std::ptrdiff_t>(i) * S * d;
+    const double* direct_i = fac.direct + static_cast<std::ptrdiff_t>(i) * dd;
+    for (int r = 0; r < d; ++r) {
+      double* row = M + static_cast<std::ptrdiff_t>((i + 1) * d + r) * n;
+      // Neighbour block row: -c_i sum_s left_i[s][r] right_k[s][q], plus the direct term at k = i.
+      double* __restrict block = row + d;
+      if (S == 0)
+        for (int col = 0; col < n - d; ++col) block[col] = 0.0;
+      for (int s = 0; s < S; ++s) {
+        const double a = -c * left_i[s * d + r];
+        const double* __restrict right = fac.right + s * d;
+        if (S == 1) {  // the common case: one contiguous scaled copy
+          for (int col = 0; col < n - d; ++col) block[col] = a * right[col];
+        } else if (s == 0) {
+          for (int k = 0; k < L; ++k)
+            for (int q = 0; q < d; ++q) block[k * d + q] = a * right[k * S * d + q];
+        } else {
+          for (int k = 0; k < L; ++k)
+            for (int q = 0; q < d; ++q) block[k * d + q] += a * right[k * S * d + q];
         }
+      }
+      for (int q = 0; q < d; ++q) row[(i + 1) * d + q] -= c * direct_i[r * d + q];
+      // Center column: c_i (direct_i + sum_s left_i[s] (x) sum_k right_k[s]).
+      for (int q = 0; q < d; ++q) {
+        double v = direct_i[r * d + q];
+        for (int s = 0; s < S; ++s) v += left_i[s * d + r] * rs[s * d + q];
+        row[q] = c * v;
+        center[r * d + q] -= c * v;
+      }
+    }
+  }
+  // Center row: c_k direct_k + sum_s (sum_i c_i left_i[s]) (x) right_k[s]; M[0][0] = -sum_i c_i sum_k T_ik.
+  for (int r = 0; r < d; ++r) {
+    double* row = M + static_cast<std::ptrdiff_t>(r) * n;
+    for (int q = 0; q < d; ++q) row[q] = center[r * d + q];
+    for (int k = 0; k < L; ++k) {
+      const double c = fam.V0 * fam.V[k];
+      for (int q = 0; q < d; ++q) {
+        double v = c * fac.direct[k * dd + r * d + q];
+        for (int s = 0; s < S; ++s) v += ls[s * d + r] * fac.right[(k * S + s) * d + q];
+        row[(k + 1) * d + q] = v;
       }
     }
   }

@@ -1,10 +1,14 @@
-// The generated Silling kernels against a straightforward implementation written
-// here from paper 000 eqs. (2)-(7) (energy-matched plane-strain form, papers/README.md).
+// The generated Silling kernels against the straightforward implementation of
+// runtime/verify/reference_silling.hpp, and its tangent against automatic differentiation.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
 #include "verify/random_family.hpp"
+#include "verify/reference_silling.hpp"
 
 using pd::verify::FamilyOptions;
 using pd::verify::make_family;
@@ -12,35 +16,10 @@ using pd::verify::TestFamily;
 using pd::verify::Truncation;
 
 namespace {
-// Nodal forces of one family, bond by bond, with K = params[0], G = params[1].
 std::vector<double> reference_forces(const TestFamily& f) {
-  const int d = f.dim, L = f.bonds();
-  const double K = f.params[0], G = f.params[1];
-  auto len = [&](const std::vector<double>& v, int k) {
-    double s = 0;
-    for (int c = 0; c < d; ++c) s += v[k * d + c] * v[k * d + c];
-    return std::sqrt(s);
-  };
-  double m = 0, theta = 0;
-  for (int k = 0; k < L; ++k) m += f.w[k] * f.alpha[k] * len(f.xi, k) * len(f.xi, k) * f.V[k];
-  for (int k = 0; k < L; ++k) theta += f.w[k] * f.alpha[k] * len(f.xi, k) * (len(f.Y, k) - len(f.xi, k)) * f.V[k];
-  theta *= d / m;
-  std::vector<double> forces(static_cast<std::size_t>((L + 1) * d), 0.0);
-  for (int k = 0; k < L; ++k) {
-    const double r = len(f.xi, k), l = len(f.Y, k), e = l - r, wa = f.w[k] * f.alpha[k];
-    double t = 0;
-    if (d == 2) {
-      const double kappa2 = K + G / 3;  // plane-strain bulk modulus
-      t = wa / m * (2 * kappa2 * theta * r + 8 * G * (e - theta * r / 2));
-    } else {
-      t = wa / m * (3 * K * theta * r + 15 * G * (e - theta * r / 3));
-    }
-    for (int c = 0; c < d; ++c) {
-      const double fc = f.V0 * f.V[k] * t * f.Y[k * d + c] / l;
-      forces[c] += fc;
-      forces[(k + 1) * d + c] -= fc;
-    }
-  }
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs()));
+  pd::verify::silling_forces<double>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(), f.V0,
+                                     f.params[0], f.params[1], f.y.data(), forces.data());
   return forces;
 }
 
@@ -110,4 +89,27 @@ TEST(Silling, RigidRotationGivesZeroForce) {
   }
   f.set_positions(y);
   for (double v : f.forces(law->damaged)) EXPECT_NEAR(v, 0.0, 1e-12);
+}
+
+TEST(Silling, TangentEqualsForwardAutomaticDifferentiation) {
+  for (const char* name : {"silling_plane_strain", "silling_3d"}) {
+    const auto* law = pd::abi::find_law(name);
+    FamilyOptions o;
+    o.dim = law->dim;
+    o.broken_bonds = true;
+    o.truncation = Truncation::Edge;
+    o.horizon_ratio = law->dim == 2 ? 3.0 : 2.0;
+    const TestFamily f = make_family(*law, o);
+    const int n = f.dofs();
+    using AD = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+    std::vector<AD> y(static_cast<std::size_t>(n)), forces(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) y[i] = AD(f.y[i], n, i);
+    pd::verify::silling_forces<AD>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(), f.V0,
+                                   f.params[0], f.params[1], y.data(), forces.data());
+    const auto M = f.tangent_matrix(law->damaged);
+    double scale = 0;
+    for (double v : M) scale = std::max(scale, std::fabs(v));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) EXPECT_NEAR(M[i * n + j], forces[i].derivatives()[j], 1e-12 * scale) << name;
+  }
 }
