@@ -17,7 +17,7 @@ namespace {
 Law silling(const std::string& name, int dim, const std::string& summary) {
   Law law(name, dim, summary);
   const Expr K = law.param("K"), G = law.param("G");
-  const Expr r = norm(law.xi()), l = norm(law.Y());
+  const Expr r = norm(law.xi()), l = law.deformed_length();  // |Y|, finite at Y = 0
   const Expr e = l - r;
   const Expr wa = law.w() * law.alpha();
   const Expr m = law.sum("m", wa * r * r * law.V());

@@ -45,6 +45,8 @@ Expr Law::param(const std::string& name) {
   return params_.back();
 }
 
+Expr Law::deformed_length() const { return sqrt(dot(Y_, Y_) + 1e-16 * dot(xi_, xi_)); }
+
 bool Law::is_bond_input(int s) const {
   return Context::global().symbol(s).kind == SymbolKind::BondInput;
 }

@@ -46,6 +46,11 @@ class Law {
   Expr V() const { return V_; }
   Expr V0() const { return V0_; }
   Expr delta() const { return delta_; }
+  // |Y| regularised as sqrt(Y.Y + (1e-8 |xi|)^2): equal to |Y| to rounding for every
+  // bond longer than about 1e-8 |xi|, and finite, with a finite derivative, when a
+  // deformed bond collapses to zero length (where Y/|Y| would be 0/0). Use it rather
+  // than norm(Y()) wherever the law divides by the deformed length.
+  Expr deformed_length() const;
 
   // Horizon sums. Names must be C identifiers; vector and matrix sums get one
   // scalar sum per component, named name_i or name_i_j.
