@@ -1,0 +1,65 @@
+// Conversions between isotropic elastic constants and law parameters.
+#include "material/elastic_constants.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pd {
+
+namespace {
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+}  // namespace
+
+IsotropicElastic IsotropicElastic::from_E_nu(double E, double nu) {
+  require(std::isfinite(E) && E > 0, "Young's modulus E must be positive, got " + std::to_string(E));
+  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5, "Poisson's ratio nu must lie in (-1, 0.5), got " + std::to_string(nu));
+  IsotropicElastic m;
+  m.E = E;
+  m.nu = nu;
+  m.G = E / (2 * (1 + nu));
+  m.K = E / (3 * (1 - 2 * nu));
+  m.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  return m;
+}
+
+IsotropicElastic IsotropicElastic::from_K_G(double K, double G) {
+  require(std::isfinite(K) && K > 0, "bulk modulus K must be positive, got " + std::to_string(K));
+  require(std::isfinite(G) && G > 0, "shear modulus G must be positive, got " + std::to_string(G));
+  IsotropicElastic m;
+  m.K = K;
+  m.G = G;
+  m.E = 9 * K * G / (3 * K + G);
+  m.nu = (3 * K - 2 * G) / (2 * (3 * K + G));
+  m.lambda = K - 2 * G / 3;
+  return m;
+}
+
+IsotropicElastic IsotropicElastic::plane_stress_equivalent() const {
+  return from_E_nu(E * (1 + 2 * nu) / ((1 + nu) * (1 + nu)), nu / (1 + nu));
+}
+
+std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
+                                   PlaneAssumption plane, const std::map<std::string, double>& extra) {
+  const IsotropicElastic m = (law.dim == 2 && plane == PlaneAssumption::Stress) ? elastic.plane_stress_equivalent() : elastic;
+  const std::map<std::string, double> derived{{"E", m.E},           {"nu", m.nu},         {"K", m.K},
+                                              {"G", m.G},           {"mu", m.G},          {"lambda", m.lambda},
+                                              {"kappa2", m.lambda + m.G}};
+  std::vector<double> out;
+  for (int i = 0; i < law.n_params; ++i) {
+    const std::string name = law.param_names[i];
+    if (auto it = extra.find(name); it != extra.end()) {
+      out.push_back(it->second);
+    } else if (auto d = derived.find(name); d != derived.end()) {
+      out.push_back(d->second);
+    } else {
+      throw std::invalid_argument("law " + std::string(law.name) + " needs parameter '" + name +
+                                  "': give it in the material's parameters");
+    }
+  }
+  return out;
+}
+
+}  // namespace pd
