@@ -108,7 +108,7 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
       for (int l = (d == 3 ? -n : 0); l <= (d == 3 ? n : 0); ++l) {
         if (i == 0 && j == 0 && l == 0) continue;
         const int idx[3] = {i, j, l};
-        double p[3], r2 = 0.0;
+        double p[3] = {0, 0, 0}, r2 = 0.0;
         for (int c = 0; c < d; ++c) {
           p[c] = idx[c] * h + 0.15 * h * u(rng);
           r2 += (p[c] - f.x[c]) * (p[c] - f.x[c]);

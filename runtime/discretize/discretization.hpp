@@ -1,0 +1,28 @@
+// From a scene to particles and families: lattice points in the domain box (cell
+// centers or nodes), holes removed, inclusions tagged, a seeded perturbation, then
+// neighbour search with a cell list and bond cutting by cracks.
+#pragma once
+
+#include <vector>
+
+#include "input/scene.hpp"
+#include "particles.hpp"
+
+namespace pd {
+
+// Lattice points of the scene's domain (volume h^dim each), holes removed, inclusion
+// materials assigned, perturbed by amplitude*h (uniform, seeded) when asked.
+Particles discretize(const Scene& scene);
+
+// The particles of a region, ascending.
+std::vector<int> region_particles(const Region& region, const Particles& p, const Scene& scene);
+
+// All pairs closer than delta (|xi| <= delta (1 + 1e-12)), both directions, in
+// compressed rows sorted by neighbour index; w from the influence function; alpha = 1.
+Bonds find_bonds(const Particles& p, double delta, double (*influence)(double r, double delta));
+
+// Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
+// broken bonds (each counted once per direction).
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);
+
+}  // namespace pd

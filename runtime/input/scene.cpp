@@ -1,0 +1,367 @@
+// The scene reader: YAML -> Scene, every key checked (runtime/input/yaml_keys.hpp).
+#include "input/scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "input/yaml_keys.hpp"
+#include "kernel_abi.hpp"
+
+namespace pd {
+
+namespace {
+const std::vector<std::string> kSides{"left", "right", "bottom", "top", "back", "front"};
+
+Point to_point(const YamlAt& at, int dim) {
+  const auto v = as_numbers(at);
+  if (static_cast<int>(v.size()) != dim) at.fail("expected " + std::to_string(dim) + " coordinates");
+  Point p{};
+  for (int i = 0; i < dim; ++i) p[i] = v[i];
+  return p;
+}
+
+int component_index(const YamlAt& at, const std::string& c, int dim) {
+  const int i = c == "x" ? 0 : c == "y" ? 1 : c == "z" ? 2 : -1;
+  if (i < 0 || i >= dim) at.fail("'" + c + "' is not a component of a " + std::to_string(dim) + "D scene");
+  return i;
+}
+
+Shape read_shape(const YamlAt& at, int dim, bool inclusion) {
+  MapReader m(at);
+  Shape s;
+  int kinds = 0;
+  if (m.has("circle") || m.has("sphere")) {
+    const std::string key = m.has("circle") ? "circle" : "sphere";
+    MapReader c(m.get(key));
+    s.kind = Shape::Kind::Circle;
+    s.center = to_point(c.get("center"), dim);
+    s.radius = c.number("radius");
+    if (s.radius <= 0) c.get("radius").fail("radius must be positive");
+    c.finish();
+    ++kinds;
+  }
+  if (m.has("polygon")) {
+    if (dim != 2) m.get("polygon").fail("polygons are 2D shapes");
+    const YamlAt p = m.get("polygon");
+    require_list(p);
+    s.kind = Shape::Kind::Polygon;
+    for (std::size_t i = 0; i < p.node.size(); ++i) s.vertices.push_back(to_point(p.element(p.node[i], i), dim));
+    if (s.vertices.size() < 3) p.fail("a polygon needs at least 3 vertices");
+    ++kinds;
+  }
+  if (m.has("box")) {
+    MapReader b(m.get("box"));
+    s.kind = Shape::Kind::Box;
+    s.min = to_point(b.get("min"), dim);
+    s.max = to_point(b.get("max"), dim);
+    b.finish();
+    ++kinds;
+  }
+  if (kinds != 1) at.fail("give exactly one of circle, sphere, polygon, box");
+  if (inclusion) s.material = m.text("material");
+  m.finish();
+  return s;
+}
+
+Region read_region(const YamlAt& at, int dim) {
+  MapReader m(at);
+  Region r;
+  int kinds = 0;
+  if (m.has("side")) {
+    r.kind = Region::Kind::Side;
+    r.side = m.choice("side", "", dim == 2 ? std::vector<std::string>(kSides.begin(), kSides.begin() + 4) : kSides);
+    ++kinds;
+  }
+  r.thickness = m.number("thickness", 0.0);
+  if (r.thickness < 0) m.get("thickness").fail("thickness must not be negative");
+  for (const char* key : {"box", "outside"}) {
+    if (!m.has(key)) continue;
+    MapReader b(m.get(key));
+    r.kind = std::string(key) == "box" ? Region::Kind::Box : Region::Kind::Outside;
+    r.min = to_point(b.get("min"), dim);
+    r.max = to_point(b.get("max"), dim);
+    b.finish();
+    ++kinds;
+  }
+  if (m.has("all")) {
+    if (!m.boolean("all", false)) m.get("all").fail("use all: true, or another region kind");
+    r.kind = Region::Kind::All;
+    ++kinds;
+  }
+  if (kinds != 1) at.fail("give exactly one of side, box, outside, all");
+  m.finish();
+  return r;
+}
+
+FieldSpec read_field(const YamlAt& at) {
+  MapReader m(at);
+  FieldSpec f;
+  f.solution = m.choice("solution", "", {"uniaxial", "biaxial", "shear", "westergaard"});
+  for (auto it = at.node.begin(); it != at.node.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (key != "solution") f.parameters[key] = m.number(key);
+  }
+  m.finish();
+  return f;
+}
+
+MaterialSpec read_material(const YamlAt& at, int dim) {
+  MapReader m(at);
+  MaterialSpec s;
+  s.name = m.text("name", "default");
+  const bool en = m.has("E") || m.has("nu"), kg = m.has("K") || m.has("G");
+  if (en == kg) at.fail("give either E and nu, or K and G");
+  try {
+    s.elastic = en ? IsotropicElastic::from_E_nu(m.number("E"), m.number("nu"))
+                   : IsotropicElastic::from_K_G(m.number("K"), m.number("G"));
+  } catch (const std::invalid_argument& e) {
+    at.fail(e.what());
+  }
+  const std::string plane = m.choice("plane", dim == 2 ? "strain" : "none", dim == 2 ? std::vector<std::string>{"strain", "stress"} : std::vector<std::string>{"none"});
+  s.plane = plane == "strain" ? PlaneAssumption::Strain : plane == "stress" ? PlaneAssumption::Stress : PlaneAssumption::None;
+  s.density = m.number("density", 1.0);
+  if (s.density <= 0) m.get("density").fail("density must be positive");
+  if (m.has("parameters")) {
+    const YamlAt p = m.get("parameters");
+    MapReader pm(p);
+    for (auto it = p.node.begin(); it != p.node.end(); ++it) s.parameters[it->first.Scalar()] = pm.number(it->first.Scalar());
+    pm.finish();
+  }
+  m.finish();
+  return s;
+}
+
+std::array<bool, 3> read_components(const YamlAt& at, int dim) {
+  std::array<bool, 3> c{};
+  std::vector<std::string> names;
+  if (at.node.IsScalar()) {
+    names.push_back(at.node.Scalar());
+  } else if (at.node.IsSequence()) {
+    for (std::size_t i = 0; i < at.node.size(); ++i) names.push_back(as_text(at.element(at.node[i], i)));
+  } else {
+    at.fail("expected a component (x, y, z) or a list of them");
+  }
+  for (const auto& n : names) c[component_index(at, n, dim)] = true;
+  return c;
+}
+
+BoundaryCondition read_condition(const YamlAt& at, int dim) {
+  MapReader m(at);
+  BoundaryCondition bc;
+  if (m.has("region")) bc.region = read_region(m.get("region"), dim);
+  int kinds = 0;
+  if (m.has("fixed")) {
+    bc.kind = BoundaryCondition::Kind::Fixed;
+    bc.components = read_components(m.get("fixed"), dim);
+    ++kinds;
+  }
+  if (m.has("displacement")) {
+    bc.kind = BoundaryCondition::Kind::Displacement;
+    const YamlAt d = m.get("displacement");
+    MapReader dm(d);
+    for (const char* c : {"x", "y", "z"}) {
+      if (!dm.has(c)) continue;
+      const int i = component_index(dm.get(c), c, dim);
+      bc.components[i] = true;
+      bc.values[i] = dm.number(c);
+    }
+    dm.finish();
+    if (!bc.components[0] && !bc.components[1] && !bc.components[2]) d.fail("give at least one of x, y, z");
+    ++kinds;
+  }
+  if (m.has("field")) {
+    bc.kind = BoundaryCondition::Kind::Field;
+    bc.field = read_field(m.get("field"));
+    bc.components = {true, true, dim == 3};
+    if (m.has("components")) bc.components = read_components(m.get("components"), dim);
+    ++kinds;
+  }
+  for (const char* key : {"traction", "body_force"}) {
+    if (!m.has(key)) continue;
+    bc.kind = std::string(key) == "traction" ? BoundaryCondition::Kind::Traction : BoundaryCondition::Kind::BodyForce;
+    bc.values = to_point(m.get(key), dim);
+    ++kinds;
+  }
+  if (kinds != 1) at.fail("give exactly one of fixed, displacement, field, traction, body_force");
+  if (bc.kind == BoundaryCondition::Kind::Traction) {
+    bc.face_measure = m.number("face_measure", 0.0);
+    if (bc.region.kind != Region::Kind::Side && bc.face_measure <= 0)
+      at.fail("a traction on a region that is not a side needs face_measure (the length or area it acts on)");
+  }
+  if (bc.kind != BoundaryCondition::Kind::Field && m.has("components")) m.get("components").fail("components belongs to field conditions");
+  m.finish();
+  return bc;
+}
+
+Scene read(const YAML::Node& root, const std::string& file) {
+  Scene s;
+  s.file = file;
+  const YamlAt top{root, file, ""};
+  MapReader m(top);
+  s.dim = m.integer("dimension", 2);
+  if (s.dim != 2 && s.dim != 3) m.get("dimension").fail("dimension must be 2 or 3");
+
+  {
+    MapReader d(m.get("domain"));
+    MapReader box(d.get("box"));
+    s.lo = to_point(box.get("min"), s.dim);
+    s.hi = to_point(box.get("max"), s.dim);
+    box.finish();
+    for (int i = 0; i < s.dim; ++i)
+      if (!(s.hi[i] > s.lo[i])) d.get("box").fail("max must exceed min in every coordinate");
+    if (d.has("spacing") == d.has("count")) d.at().fail("give exactly one of spacing, count");
+    if (d.has("spacing")) {
+      s.h = d.number("spacing");
+      if (s.h <= 0) d.get("spacing").fail("spacing must be positive");
+    } else {
+      const int n = d.integer("count", 0);
+      if (n < 2) d.get("count").fail("count (particles along x) must be at least 2");
+      s.h = (s.hi[0] - s.lo[0]) / n;
+    }
+    s.placement = d.choice("placement", "cell", {"cell", "node"});
+    if (d.has("perturbation")) {
+      MapReader p(d.get("perturbation"));
+      s.perturbation = p.number("amplitude", 0.0);
+      if (s.perturbation < 0 || s.perturbation >= 0.5) p.get("amplitude").fail("amplitude is a fraction of h in [0, 0.5)");
+      s.seed = static_cast<unsigned>(p.integer("seed", 1));
+      p.finish();
+    }
+    for (const char* key : {"holes", "inclusions"}) {
+      if (!d.has(key)) continue;
+      const YamlAt list = d.get(key);
+      require_list(list);
+      for (std::size_t i = 0; i < list.node.size(); ++i)
+        (std::string(key) == "holes" ? s.holes : s.inclusions)
+            .push_back(read_shape(list.element(list.node[i], i), s.dim, std::string(key) == "inclusions"));
+    }
+    const double cells = (s.hi[0] - s.lo[0]) / s.h;
+    if (cells > 1e5) d.at().fail("more than 1e5 particles along x: check spacing/count");
+    d.finish();
+  }
+
+  if (m.has("horizon")) {
+    MapReader hz(m.get("horizon"));
+    if (hz.has("ratio") == hz.has("length")) hz.at().fail("give exactly one of ratio (delta/h), length");
+    if (hz.has("ratio")) s.horizon_ratio = hz.number("ratio");
+    if (hz.has("length")) s.horizon_length = hz.number("length");
+    if (s.delta() < s.h * 0.999) hz.at().fail("the horizon must be at least one spacing h");
+    hz.finish();
+  }
+
+  s.law = m.text("law");
+  const abi::LawDescriptor* law = abi::find_law(s.law);
+  if (law == nullptr) m.get("law").fail("unknown law '" + s.law + "' (pd laws lists them)");
+  if (law->dim != s.dim) m.get("law").fail("law " + s.law + " is " + std::to_string(law->dim) + "D, the scene is " + std::to_string(s.dim) + "D");
+  s.influence = m.text("influence", "const");
+  if (abi::find_influence(s.influence) == nullptr) m.get("influence").fail("unknown influence function '" + s.influence + "' (pd laws lists them)");
+
+  {
+    const YamlAt mats = m.get("materials");
+    require_list(mats);
+    if (mats.node.size() == 0) mats.fail("give at least one material");
+    for (std::size_t i = 0; i < mats.node.size(); ++i) {
+      const YamlAt mi = mats.element(mats.node[i], i);
+      s.materials.push_back(read_material(mi, s.dim));
+      for (std::size_t j = 0; j + 1 < s.materials.size(); ++j)
+        if (s.materials[j].name == s.materials.back().name) mi.fail("material '" + s.materials.back().name + "' defined twice");
+      try {
+        law_parameters(*law, s.materials.back().elastic, s.materials.back().plane, s.materials.back().parameters);
+      } catch (const std::invalid_argument& e) {
+        mi.fail(e.what());
+      }
+    }
+  }
+  for (std::size_t i = 0; i < s.inclusions.size(); ++i)
+    if (s.material_index(s.inclusions[i].material) < 0)
+      top.child(root["domain"]["inclusions"][i], "domain.inclusions[" + std::to_string(i) + "]")
+          .fail("unknown material '" + s.inclusions[i].material + "'");
+
+  if (m.has("boundary")) {
+    const YamlAt list = m.get("boundary");
+    require_list(list);
+    for (std::size_t i = 0; i < list.node.size(); ++i) s.boundary.push_back(read_condition(list.element(list.node[i], i), s.dim));
+  }
+  if (m.has("cracks")) {
+    const YamlAt list = m.get("cracks");
+    require_list(list);
+    for (std::size_t i = 0; i < list.node.size(); ++i) {
+      const YamlAt ci = list.element(list.node[i], i);
+      MapReader c(ci);
+      Crack crack;
+      const YamlAt pts = c.get(s.dim == 2 ? "segment" : "polygon");
+      require_list(pts);
+      for (std::size_t j = 0; j < pts.node.size(); ++j) crack.points.push_back(to_point(pts.element(pts.node[j], j), s.dim));
+      if (s.dim == 2 && crack.points.size() != 2) pts.fail("a 2D crack is a segment: two points");
+      if (s.dim == 3 && crack.points.size() < 3) pts.fail("a 3D crack is a planar polygon: at least three points");
+      crack.pressure = c.number("pressure", 0.0);
+      c.finish();
+      s.cracks.push_back(crack);
+    }
+  }
+  if (m.has("solver")) {
+    MapReader sv(m.get("solver"));
+    s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab"});
+    s.solver.load_steps = sv.integer("load_steps", 1);
+    if (s.solver.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
+    s.solver.tolerance = sv.number("tolerance", 1e-10);
+    s.solver.max_iterations = sv.integer("max_iterations", 30);
+    s.solver.increment_tolerance = sv.number("increment_tolerance", 1e-9);
+    s.solver.krylov_tolerance = sv.number("krylov_tolerance", 1e-12);
+    if (s.solver.tolerance <= 0 || s.solver.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
+    if (s.solver.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
+    sv.finish();
+  }
+  if (m.has("output")) {
+    MapReader o(m.get("output"));
+    s.output.directory = o.text("directory", "out");
+    s.output.vtu = o.boolean("vtu", true);
+    s.output.csv = o.boolean("csv", true);
+    o.finish();
+  }
+  if (m.has("probes")) {
+    const YamlAt list = m.get("probes");
+    require_list(list);
+    for (std::size_t i = 0; i < list.node.size(); ++i) {
+      MapReader p(list.element(list.node[i], i));
+      Probe probe;
+      probe.name = p.text("name", "probe" + std::to_string(i));
+      probe.region = read_region(p.get("region"), s.dim);
+      const YamlAt comp = p.get("component");
+      probe.component = component_index(comp, as_text(comp), s.dim);
+      if (p.has("reference")) probe.reference = read_field(p.get("reference"));
+      p.finish();
+      s.probes.push_back(probe);
+    }
+  }
+  m.finish();
+  return s;
+}
+}  // namespace
+
+int Scene::material_index(const std::string& name) const {
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+Scene parse_scene(const std::string& yaml, const std::string& name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap()) throw SceneError(name + ":1: (top level): expected a map of keys");
+  return read(root, name);
+}
+
+Scene read_scene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace pd

@@ -1,0 +1,117 @@
+// A scene: everything a run needs, read from YAML (docs/scene_format.md). Plain data;
+// every field has the default documented there. read_scene validates completely
+// before returning, so a scene that is returned is usable.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "material/elastic_constants.hpp"
+
+namespace pd {
+
+using Point = std::array<double, 3>;
+
+struct Shape {  // a hole or an inclusion
+  enum class Kind { Circle, Polygon, Box } kind = Kind::Circle;
+  Point center{};      // circle (sphere in 3D)
+  double radius = 0;
+  std::vector<Point> vertices;  // polygon (2D)
+  Point min{}, max{};           // box
+  std::string material;         // inclusions only
+  bool contains(const double* x, int dim) const;
+};
+
+struct MaterialSpec {
+  std::string name = "default";
+  IsotropicElastic elastic;
+  PlaneAssumption plane = PlaneAssumption::Strain;
+  double density = 1.0;
+  std::map<std::string, double> parameters;  // extra law parameters by name
+};
+
+// Where a boundary condition or probe applies.
+struct Region {
+  enum class Kind { All, Side, Box, Outside } kind = Kind::All;
+  std::string side;          // left right bottom top back front
+  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row)
+  Point min{}, max{};        // Box / Outside (the complement of the box)
+  // True when a particle at x belongs (domain bounds lo/hi, spacing h).
+  bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;
+};
+
+// An analytic solution and its parameters (see runtime/fields/analytic.hpp).
+struct FieldSpec {
+  std::string solution;  // uniaxial biaxial shear westergaard
+  std::map<std::string, double> parameters;
+};
+
+struct BoundaryCondition {
+  enum class Kind { Fixed, Displacement, Field, Traction, BodyForce } kind = Kind::Fixed;
+  Region region;
+  std::array<bool, 3> components{};  // which components are constrained (Fixed, Displacement, Field)
+  Point values{};                    // prescribed displacement, traction or body force
+  FieldSpec field;
+  double face_measure = 0;           // Traction: length/area the traction acts on (0: the region's domain face)
+};
+
+struct Crack {
+  std::vector<Point> points;  // 2D: a segment (2 points); 3D: a planar polygon
+  double pressure = 0;
+};
+
+struct SolverSpec {
+  std::string linear = "auto";  // auto cholmod umfpack cg bicgstab
+  int load_steps = 1;
+  double tolerance = 1e-10;     // on the residual norm relative to the load
+  double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
+  int max_iterations = 30;
+  double krylov_tolerance = 1e-12;
+};
+
+struct OutputSpec {
+  std::string directory = "out";
+  bool vtu = true;
+  bool csv = true;
+};
+
+struct Probe {
+  std::string name;
+  Region region;
+  int component = 0;
+  std::optional<FieldSpec> reference;  // analytic field to compare the mean against
+};
+
+struct Scene {
+  std::string file;
+  int dim = 2;
+  Point lo{}, hi{};                // domain box
+  double h = 0;                    // spacing
+  std::string placement = "cell";  // cell: points at cell centers; node: on a lattice including the faces
+  double perturbation = 0;         // fraction of h
+  unsigned seed = 1;
+  std::vector<Shape> holes, inclusions;
+  double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0
+  double horizon_length = 0;
+  std::string law;
+  std::string influence = "const";
+  std::vector<MaterialSpec> materials;  // [0] is the body's material
+  std::vector<BoundaryCondition> boundary;
+  std::vector<Crack> cracks;
+  SolverSpec solver;
+  OutputSpec output;
+  std::vector<Probe> probes;
+
+  double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
+  int material_index(const std::string& name) const;
+};
+
+// Reads and validates a scene file; throws SceneError (file:line: key: message).
+Scene read_scene(const std::string& path);
+// Same, from YAML text (for tests and fuzzing); `name` stands for the file in messages.
+Scene parse_scene(const std::string& yaml, const std::string& name);
+
+}  // namespace pd

@@ -1,0 +1,141 @@
+// External loads and crack pressure.
+#include "run/effects.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "discretize/discretization.hpp"
+
+namespace pd {
+
+void Effect::add_stiffness(const std::vector<double>&, double, SparseMatrix&) const {}
+
+namespace {
+class ExternalLoads final : public Effect {
+ public:
+  ExternalLoads(std::vector<double> f, int tractions, int body) : f_(std::move(f)), tractions_(tractions), body_(body) {}
+  std::string name() const override { return "external loads"; }
+  std::string describe() const override {
+    double total = 0;
+    for (double v : f_) total += std::fabs(v);
+    return fmt::format("external loads: {} traction and {} body-force conditions, sum |f| = {:.6g}", tractions_, body_, total);
+  }
+  void add_forces(const std::vector<double>&, double load, std::vector<double>& r) const override {
+    for (std::size_t i = 0; i < f_.size(); ++i) r[i] += load * f_[i];
+  }
+
+ private:
+  std::vector<double> f_;
+  int tractions_, body_;
+};
+
+// The measure (length in 2D, area in 3D) of the domain face a side region lies on.
+double face_measure(const Scene& s, const std::string& side) {
+  const int axis = (side == "left" || side == "right") ? 0 : (side == "bottom" || side == "top") ? 1 : 2;
+  double m = 1;
+  for (int c = 0; c < s.dim; ++c)
+    if (c != axis) m *= s.hi[c] - s.lo[c];
+  return m;
+}
+
+struct PressurePair {
+  int a, b;
+  double magnitude;  // p V_b / |xi|
+};
+
+class CrackPressure final : public Effect {
+ public:
+  CrackPressure(const Particles& p, std::vector<PressurePair> pairs, const Sparsity& sp)
+      : p_(p), pairs_(std::move(pairs)), sparsity_(sp) {}
+  std::string name() const override { return "crack pressure"; }
+  std::string describe() const override { return fmt::format("crack pressure on {} bond pairs across the crack faces", pairs_.size()); }
+  void add_forces(const std::vector<double>& u, double load, std::vector<double>& r) const override {
+    const int d = p_.dim;
+    for (const PressurePair& q : pairs_) {
+      double Y[3], l = 0;
+      deformed(u, q, Y, l);
+      for (int c = 0; c < d; ++c) {
+        const double f = load * q.magnitude * Y[c] / l;
+        r[q.b * d + c] += f;
+        r[q.a * d + c] -= f;
+      }
+    }
+  }
+  // f_b = g n with n = Y/|Y|: d f_b / d y_b = g (I - n n^T) / |Y| = G; the pair block is [[G, -G], [-G, G]]
+  // and K = -dr/du takes its negative.
+  void add_stiffness(const std::vector<double>& u, double load, SparseMatrix& K) const override {
+    const int d = p_.dim;
+    double* v = K.valuePtr();
+    for (const PressurePair& q : pairs_) {
+      double Y[3], l = 0;
+      deformed(u, q, Y, l);
+      for (int r = 0; r < d; ++r)
+        for (int c = 0; c < d; ++c) {
+          const double G = load * q.magnitude * ((r == c ? 1.0 : 0.0) - Y[r] * Y[c] / (l * l)) / l;
+          v[sparsity_.slot(q.b, q.b, r, c)] -= G;
+          v[sparsity_.slot(q.a, q.a, r, c)] -= G;
+          v[sparsity_.slot(q.b, q.a, r, c)] += G;
+          v[sparsity_.slot(q.a, q.b, r, c)] += G;
+        }
+    }
+  }
+
+ private:
+  void deformed(const std::vector<double>& u, const PressurePair& q, double* Y, double& l) const {
+    const int d = p_.dim;
+    l = 0;
+    for (int c = 0; c < d; ++c) {
+      Y[c] = p_.x[q.b * d + c] + u[q.b * d + c] - p_.x[q.a * d + c] - u[q.a * d + c];
+      l += Y[c] * Y[c];
+    }
+    l = std::sqrt(l);
+  }
+  const Particles& p_;
+  std::vector<PressurePair> pairs_;
+  const Sparsity& sparsity_;
+};
+}  // namespace
+
+std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) {
+  const int d = s.dim;
+  std::vector<double> f(static_cast<std::size_t>(p.size()) * d, 0.0);
+  int tractions = 0, body = 0;
+  for (const BoundaryCondition& bc : s.boundary) {
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    const auto ids = region_particles(bc.region, p, s);
+    if (ids.empty()) throw std::runtime_error("a traction or body force region of the scene holds no particle");
+    if (bc.kind == BoundaryCondition::Kind::Traction) {
+      ++tractions;
+      const double measure = bc.face_measure > 0 ? bc.face_measure : face_measure(s, bc.region.side);
+      for (int i : ids)
+        for (int c = 0; c < d; ++c) f[i * d + c] += bc.values[c] * measure / static_cast<double>(ids.size());
+    } else {
+      ++body;
+      for (int i : ids)
+        for (int c = 0; c < d; ++c) f[i * d + c] += bc.values[c] * p.volume[i];
+    }
+  }
+  if (tractions + body == 0) return nullptr;
+  return std::make_unique<ExternalLoads>(std::move(f), tractions, body);
+}
+
+std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, const Bonds& bonds, const Sparsity& sp) {
+  std::vector<PressurePair> pairs;
+  for (const Crack& crack : s.cracks) {
+    if (crack.pressure == 0) continue;
+    Bonds single = bonds;
+    std::fill(single.alpha.begin(), single.alpha.end(), 1.0);
+    cut_bonds({crack}, p, single);
+    for (int a = 0; a < p.size(); ++a)
+      for (int e = bonds.offsets[a]; e < bonds.offsets[a + 1]; ++e) {
+        const int b = bonds.neighbor[e];
+        // Nearest neighbours only (|xi| < 1.2 h): the particles facing each other across the crack.
+        if (b <= a || single.alpha[e] != 0.0 || bonds.length[e] > 1.2 * s.h) continue;
+        pairs.push_back({a, b, crack.pressure * p.volume[b] / bonds.length[e]});
+      }
+  }
+  if (pairs.empty()) return nullptr;
+  return std::make_unique<CrackPressure>(p, std::move(pairs), sp);
+}
+
+}  // namespace pd

@@ -1,0 +1,39 @@
+// Effects: the physics a scene calls for besides the law's internal forces. Each is a
+// separate object created only when the scene needs it (see make_effects), so an
+// effect that is off costs nothing. New effects (inertia, damping, damage evolution)
+// implement this interface without touching the existing ones.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assemble/sparsity.hpp"
+#include "input/scene.hpp"
+#include "particles.hpp"
+
+namespace pd {
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual std::string name() const = 0;      // e.g. "tractions"
+  virtual std::string describe() const = 0;  // one line for the run log
+  // Adds this effect's nodal forces at load factor `load` to r (out-of-balance force).
+  virtual void add_forces(const std::vector<double>& u, double load, std::vector<double>& r) const = 0;
+  // Adds its contribution to K = -dr/du (nothing for dead loads).
+  virtual void add_stiffness(const std::vector<double>& u, double load, SparseMatrix& K) const;
+  virtual bool symmetric() const { return true; }
+};
+
+// Dead loads: tractions on boundary particles (paper 000 eq. 34: the total force T x
+// face measure shared equally by the region's particles) and body forces (per volume).
+std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles& p);
+
+// Crack pressure on the broken bonds between nearest neighbours across a crack
+// (paper 000 eqs. 23, 30): a pair force of magnitude p V / |xi| along the deformed
+// bond, pushing the two particles apart (p h per face particle for |xi| = h in 2D).
+std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds,
+                                            const Sparsity& sparsity);
+
+}  // namespace pd

@@ -1,0 +1,65 @@
+// A static run: scene -> particles and families -> effects -> Newton solve -> outputs.
+// Setup (constructor) and solve (run) are timed separately.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assemble/assembler.hpp"
+#include "input/scene.hpp"
+#include "run/effects.hpp"
+#include "solvers/newton.hpp"
+
+namespace pd {
+
+struct ProbeResult {
+  std::string name;
+  int particles = 0;
+  double value = 0;      // mean displacement component over the region
+  bool has_reference = false;
+  double reference = 0;  // mean of the analytic field over the same particles
+  double error = 0;      // |value - reference| (paper 000 eq. 36)
+};
+
+struct RunSummary {
+  int particles = 0;
+  long long bonds = 0;  // counted once per direction
+  int broken_bonds = 0;
+  std::string variant;
+  std::vector<std::string> effects;
+  NewtonReport newton;
+  std::vector<ProbeResult> probes;
+  double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
+  std::vector<std::string> files;
+  std::string text() const;  // the run summary, as written to summary.txt
+};
+
+class Simulation {
+ public:
+  using Log = std::function<void(const std::string&)>;
+  Simulation(Scene scene, Log log);
+  ~Simulation();
+  // Solves and writes the outputs; throws on failure (nothing half-written).
+  RunSummary run(bool write_outputs = true);
+
+  const Particles& particles() const { return particles_; }
+  const Bonds& bonds() const { return bonds_; }
+  const std::vector<double>& displacement() const { return u_; }
+  const Scene& scene() const { return scene_; }
+
+ private:
+  Constraints constraints() const;
+  std::vector<ProbeResult> evaluate_probes() const;
+  Scene scene_;
+  Log log_;
+  Particles particles_;
+  Bonds bonds_;
+  std::unique_ptr<Assembler> assembler_;
+  std::vector<std::unique_ptr<Effect>> effects_;
+  std::vector<double> u_;
+  RunSummary summary_;
+};
+
+}  // namespace pd
