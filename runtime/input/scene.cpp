@@ -334,6 +334,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.probes.push_back(probe);
     }
   }
+  if (m.has("reference")) s.reference = read_field(m.get("reference"));
   m.finish();
   return s;
 }

@@ -104,6 +104,8 @@ struct Scene {
   SolverSpec solver;
   OutputSpec output;
   std::vector<Probe> probes;
+  // Analytic field for the global error of paper 000 eq. (48), when given.
+  std::optional<FieldSpec> reference;
 
   double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
   int material_index(const std::string& name) const;

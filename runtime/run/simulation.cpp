@@ -133,6 +133,18 @@ RunSummary Simulation::run(bool write_outputs) {
   if (!summary_.newton.converged) throw std::runtime_error(summary_.newton.failure);
   assembler_->check_finite(u_, "the solution");
   summary_.probes = evaluate_probes();
+  if (scene_.reference) {
+    const AnalyticField field(*scene_.reference, scene_.materials[0].elastic);
+    double num = 0, den = 0;
+    const int d = particles_.dim;
+    for (int p = 0; p < particles_.size(); ++p) {
+      const auto ua = field.displacement(particles_.position(p));
+      for (int c = 0; c < d; ++c) num += std::pow(ua[c] - u_[p * d + c], 2), den += ua[c] * ua[c];
+    }
+    summary_.has_field_error = true;
+    summary_.field_error = den > 0 ? num / den : num;
+    log_(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", field.name(), summary_.field_error));
+  }
   for (const auto& p : summary_.probes)
     log_(p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
                                        p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))
@@ -169,6 +181,7 @@ std::string RunSummary::text() const {
     s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}\n", it.step, it.iteration, it.residual, it.line_search);
   s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
                    setup_seconds, newton.assembly_seconds, newton.solve_seconds, solve_seconds, output_seconds);
+  if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
   s += "probes:\n";
   for (const auto& p : probes)
     s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)

@@ -31,6 +31,8 @@ struct RunSummary {
   std::vector<std::string> effects;
   NewtonReport newton;
   std::vector<ProbeResult> probes;
+  bool has_field_error = false;
+  double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
   std::string text() const;  // the run summary, as written to summary.txt
