@@ -3,17 +3,27 @@
 #include <string_view>
 
 #include "kernel_abi.hpp"
+#include "bond_based.hpp"
+#include "correspondence.hpp"
 #include "influence.hpp"
+#include "oterkus.hpp"
 #include "silling.hpp"
 
 namespace pd::abi {
 
 std::span<const LawDescriptor> all_laws() {
   static const LawDescriptor table[] = {
+      pd::generated::bond_based_constant_2d_descriptor(),
+      pd::generated::bond_based_conical_2d_descriptor(),
+      pd::generated::bond_based_constant_3d_descriptor(),
+      pd::generated::bond_based_conical_3d_descriptor(),
+      pd::generated::correspondence_plane_strain_descriptor(),
+      pd::generated::correspondence_3d_descriptor(),
+      pd::generated::oterkus_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 2);
+  return std::span<const LawDescriptor>(table, 9);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

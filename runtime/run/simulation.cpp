@@ -108,6 +108,9 @@ RunSummary Simulation::run(bool write_outputs) {
   const auto t0 = std::chrono::steady_clock::now();
   NonlinearProblem pb;
   pb.size = static_cast<int>(u_.size());
+  // A law derived from an energy has a symmetric tangent; one without (e.g. Oterkus's
+  // force law) needs a non-symmetric solver.
+  pb.symmetric = assembler_->law().damaged.energy != nullptr;
   for (const auto& e : effects_) pb.symmetric = pb.symmetric && e->symmetric();
   pb.residual = [this](const std::vector<double>& u, double load, std::vector<double>& r) {
     assembler_->forces(u, r);

@@ -1,0 +1,35 @@
+// Oterkus's dilatation law, paper 000 section 2.3, plane strain, with a, b, d generalised
+// to any influence function through discrete horizon sums (moments):
+//   theta = d sum w a e (n . xi/|xi|) V,  e = |Y| - |xi|, n = Y/|Y|             (eq. 8)
+//   t = 2 w a [ a_ d (n . xi/|xi|) theta + b e ] n                              (eq. 9)
+//   d = 2 / sum w a |xi| V                                                      (eq. 12)
+//   b = G / (2 sum w a xi_1^2 xi_2^2 / |xi|^2 V)                                (eqs. 15-16)
+//   a_ = (2 kappa2 - b sum w a |xi|^2 V) / 4                                    (eqs. 13, 17)
+// Eqs. (16)-(17) are garbled in the text; these forms follow from the paper's own
+// matching conditions: theta = 2s and W = 2 kappa2 s^2 under isotropic stretch s, and
+// W = G s^2 / 2 under simple shear Y = (I + sA) xi, with W = a_ theta^2 + b sum w a e^2 V
+// (eq. 10). The force (9) keeps only the component of dW/dY along n (it drops the
+// derivative of n . xi/|xi|), so it is not the exact derivative of (10): the law declares
+// no energy and its tangent is not symmetric. 2D only: the paper derives it for plane strain.
+#include "pdgen/dsl.hpp"
+
+using namespace pdgen;
+
+PDGEN_LAW(oterkus_plane_strain) {
+  Law law("oterkus_plane_strain", 2,
+          "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); params kappa2, G");
+  const Expr kappa = law.param("kappa2"), G = law.param("G");
+  const Expr r = norm(law.xi()), l = law.deformed_length(), e = l - r;
+  const Expr wa = law.w() * law.alpha();
+  const Expr cosine = dot(law.Y(), law.xi()) / (l * r);
+  const Expr m1 = law.sum("m1", wa * r * law.V());
+  const Expr m2 = law.sum("m2", wa * r * r * law.V());
+  const Expr mx = law.sum("mx", wa * pow(law.xi()[0] * law.xi()[1], 2) / (r * r) * law.V());
+  const Expr d = 2 / m1;
+  const Expr b = G / (2 * mx);
+  const Expr a = (2 * kappa - b * m2) / 4;
+  const Expr theta = law.sum("theta", d * wa * e * cosine * law.V());
+  law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
+  law.output("dilatation", theta);
+  return law;
+}
