@@ -19,11 +19,15 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::bond_based_conical_3d_descriptor(),
       pd::generated::correspondence_plane_strain_descriptor(),
       pd::generated::correspondence_3d_descriptor(),
+      pd::generated::correspondence_silling_plane_strain_descriptor(),
+      pd::generated::correspondence_silling_3d_descriptor(),
+      pd::generated::correspondence_littlewood_plane_strain_descriptor(),
+      pd::generated::correspondence_littlewood_3d_descriptor(),
       pd::generated::oterkus_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 9);
+  return std::span<const LawDescriptor>(table, 13);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

@@ -94,3 +94,25 @@ TEST(LawPhysics, ObjectivityUnderRigidRotation) {
       EXPECT_LT(worst, 1e-12) << name;
   }
 }
+
+TEST(LawPhysics, StabilisationVanishesForAffineDeformationAndStiffensNonAffineOnes) {
+  const double H[9] = {0.01, 0.004, 0.002, -0.002, 0.003, 0.001, 0.0, 0.005, -0.004};
+  for (const char* base : {"correspondence_plane_strain", "correspondence_3d"}) {
+    const std::string dims = std::string(base).substr(std::string("correspondence").size());
+    for (const std::string stab : {"correspondence_silling", "correspondence_littlewood"}) {
+      TestFamily plain = affine_family(base, H), stabilised = affine_family((stab + dims).c_str(), H);
+      const auto fp = plain.forces(plain.law->damaged), fs = stabilised.forces(stabilised.law->damaged);
+      double scale = 0;
+      for (double v : fp) scale = std::max(scale, std::fabs(v));
+      for (std::size_t i = 0; i < fp.size(); ++i) EXPECT_NEAR(fs[i], fp[i], 1e-10 * scale) << stab + dims;
+    }
+  }
+  // A non-affine (zero-mean, alternating) perturbation: the stabilised energy exceeds the plain one.
+  const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  TestFamily plain = affine_family("correspondence_plane_strain", zero), stabilised = affine_family("correspondence_silling_plane_strain", zero);
+  std::vector<double> y = plain.y;
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] += 1e-3 * ((i / 2) % 2 ? 1.0 : -1.0);
+  plain.set_positions(y);
+  stabilised.set_positions(y);
+  EXPECT_GT(stabilised.law->damaged.energy(stabilised.view()), plain.law->damaged.energy(plain.view()) * 1.01);
+}
