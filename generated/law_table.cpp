@@ -6,6 +6,7 @@
 #include "bond_based.hpp"
 #include "correspondence.hpp"
 #include "influence.hpp"
+#include "lps.hpp"
 #include "oterkus.hpp"
 #include "silling.hpp"
 
@@ -23,11 +24,15 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::correspondence_silling_3d_descriptor(),
       pd::generated::correspondence_littlewood_plane_strain_descriptor(),
       pd::generated::correspondence_littlewood_3d_descriptor(),
+      pd::generated::lps_plane_strain_descriptor(),
+      pd::generated::lps_3d_descriptor(),
+      pd::generated::lps_corrected_plane_strain_descriptor(),
+      pd::generated::lps_corrected_3d_descriptor(),
       pd::generated::oterkus_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 13);
+  return std::span<const LawDescriptor>(table, 17);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {
