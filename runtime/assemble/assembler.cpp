@@ -162,6 +162,19 @@ void Assembler::apply_stiffness(const std::vector<double>& u, const std::vector<
   }
 }
 
+std::vector<double> Assembler::particle_outputs(const std::vector<double>& u) const {
+  const int n = particles_.size(), no = law_.n_outputs;
+  std::vector<double> out(static_cast<std::size_t>(n) * no, 0.0);
+  if (no == 0 || variant_.outputs == nullptr) return out;
+#pragma omp parallel
+  {
+    Gather g;
+#pragma omp for schedule(dynamic, 256)
+    for (int p = 0; p < n; ++p) variant_.outputs(g.family(*this, p, u), out.data() + static_cast<std::ptrdiff_t>(p) * no);
+  }
+  return out;
+}
+
 void Assembler::check_finite(const std::vector<double>& values, const std::string& stage) const {
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))

@@ -25,6 +25,8 @@ class Assembler {
   void forces(const std::vector<double>& u, std::vector<double>& f) const;
   // K(u) = -df/du into K (pattern from sparsity()); also f(u) when f is not null.
   void stiffness(const std::vector<double>& u, SparseMatrix& K, std::vector<double>* f) const;
+  // The law's per-particle outputs (dilatation, strain, ...): [n * law.n_outputs].
+  std::vector<double> particle_outputs(const std::vector<double>& u) const;
   // out = K(u) v, matrix-free.
   void apply_stiffness(const std::vector<double>& u, const std::vector<double>& v, std::vector<double>& out) const;
 

@@ -21,7 +21,20 @@ extern "C" void on_interrupt(int sig) {
 }
 }  // namespace
 
+namespace {
+const char* kRunUsage =
+    "usage: pd run SCENE.yaml [--out DIR]\n"
+    "  Solves the scene and writes DIR/result.vtu (ParaView), DIR/result.csv and DIR/summary.json;\n"
+    "  DIR defaults to the scene's output.directory. The scene format: docs/scene_format.md.\n"
+    "  Exit codes: 0 solved, 1 solve failed, 2 bad input (the message names file, line and key).\n";
+}  // namespace
+
 int run_command(const Args& args) {
+  for (const auto& a : args)
+    if (a == "-h" || a == "--help") {
+      fmt::print("{}", kRunUsage);
+      return 0;
+    }
   std::string scene_path, out_dir;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--out" && i + 1 < args.size())
@@ -29,12 +42,12 @@ int run_command(const Args& args) {
     else if (scene_path.empty() && args[i].rfind("--", 0) != 0)
       scene_path = args[i];
     else {
-      fmt::print(stderr, "usage: pd run SCENE.yaml [--out DIR]\n");
+      fmt::print(stderr, "{}", kRunUsage);
       return 2;
     }
   }
   if (scene_path.empty()) {
-    fmt::print(stderr, "usage: pd run SCENE.yaml [--out DIR]\n");
+    fmt::print(stderr, "{}", kRunUsage);
     return 2;
   }
   std::signal(SIGINT, on_interrupt);
@@ -47,8 +60,14 @@ int run_command(const Args& args) {
     return 2;
   }
   if (!out_dir.empty()) scene.output.directory = out_dir;
-  Simulation sim(std::move(scene), [](const std::string& line) { fmt::print("{}\n", line); });
-  const RunSummary s = sim.run();
+  RunSummary s;
+  try {
+    Simulation sim(std::move(scene), [](const std::string& line) { fmt::print("{}\n", line); });
+    s = sim.run();
+  } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
+    fmt::print(stderr, "pd run: {}\n", e.what());
+    return 2;
+  }
   fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
              s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);
   for (const auto& f : s.files) fmt::print("  {}\n", f);

@@ -1,6 +1,8 @@
 // Lattice discretisation, cell-list neighbour search, crack cutting.
 #include "discretize/discretization.hpp"
 
+#include "input/yaml_keys.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -40,7 +42,7 @@ Particles discretize(const Scene& s) {
         p.volume.push_back(volume);
         p.material.push_back(material);
       }
-  if (p.size() == 0) throw std::runtime_error("the scene's domain holds no particles (holes cover it?)");
+  if (p.size() == 0) throw SceneError(s.file + ": domain: the domain holds no particle (do the holes cover it?)");
   return p;
 }
 

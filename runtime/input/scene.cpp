@@ -149,6 +149,7 @@ std::array<bool, 3> read_components(const YamlAt& at, int dim) {
 BoundaryCondition read_condition(const YamlAt& at, int dim) {
   MapReader m(at);
   BoundaryCondition bc;
+  bc.where = at.location();
   if (m.has("region")) bc.region = read_region(m.get("region"), dim);
   int kinds = 0;
   if (m.has("fixed")) {
@@ -325,6 +326,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     for (std::size_t i = 0; i < list.node.size(); ++i) {
       MapReader p(list.element(list.node[i], i));
       Probe probe;
+      probe.where = list.element(list.node[i], i).location();
       probe.name = p.text("name", "probe" + std::to_string(i));
       probe.region = read_region(p.get("region"), s.dim);
       const YamlAt comp = p.get("component");

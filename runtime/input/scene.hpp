@@ -56,6 +56,7 @@ struct BoundaryCondition {
   Point values{};                    // prescribed displacement, traction or body force
   FieldSpec field;
   double face_measure = 0;           // Traction: length/area the traction acts on (0: the region's domain face)
+  std::string where;                 // "file:line: boundary[i]", for messages found after reading
 };
 
 struct Crack {
@@ -83,6 +84,7 @@ struct Probe {
   Region region;
   int component = 0;
   std::optional<FieldSpec> reference;  // analytic field to compare the mean against
+  std::string where;
 };
 
 struct Scene {

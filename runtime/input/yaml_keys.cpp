@@ -6,11 +6,13 @@
 
 namespace pd {
 
-void YamlAt::fail(const std::string& message) const {
+std::string YamlAt::location() const {
   const int line = node.IsDefined() && node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
-  throw SceneError(file + ":" + (line > 0 ? std::to_string(line) : std::string("?")) + ": " +
-                   (path.empty() ? std::string("(top level)") : path) + ": " + message);
+  return file + ":" + (line > 0 ? std::to_string(line) : std::string("?")) + ": " +
+         (path.empty() ? std::string("(top level)") : path);
 }
+
+void YamlAt::fail(const std::string& message) const { throw SceneError(location() + ": " + message); }
 
 YamlAt YamlAt::child(const YAML::Node& n, const std::string& key) const {
   return {n, file, path.empty() ? key : path + "." + key};

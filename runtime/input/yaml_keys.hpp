@@ -25,6 +25,7 @@ struct YamlAt {
   std::string path;  // key path, e.g. "boundary[2].region"
 
   [[noreturn]] void fail(const std::string& message) const;
+  std::string location() const;  // "file:line: path"
   YamlAt child(const YAML::Node& n, const std::string& key) const;
   YamlAt element(const YAML::Node& n, std::size_t i) const;
 };

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "discretize/discretization.hpp"
+#include "input/yaml_keys.hpp"
 
 namespace pd {
 
@@ -103,7 +104,7 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) 
   for (const BoundaryCondition& bc : s.boundary) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
     const auto ids = region_particles(bc.region, p, s);
-    if (ids.empty()) throw std::runtime_error("a traction or body force region of the scene holds no particle");
+    if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
     if (bc.kind == BoundaryCondition::Kind::Traction) {
       ++tractions;
       const double measure = bc.face_measure > 0 ? bc.face_measure : face_measure(s, bc.region.side);

@@ -2,12 +2,16 @@
 #include "run/simulation.hpp"
 
 #include <chrono>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
 #include "fields/analytic.hpp"
+#include "input/yaml_keys.hpp"
 #include "write/writers.hpp"
 
 namespace pd {
@@ -27,6 +31,9 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   if (!law || !influence) throw std::invalid_argument("unknown law or influence function");
   particles_ = discretize(scene_);
   bonds_ = find_bonds(particles_, scene_.delta(), influence->weight);
+  summary_.scene = scene_.file;
+  summary_.law = law->name;
+  summary_.influence = influence->name;
   summary_.particles = particles_.size();
   summary_.bonds = bonds_.bond_count() / 2;
   summary_.broken_bonds = cut_bonds(scene_.cracks, particles_, bonds_) / 2;
@@ -63,7 +70,7 @@ Constraints Simulation::constraints() const {
         bc.kind != BoundaryCondition::Kind::Field)
       continue;
     const auto ids = region_particles(bc.region, particles_, scene_);
-    if (ids.empty()) throw std::runtime_error(fmt::format("{}: boundary[{}]: the region holds no particle", scene_.file, i));
+    if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
     std::unique_ptr<AnalyticField> field;
     if (bc.kind == BoundaryCondition::Kind::Field) field = std::make_unique<AnalyticField>(bc.field, scene_.materials[0].elastic);
     for (int p : ids)
@@ -87,7 +94,7 @@ std::vector<ProbeResult> Simulation::evaluate_probes() const {
     ProbeResult r;
     r.name = pr.name;
     const auto ids = region_particles(pr.region, particles_, scene_);
-    if (ids.empty()) throw std::runtime_error("probe " + pr.name + ": the region holds no particle");
+    if (ids.empty()) throw SceneError(pr.where + ": the region holds no particle");
     r.particles = static_cast<int>(ids.size());
     std::unique_ptr<AnalyticField> field;
     if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene_.materials[0].elastic);
@@ -104,8 +111,79 @@ std::vector<ProbeResult> Simulation::evaluate_probes() const {
   return out;
 }
 
+namespace {
+// Rigid-body modes the constraints leave free, found before the solve so the message
+// names the missing constraint instead of a singular factorisation. Dead loads cannot
+// balance a free rigid mode, so a scene must remove every one of them.
+std::string missing_constraints(const Particles& p, const Constraints& cons) {
+  const int d = p.dim;
+  std::vector<std::vector<double>> coords(static_cast<std::size_t>(d));  // positions of constrained dofs per component
+  for (int dof : cons.dofs) {
+    const int i = dof / d, c = dof % d;
+    coords[c].push_back(p.x[i * d + (c + 1) % d]);
+  }
+  std::string missing;
+  const char* axes = "xyz";
+  for (int c = 0; c < d; ++c)
+    if (coords[c].empty()) missing += fmt::format("no particle has its {} displacement prescribed (rigid translation in {}); ", axes[c], axes[c]);
+  auto spread = [](const std::vector<double>& v) {
+    if (v.empty()) return 0.0;
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return *hi - *lo;
+  };
+  if (d == 2 && missing.empty() && spread(coords[0]) == 0.0 && spread(coords[1]) == 0.0) {
+    // x fixed along one horizontal line and y along one vertical line: rotation about
+    // their crossing point is free unless the two constraints sit at different points.
+    bool blocked = false;
+    for (int dof : cons.dofs)
+      for (int other : cons.dofs)
+        if (dof % 2 == 0 && other % 2 == 0 && p.x[(dof / 2) * 2 + 1] != p.x[(other / 2) * 2 + 1]) blocked = true;
+    if (!blocked && coords[0].size() + coords[1].size() < 3) missing += "the constraints leave the rigid rotation free; ";
+  }
+  return missing;
+}
+}  // namespace
+
 RunSummary Simulation::run(bool write_outputs) {
   const auto t0 = std::chrono::steady_clock::now();
+  // Clusters of particles joined by intact bonds: each needs its own constraints, or it
+  // floats (a particle whose every bond is broken is a cluster of one).
+  const Constraints cons = constraints();
+  std::vector<int> parent(static_cast<std::size_t>(particles_.size()));
+  for (int p = 0; p < particles_.size(); ++p) parent[p] = p;
+  auto root = [&](int p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  for (int p = 0; p < particles_.size(); ++p)
+    for (int e = bonds_.offsets[p]; e < bonds_.offsets[p + 1]; ++e)
+      if (bonds_.alpha[e] != 0.0) parent[root(p)] = root(bonds_.neighbor[e]);
+  std::map<int, std::vector<int>> clusters;
+  for (int p = 0; p < particles_.size(); ++p) clusters[root(p)].push_back(p);
+  std::map<int, Constraints> cluster_constraints;
+  for (std::size_t i = 0; i < cons.dofs.size(); ++i) {
+    Constraints& c = cluster_constraints[root(cons.dofs[i] / particles_.dim)];
+    c.dofs.push_back(cons.dofs[i]);
+    c.values.push_back(cons.values[i]);
+  }
+  for (const auto& [r, members] : clusters) {
+    const std::string missing = missing_constraints(particles_, cluster_constraints[r]);
+    if (missing.empty()) continue;
+    std::string list;
+    for (std::size_t i = 0; i < std::min<std::size_t>(members.size(), 8); ++i) list += (i ? ", " : "") + std::to_string(members[i]);
+    const double* x = particles_.position(members[0]);
+    const std::string what = clusters.size() == 1
+                                 ? std::string("the body is under-constrained: ")
+                                 : fmt::format("a cluster of {} particle(s) joined by intact bonds (particles {}{}; the first at ({:.6g}, {:.6g})) "
+                                               "is disconnected from the rest of the body and under-constrained: ",
+                                               members.size(), list, members.size() > 8 ? ", ..." : "", x[0], x[1]);
+    throw std::runtime_error(what + missing.substr(0, missing.size() - 2));
+  }
+  // No load at all: the solution is zero (and the residual is rounding noise).
+  bool loaded = !effects_.empty();
+  for (double v : cons.values) loaded = loaded || v != 0.0;
+  if (!loaded) log_("  no load and no prescribed displacement: the solution is zero");
+
   NonlinearProblem pb;
   pb.size = static_cast<int>(u_.size());
   // A law derived from an energy has a symmetric tangent; one without (e.g. Oterkus's
@@ -130,7 +208,11 @@ RunSummary Simulation::run(bool write_outputs) {
   opt.max_iterations = scene_.solver.max_iterations;
   opt.linear = scene_.solver.linear;
   opt.krylov_tolerance = scene_.solver.krylov_tolerance;
-  summary_.newton = solve_newton(pb, constraints(), u_, opt, log_);
+  if (loaded) {
+    summary_.newton = solve_newton(pb, cons, u_, opt, log_);
+  } else {
+    summary_.newton.converged = true;
+  }
   summary_.solve_seconds = seconds_since(t0);
   log_(fmt::format("  linear solver: {}", summary_.newton.linear_choice));
   if (!summary_.newton.converged) throw std::runtime_error(summary_.newton.failure);
@@ -163,14 +245,56 @@ RunSummary Simulation::run(bool write_outputs) {
     }
     fields.push_back({"material", 1, material});
     fields.push_back({"damage", 1, damage});
+    std::vector<double> force;
+    assembler_->forces(u_, force);
+    fields.push_back({"internal_force", particles_.dim, force});
+    const auto& law = assembler_->law();
+    const std::vector<double> outputs = assembler_->particle_outputs(u_);
+    for (int k = 0; k < law.n_outputs; ++k) {
+      std::vector<double> v(static_cast<std::size_t>(particles_.size()));
+      for (int p = 0; p < particles_.size(); ++p) v[p] = outputs[static_cast<std::size_t>(p) * law.n_outputs + k];
+      fields.push_back({law.output_names[k], 1, v});
+    }
     const std::string dir = scene_.output.directory;
     if (scene_.output.vtu) write_vtu(dir + "/result.vtu", particles_, fields), summary_.files.push_back(dir + "/result.vtu");
     if (scene_.output.csv) write_csv(dir + "/result.csv", particles_, fields), summary_.files.push_back(dir + "/result.csv");
-    summary_.files.push_back(dir + "/summary.txt");
+    summary_.files.push_back(dir + "/summary.json");
     summary_.output_seconds = seconds_since(t1);
-    write_text_atomically(dir + "/summary.txt", summary_.text());
+    write_text_atomically(dir + "/summary.json", summary_.json());
   }
   return summary_;
+}
+
+std::string RunSummary::json() const {
+  nlohmann::ordered_json j;
+  j["scene"] = scene;
+  j["law"] = law;
+  j["influence"] = influence;
+  j["kernel_variant"] = variant;
+  j["effects"] = effects;
+  j["particles"] = particles;
+  j["bonds"] = bonds;
+  j["broken_bonds"] = broken_bonds;
+  j["unknowns"] = newton.unknowns;
+  j["nonzeros"] = newton.nonzeros;
+  j["linear_solver"] = {{"method", newton.linear_method}, {"choice", newton.linear_choice}};
+  nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
+  for (const auto& it : newton.history)
+    iterations.push_back({{"load_step", it.step}, {"iteration", it.iteration}, {"residual", it.residual},
+                          {"increment", it.increment}, {"line_search", it.line_search}, {"krylov_iterations", it.krylov_iterations}});
+  j["newton"] = {{"converged", newton.converged}, {"iterations", iterations}};
+  j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.solve_seconds},
+                  {"solve", solve_seconds}, {"output", output_seconds}};
+  nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
+  for (const auto& p : probes) {
+    nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
+    if (p.has_reference) e["reference"] = p.reference, e["error"] = p.error;
+    probe_list.push_back(e);
+  }
+  j["probes"] = probe_list;
+  if (has_field_error) j["field_error_eq48"] = field_error;
+  j["files"] = files;
+  return j.dump(2) + "\n";
 }
 
 std::string RunSummary::text() const {

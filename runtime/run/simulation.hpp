@@ -24,6 +24,7 @@ struct ProbeResult {
 };
 
 struct RunSummary {
+  std::string scene, law, influence;
   int particles = 0;
   long long bonds = 0;  // counted once per direction
   int broken_bonds = 0;
@@ -35,7 +36,8 @@ struct RunSummary {
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
-  std::string text() const;  // the run summary, as written to summary.txt
+  std::string text() const;  // the run summary for the log
+  std::string json() const;  // the run summary, as written to summary.json
 };
 
 class Simulation {

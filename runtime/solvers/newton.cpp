@@ -81,8 +81,8 @@ NewtonReport solve_newton(const NonlinearProblem& pb, const Constraints& cons, s
     double increment = 0;
     for (int it = 0; it <= opt.max_iterations; ++it) {
       rep.history.push_back({step, it, norm, it == 0 ? 0.0 : rep.history.back().line_search, increment, 0});
-      log(fmt::format("  load step {}/{}  iteration {:2d}  |r| = {:.3e}  (relative {:.3e})  |du|/|u| = {:.2e}", step,
-                      opt.load_steps, it, norm, norm / scale, increment));
+      log(fmt::format("  load step {}/{}  iteration {:2d}  |r| = {:.3e}  (relative {:.3e})  |du|/|u| = {:.2e}  [{:.2f} s]",
+                      step, opt.load_steps, it, norm, norm / scale, increment, rep.assembly_seconds + rep.solve_seconds));
       if (!std::isfinite(norm)) {
         rep.failure = "the residual is not finite (NaN or Inf) at load step " + std::to_string(step);
         return rep;
