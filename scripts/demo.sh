@@ -12,4 +12,4 @@ build/bin/pd check-law silling_plane_strain
 echo
 build/bin/pd run scenes/crack.yaml --out out/demo
 echo
-echo "Results: out/demo/ (result.vtu opens in ParaView; summary.txt lists the run)."
+echo "Results: out/demo/ (result.vtu opens in ParaView; summary.json lists the run)."
