@@ -1,6 +1,7 @@
 // The scene reader: YAML -> Scene, every key checked (runtime/input/yaml_keys.hpp).
 #include "input/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -56,6 +57,8 @@ Shape read_shape(const YamlAt& at, int dim, bool inclusion) {
     s.min = to_point(b.get("min"), dim);
     s.max = to_point(b.get("max"), dim);
     b.finish();
+    for (int i = 0; i < dim; ++i)
+      if (!(s.max[i] > s.min[i])) m.get("box").fail("max must exceed min in every coordinate");
     ++kinds;
   }
   if (kinds != 1) at.fail("give exactly one of circle, sphere, polygon, box");
@@ -94,16 +97,56 @@ Region read_region(const YamlAt& at, int dim) {
   return r;
 }
 
+// The parameters of each analytic solution (runtime/fields/analytic.hpp), checked here
+// so that a scene with a misspelt or missing parameter fails at read time with its
+// line, not later in the run. E and nu default to the body's material there.
+struct FieldParameters {
+  const char* solution;
+  std::vector<std::string> required;
+};
+const std::vector<FieldParameters> kFieldParameters{
+    {"uniaxial", {"traction"}}, {"biaxial", {"traction"}}, {"shear", {"traction"}}, {"westergaard", {"pressure", "half_length"}}};
+const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
+
 FieldSpec read_field(const YamlAt& at) {
   MapReader m(at);
   FieldSpec f;
-  f.solution = m.choice("solution", "", {"uniaxial", "biaxial", "shear", "westergaard"});
-  for (auto it = at.node.begin(); it != at.node.end(); ++it) {
-    const std::string key = it->first.Scalar();
-    if (key != "solution") f.parameters[key] = m.number(key);
-  }
+  std::vector<std::string> names;
+  for (const auto& fp : kFieldParameters) names.push_back(fp.solution);
+  f.solution = m.choice("solution", "", names);
+  const FieldParameters* fp = &kFieldParameters[0];
+  for (const auto& candidate : kFieldParameters)
+    if (f.solution == candidate.solution) fp = &candidate;
+  for (const std::string& key : fp->required) f.parameters[key] = m.number(key);
+  for (const std::string& key : kFieldOptional)
+    if (m.has(key)) f.parameters[key] = m.number(key);
   m.finish();
+  if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0) m.get("half_length").fail("half_length must be positive");
+  if (f.parameters.count("E") && f.parameters["E"] <= 0) m.get("E").fail("Young's modulus E must be positive");
+  if (f.parameters.count("nu") && !(f.parameters["nu"] > -1 && f.parameters["nu"] < 0.5))
+    m.get("nu").fail("Poisson's ratio nu must lie in (-1, 0.5)");
   return f;
+}
+
+// A 3D crack polygon must be planar with a non-zero area: the cutting test projects onto
+// its plane, so a bent or collinear polygon would cut an ill-defined set of bonds.
+void check_crack_polygon(const YamlAt& at, const std::vector<Point>& poly) {
+  const Point& o = poly[0];
+  double n[3] = {0, 0, 0}, size = 0;
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+    const double u[3] = {poly[i][0] - o[0], poly[i][1] - o[1], poly[i][2] - o[2]};
+    const double v[3] = {poly[i + 1][0] - o[0], poly[i + 1][1] - o[1], poly[i + 1][2] - o[2]};
+    n[0] += u[1] * v[2] - u[2] * v[1];
+    n[1] += u[2] * v[0] - u[0] * v[2];
+    n[2] += u[0] * v[1] - u[1] * v[0];
+  }
+  for (const Point& q : poly) size = std::max(size, std::hypot(q[0] - o[0], q[1] - o[1], q[2] - o[2]));
+  const double area2 = std::hypot(n[0], n[1], n[2]);
+  if (!(area2 > 1e-12 * size * size)) at.fail("the polygon has no area");
+  for (const Point& q : poly) {
+    const double off = ((q[0] - o[0]) * n[0] + (q[1] - o[1]) * n[1] + (q[2] - o[2]) * n[2]) / area2;
+    if (std::fabs(off) > 1e-9 * size) at.fail("the polygon is not planar");
+  }
 }
 
 MaterialSpec read_material(const YamlAt& at, int dim) {
@@ -295,6 +338,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
       for (std::size_t j = 0; j < pts.node.size(); ++j) crack.points.push_back(to_point(pts.element(pts.node[j], j), s.dim));
       if (s.dim == 2 && crack.points.size() != 2) pts.fail("a 2D crack is a segment: two points");
       if (s.dim == 3 && crack.points.size() < 3) pts.fail("a 3D crack is a planar polygon: at least three points");
+      if (s.dim == 2 && crack.points[0] == crack.points[1]) pts.fail("the two points coincide");
+      if (s.dim == 3) check_crack_polygon(pts, crack.points);
       crack.pressure = c.number("pressure", 0.0);
       c.finish();
       s.cracks.push_back(crack);
@@ -303,6 +348,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (m.has("solver")) {
     MapReader sv(m.get("solver"));
     s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab"});
+    s.solver.nonlinear = sv.choice("nonlinear", "newton", {"newton"});
     s.solver.load_steps = sv.integer("load_steps", 1);
     if (s.solver.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
     s.solver.tolerance = sv.number("tolerance", 1e-10);

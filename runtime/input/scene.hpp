@@ -66,6 +66,7 @@ struct Crack {
 
 struct SolverSpec {
   std::string linear = "auto";  // auto cholmod umfpack cg bicgstab
+  std::string nonlinear = "newton";  // the only nonlinear method so far; the key keeps scenes explicit
   int load_steps = 1;
   double tolerance = 1e-10;     // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
