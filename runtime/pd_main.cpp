@@ -14,6 +14,7 @@ const std::map<std::string, std::pair<std::function<int(const pd::cli::Args&)>, 
       {"laws", {pd::cli::laws_command, "list the generated laws and influence functions (-v: op counts)"}},
       {"check-law", {pd::cli::check_law_command, "NAME: verify a law's tangent against finite differences"}},
       {"run", {pd::cli::run_command, "SCENE.yaml [--out DIR]: solve a scene and write its results"}},
+      {"study", {pd::cli::study_command, "STUDY.yaml [--out DIR] [--quick]: convergence and cost study"}},
   };
   return table;
 }
