@@ -47,9 +47,15 @@ Particles discretize(const Scene& s) {
 }
 
 std::vector<int> region_particles(const Region& region, const Particles& p, const Scene& scene) {
+  // A side with no thickness means the outermost row. Its boundary is put halfway
+  // between that row and the next: h from the face for cell centres (rows at h/2, 3h/2),
+  // h/2 for nodes (rows at 0, h). A perturbed row (amplitude < h/2) then stays whole,
+  // and no unperturbed row sits on the boundary where rounding would decide.
+  Region r = region;
+  if (r.kind == Region::Kind::Side && r.thickness <= 0) r.thickness = scene.placement == "node" ? 0.5 * scene.h : scene.h;
   std::vector<int> out;
   for (int i = 0; i < p.size(); ++i)
-    if (region.contains(p.position(i), p.dim, scene.lo, scene.hi, scene.h)) out.push_back(i);
+    if (r.contains(p.position(i), p.dim, scene.lo, scene.hi, scene.h)) out.push_back(i);
   return out;
 }
 
