@@ -132,13 +132,17 @@ Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, d
 namespace {
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
-// Proper or touching intersection of segments pq and ab (2D).
+// Bond pq crosses crack ab (2D): p and q strictly on opposite sides of the crack's line
+// (a particle on the line is on neither side), and the crossing point on the closed
+// crack segment (a bond through a crack tip is cut). Both tests use sign products, so
+// the answer does not depend on the order of p and q.
 bool segments_cross(const double* p, const double* q, const Point& a, const Point& b) {
   const double d1 = cross2(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1]);
   const double d2 = cross2(b[0] - a[0], b[1] - a[1], q[0] - a[0], q[1] - a[1]);
   const double d3 = cross2(q[0] - p[0], q[1] - p[1], a[0] - p[0], a[1] - p[1]);
   const double d4 = cross2(q[0] - p[0], q[1] - p[1], b[0] - p[0], b[1] - p[1]);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0;
+  const auto sign = [](double v) { return (v > 0) - (v < 0); };
+  return sign(d1) * sign(d2) < 0 && sign(d3) * sign(d4) <= 0;
 }
 
 // Segment pq against a planar polygon (3D): the crossing point of the polygon's plane
@@ -178,8 +182,11 @@ int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds
   const int d = p.dim;
   for (int i = 0; i < p.size(); ++i)
     for (int b = bonds.offsets[i]; b < bonds.offsets[i + 1]; ++b) {
-      const double* xa = p.position(i);
-      const double* xb = p.position(bonds.neighbor[b]);
+      // The lower index first: both directions of a bond then run the same arithmetic,
+      // so a bond through a crack tip is cut in both families or in neither.
+      const int lo = std::min(i, bonds.neighbor[b]), hi = std::max(i, bonds.neighbor[b]);
+      const double* xa = p.position(lo);
+      const double* xb = p.position(hi);
       for (const Crack& c : cracks) {
         const bool cross = d == 2 ? segments_cross(xa, xb, c.points[0], c.points[1]) : segment_crosses_polygon(xa, xb, c.points);
         if (cross && bonds.alpha[b] != 0.0) {
