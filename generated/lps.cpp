@@ -118,26 +118,22 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   }
 }
 
-// lps_plane_strain_damaged_jvp: per bond 9 add, 39 mul, 8 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 6 add, 33 mul, 7 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double xi_1 = fam.xi[k * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha / s_m * w;
+    const double xi_1 = fam.xi[k * 2 + 1];
     ds_theta += 2.0 * dY_0 * V * alpha * w / s_m * xi_0 + 2.0 * dY_1 * V * alpha * w / s_m * xi_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
@@ -323,25 +319,21 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   }
 }
 
-// lps_plane_strain_intact_jvp: per bond 9 add, 33 mul, 8 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 6 add, 28 mul, 7 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double xi_1 = fam.xi[k * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V / s_m * w;
+    const double xi_1 = fam.xi[k * 2 + 1];
     ds_theta += 2.0 * dY_0 * V * w / s_m * xi_0 + 2.0 * dY_1 * V * w / s_m * xi_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
@@ -436,7 +428,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
   d.damaged.tangent_ops = {9, 39, 8, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {9, 39, 8, 0};
+  d.damaged.jvp_ops = {6, 33, 7, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.intact.moments = &lps_plane_strain_intact_moments;
@@ -445,7 +437,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.intact.tangent = &lps_plane_strain_intact_tangent;
   d.intact.tangent_ops = {9, 33, 8, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {9, 33, 8, 0};
+  d.intact.jvp_ops = {6, 28, 7, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   return d;
@@ -588,29 +580,24 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   }
 }
 
-// lps_3d_damaged_jvp: per bond 18 add, 60 mul, 13 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_damaged_jvp: per bond 13 add, 53 mul, 12 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double xi_2 = fam.xi[k * 3 + 2];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha / s_m * w;
+    const double xi_2 = fam.xi[k * 3 + 2];
     ds_theta += 3.0 * dY_0 * V * alpha * w / s_m * xi_0 + 3.0 * dY_1 * V * alpha * w / s_m * xi_1 + 3.0 * dY_2 * V * alpha * w / s_m * xi_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
@@ -836,28 +823,23 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   }
 }
 
-// lps_3d_intact_jvp: per bond 18 add, 52 mul, 13 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_intact_jvp: per bond 13 add, 46 mul, 12 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double xi_2 = fam.xi[k * 3 + 2];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V / s_m * w;
+    const double xi_2 = fam.xi[k * 3 + 2];
     ds_theta += 3.0 * dY_0 * V * w / s_m * xi_0 + 3.0 * dY_1 * V * w / s_m * xi_1 + 3.0 * dY_2 * V * w / s_m * xi_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
@@ -966,7 +948,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.damaged.tangent = &lps_3d_damaged_tangent;
   d.damaged.tangent_ops = {15, 54, 10, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {18, 60, 13, 0};
+  d.damaged.jvp_ops = {13, 53, 12, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.intact.moments = &lps_3d_intact_moments;
@@ -975,7 +957,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.intact.tangent = &lps_3d_intact_tangent;
   d.intact.tangent_ops = {15, 47, 10, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {18, 52, 13, 0};
+  d.intact.jvp_ops = {13, 46, 12, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   return d;
@@ -1154,7 +1136,7 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   }
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 13 add, 49 mul, 9 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 43 mul, 8 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_dilatation_moment_0_0 = fam.moments[1];
@@ -1165,7 +1147,6 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
   const double p1 = 1.0000000000000001e-16 * p0 * p0;
@@ -1184,23 +1165,18 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
   const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b16 = p10 * xi_0 + p13 * xi_1;
-    const double b17 = p14 * xi_0 + p15 * xi_1;
-    s_theta += 2.0 * (b16 * (Y_0 - xi_0) + b17 * (Y_1 - xi_1)) * V * alpha / s_m * w;
-    ds_theta += 2.0 * dY_0 * b16 * V * alpha / s_m * w + 2.0 * dY_1 * b17 * V * alpha / s_m * w;
+    ds_theta += 2.0 * dY_0 * (p10 * xi_0 + p13 * xi_1) * V * alpha / s_m * w + 2.0 * dY_1 * (p14 * xi_0 + p15 * xi_1) * V * alpha / s_m * w;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p18 = 8.0 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p16 = 8.0 * P_mu;
+  const double p17 = 2.0 * ds_theta * (P_lambda - P_mu);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double alpha = fam.alpha[k];
@@ -1209,17 +1185,17 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double xi_1 = fam.xi[k * 2 + 1];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b20 = p18 * dY_0 * alpha * w;
-    const double b21 = xi_0 * xi_0;
-    const double b22 = xi_1 * xi_1;
-    const double b23 = s_m * (b21 + b22);
-    const double b24 = p18 * dY_1 * alpha * w;
-    const double b25 = V0 * (b20 / b23 * b21 + b24 * xi_1 / b23 * xi_0 + p19 * (p10 * xi_0 + p13 * xi_1) * alpha / s_m * w) * V;
-    const double b26 = V0 * (b20 * xi_1 / b23 * xi_0 + b24 / b23 * b22 + p19 * (p14 * xi_0 + p15 * xi_1) * alpha / s_m * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    const double b18 = p16 * dY_0 * alpha * w;
+    const double b19 = xi_0 * xi_0;
+    const double b20 = xi_1 * xi_1;
+    const double b21 = s_m * (b19 + b20);
+    const double b22 = p16 * dY_1 * alpha * w;
+    const double b23 = V0 * (b18 / b21 * b19 + b22 * xi_1 / b21 * xi_0 + p17 * (p10 * xi_0 + p13 * xi_1) * alpha / s_m * w) * V;
+    const double b24 = V0 * (b18 * xi_1 / b21 * xi_0 + b22 / b21 * b20 + p17 * (p14 * xi_0 + p15 * xi_1) * alpha / s_m * w) * V;
+    df[(k + 1) * 2 + 0] = -b23;
+    df[0] += b23;
+    df[(k + 1) * 2 + 1] = -b24;
+    df[1] += b24;
   }
 }
 
@@ -1481,7 +1457,7 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   }
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 13 add, 42 mul, 9 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 37 mul, 8 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_dilatation_moment_0_0 = fam.moments[1];
@@ -1492,7 +1468,6 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
   const double p1 = 1.0000000000000001e-16 * p0 * p0;
@@ -1511,22 +1486,17 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
   const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b16 = p10 * xi_0 + p13 * xi_1;
-    const double b17 = p14 * xi_0 + p15 * xi_1;
-    s_theta += 2.0 * (b16 * (Y_0 - xi_0) + b17 * (Y_1 - xi_1)) * V / s_m * w;
-    ds_theta += 2.0 * dY_0 * b16 * V / s_m * w + 2.0 * dY_1 * b17 * V / s_m * w;
+    ds_theta += 2.0 * dY_0 * (p10 * xi_0 + p13 * xi_1) * V / s_m * w + 2.0 * dY_1 * (p14 * xi_0 + p15 * xi_1) * V / s_m * w;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p18 = 8.0 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p16 = 8.0 * P_mu;
+  const double p17 = 2.0 * ds_theta * (P_lambda - P_mu);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double w = fam.w[k];
@@ -1534,17 +1504,17 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b20 = p18 * dY_0 * w;
-    const double b21 = xi_0 * xi_0;
-    const double b22 = xi_1 * xi_1;
-    const double b23 = s_m * (b21 + b22);
-    const double b24 = p18 * dY_1 * w;
-    const double b25 = V0 * (b20 / b23 * b21 + b24 * xi_1 / b23 * xi_0 + p19 * (p10 * xi_0 + p13 * xi_1) / s_m * w) * V;
-    const double b26 = V0 * (b20 * xi_1 / b23 * xi_0 + b24 / b23 * b22 + p19 * (p14 * xi_0 + p15 * xi_1) / s_m * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    const double b18 = p16 * dY_0 * w;
+    const double b19 = xi_0 * xi_0;
+    const double b20 = xi_1 * xi_1;
+    const double b21 = s_m * (b19 + b20);
+    const double b22 = p16 * dY_1 * w;
+    const double b23 = V0 * (b18 / b21 * b19 + b22 * xi_1 / b21 * xi_0 + p17 * (p10 * xi_0 + p13 * xi_1) / s_m * w) * V;
+    const double b24 = V0 * (b18 * xi_1 / b21 * xi_0 + b22 / b21 * b20 + p17 * (p14 * xi_0 + p15 * xi_1) / s_m * w) * V;
+    df[(k + 1) * 2 + 0] = -b23;
+    df[0] += b23;
+    df[(k + 1) * 2 + 1] = -b24;
+    df[1] += b24;
   }
 }
 
@@ -1655,7 +1625,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
   d.damaged.tangent_ops = {13, 52, 10, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {13, 49, 9, 0};
+  d.damaged.jvp_ops = {10, 43, 8, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
@@ -1664,7 +1634,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
   d.intact.tangent_ops = {13, 44, 10, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {13, 42, 9, 0};
+  d.intact.jvp_ops = {10, 37, 8, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   return d;
@@ -1941,7 +1911,7 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   }
 }
 
-// lps_corrected_3d_damaged_jvp: per bond 30 add, 82 mul, 15 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
+// lps_corrected_3d_damaged_jvp: per bond 25 add, 75 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_dilatation_moment_0_0 = fam.moments[1];
@@ -1957,7 +1927,6 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
   const double p1 = 1.0000000000000001e-16 * p0 * p0;
@@ -1997,27 +1966,20 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
   const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
   for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double b37 = p22 * xi_0 + p26 * xi_1 + p30 * xi_2;
-    const double b38 = p31 * xi_0 + p32 * xi_1 + p33 * xi_2;
-    const double b39 = p34 * xi_0 + p35 * xi_1 + p36 * xi_2;
-    s_theta += 3.0 * (b37 * (Y_0 - xi_0) + b38 * (Y_1 - xi_1) + b39 * (Y_2 - xi_2)) * V * alpha / s_m * w;
-    ds_theta += 3.0 * dY_0 * b37 * V * alpha / s_m * w + 3.0 * dY_1 * b38 * V * alpha / s_m * w + 3.0 * dY_2 * b39 * V * alpha / s_m * w;
+    ds_theta += 3.0 * dY_0 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * V * alpha / s_m * w + 3.0 * dY_1 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * V * alpha / s_m * w + 3.0 * dY_2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * V * alpha / s_m * w;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p40 = 15.0 * P_mu;
-  const double p41 = 3.0 * ds_theta * (P_lambda - P_mu);
+  const double p37 = 15.0 * P_mu;
+  const double p38 = 3.0 * ds_theta * (P_lambda - P_mu);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double alpha = fam.alpha[k];
@@ -2028,23 +1990,23 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b42 = p40 * dY_0 * alpha * w;
-    const double b43 = xi_0 * xi_0;
-    const double b44 = xi_1 * xi_1;
-    const double b45 = xi_2 * xi_2;
-    const double b46 = s_m * (b43 + b44 + b45);
-    const double b47 = p40 * dY_1 * alpha * w;
-    const double b48 = p40 * dY_2 * alpha * w;
-    const double b49 = b48 * xi_2 / b46;
-    const double b50 = V0 * (b42 / b46 * b43 + b47 * xi_1 / b46 * xi_0 + b49 * xi_0 + p41 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * alpha / s_m * w) * V;
-    const double b51 = V0 * (b42 * xi_1 / b46 * xi_0 + b47 / b46 * b44 + b49 * xi_1 + p41 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * alpha / s_m * w) * V;
-    const double b52 = V0 * (b42 * xi_2 / b46 * xi_0 + b47 * xi_2 / b46 * xi_1 + b48 / b46 * b45 + p41 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * alpha / s_m * w) * V;
-    df[(k + 1) * 3 + 0] = -b50;
-    df[0] += b50;
-    df[(k + 1) * 3 + 1] = -b51;
-    df[1] += b51;
-    df[(k + 1) * 3 + 2] = -b52;
-    df[2] += b52;
+    const double b39 = p37 * dY_0 * alpha * w;
+    const double b40 = xi_0 * xi_0;
+    const double b41 = xi_1 * xi_1;
+    const double b42 = xi_2 * xi_2;
+    const double b43 = s_m * (b40 + b41 + b42);
+    const double b44 = p37 * dY_1 * alpha * w;
+    const double b45 = p37 * dY_2 * alpha * w;
+    const double b46 = b45 * xi_2 / b43;
+    const double b47 = V0 * (b39 / b43 * b40 + b44 * xi_1 / b43 * xi_0 + b46 * xi_0 + p38 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * alpha / s_m * w) * V;
+    const double b48 = V0 * (b39 * xi_1 / b43 * xi_0 + b44 / b43 * b41 + b46 * xi_1 + p38 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * alpha / s_m * w) * V;
+    const double b49 = V0 * (b39 * xi_2 / b43 * xi_0 + b44 * xi_2 / b43 * xi_1 + b45 / b43 * b42 + p38 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * alpha / s_m * w) * V;
+    df[(k + 1) * 3 + 0] = -b47;
+    df[0] += b47;
+    df[(k + 1) * 3 + 1] = -b48;
+    df[1] += b48;
+    df[(k + 1) * 3 + 2] = -b49;
+    df[2] += b49;
   }
 }
 
@@ -2462,7 +2424,7 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   }
 }
 
-// lps_corrected_3d_intact_jvp: per bond 30 add, 72 mul, 15 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
+// lps_corrected_3d_intact_jvp: per bond 25 add, 66 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_dilatation_moment_0_0 = fam.moments[1];
@@ -2478,7 +2440,6 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
-  double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
   const double p1 = 1.0000000000000001e-16 * p0 * p0;
@@ -2518,26 +2479,19 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
   const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
   for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double b37 = p22 * xi_0 + p26 * xi_1 + p30 * xi_2;
-    const double b38 = p31 * xi_0 + p32 * xi_1 + p33 * xi_2;
-    const double b39 = p34 * xi_0 + p35 * xi_1 + p36 * xi_2;
-    s_theta += 3.0 * (b37 * (Y_0 - xi_0) + b38 * (Y_1 - xi_1) + b39 * (Y_2 - xi_2)) * V / s_m * w;
-    ds_theta += 3.0 * dY_0 * b37 * V / s_m * w + 3.0 * dY_1 * b38 * V / s_m * w + 3.0 * dY_2 * b39 * V / s_m * w;
+    ds_theta += 3.0 * dY_0 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * V / s_m * w + 3.0 * dY_1 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * V / s_m * w + 3.0 * dY_2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * V / s_m * w;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p40 = 15.0 * P_mu;
-  const double p41 = 3.0 * ds_theta * (P_lambda - P_mu);
+  const double p37 = 15.0 * P_mu;
+  const double p38 = 3.0 * ds_theta * (P_lambda - P_mu);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double w = fam.w[k];
@@ -2547,23 +2501,23 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b42 = p40 * dY_0 * w;
-    const double b43 = xi_0 * xi_0;
-    const double b44 = xi_1 * xi_1;
-    const double b45 = xi_2 * xi_2;
-    const double b46 = s_m * (b43 + b44 + b45);
-    const double b47 = p40 * dY_1 * w;
-    const double b48 = p40 * dY_2 * w;
-    const double b49 = b48 * xi_2 / b46;
-    const double b50 = V0 * (b42 / b46 * b43 + b47 * xi_1 / b46 * xi_0 + b49 * xi_0 + p41 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) / s_m * w) * V;
-    const double b51 = V0 * (b42 * xi_1 / b46 * xi_0 + b47 / b46 * b44 + b49 * xi_1 + p41 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) / s_m * w) * V;
-    const double b52 = V0 * (b42 * xi_2 / b46 * xi_0 + b47 * xi_2 / b46 * xi_1 + b48 / b46 * b45 + p41 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) / s_m * w) * V;
-    df[(k + 1) * 3 + 0] = -b50;
-    df[0] += b50;
-    df[(k + 1) * 3 + 1] = -b51;
-    df[1] += b51;
-    df[(k + 1) * 3 + 2] = -b52;
-    df[2] += b52;
+    const double b39 = p37 * dY_0 * w;
+    const double b40 = xi_0 * xi_0;
+    const double b41 = xi_1 * xi_1;
+    const double b42 = xi_2 * xi_2;
+    const double b43 = s_m * (b40 + b41 + b42);
+    const double b44 = p37 * dY_1 * w;
+    const double b45 = p37 * dY_2 * w;
+    const double b46 = b45 * xi_2 / b43;
+    const double b47 = V0 * (b39 / b43 * b40 + b44 * xi_1 / b43 * xi_0 + b46 * xi_0 + p38 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) / s_m * w) * V;
+    const double b48 = V0 * (b39 * xi_1 / b43 * xi_0 + b44 / b43 * b41 + b46 * xi_1 + p38 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) / s_m * w) * V;
+    const double b49 = V0 * (b39 * xi_2 / b43 * xi_0 + b44 * xi_2 / b43 * xi_1 + b45 / b43 * b42 + p38 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) / s_m * w) * V;
+    df[(k + 1) * 3 + 0] = -b47;
+    df[0] += b47;
+    df[(k + 1) * 3 + 1] = -b48;
+    df[1] += b48;
+    df[(k + 1) * 3 + 2] = -b49;
+    df[2] += b49;
   }
 }
 
@@ -2732,7 +2686,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
   d.damaged.tangent_ops = {27, 82, 14, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {30, 82, 15, 0};
+  d.damaged.jvp_ops = {25, 75, 14, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.intact.moments = &lps_corrected_3d_intact_moments;
@@ -2741,7 +2695,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
   d.intact.tangent_ops = {27, 71, 14, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {30, 72, 15, 0};
+  d.intact.jvp_ops = {25, 66, 14, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   return d;

@@ -35,16 +35,16 @@ class Builder {
     out.n_moments = static_cast<int>(moments_.size());
     out.n_states = static_cast<int>(force_states_.size());
     out.moments = moments_kernel();
-    out.residual = residual_kernel();
-    out.tangent = tangent_kernel();
-    out.jvp = jvp_kernel();
+    out.residual = prune(residual_kernel());
+    out.tangent = prune(tangent_kernel());
+    out.jvp = prune(jvp_kernel());
     out.has_energy = law_.has_energy();
-    if (out.has_energy) out.energy = particle_value_kernel("energy", "double", {{"W", law_.energy_density()}});
+    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", "double", {{"W", law_.energy_density()}}));
     out.has_outputs = !law_.outputs().empty();
     if (out.has_outputs) {
       std::vector<std::pair<std::string, Expr>> values;
       for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({"outputs[" + str(static_cast<int>(i)) + "]", law_.outputs()[i].value});
-      out.outputs = particle_value_kernel("outputs", "void", values);
+      out.outputs = prune(particle_value_kernel("outputs", "void", values));
     }
     return out;
   }
@@ -256,6 +256,56 @@ class Builder {
     for (auto& [target, value] : values) seg.stores.push_back({returns ? "const double " + target : target, value, StoreMode::Set, ""});
     p.segments.push_back(seg);
     if (returns) p.epilogue.push_back("return " + values.front().first + ";");
+    return p;
+  }
+
+  // Drops the horizon sums a kernel accumulates but never reads (e.g. the deformed shape
+  // tensor in the JVP of a law linear in it): a sum is kept when a non-sum store reads
+  // it, directly or through the bodies of other kept sums.
+  static KernelProgram prune(KernelProgram p) {
+    std::map<std::string, int> symbol_of_var;
+    for (const auto& [sym, b] : p.bindings)
+      if (b.load.empty()) symbol_of_var[b.var] = sym;
+    auto is_sum_store = [&](const Store& st) { return st.mode == StoreMode::Accumulate && symbol_of_var.count(st.target); };
+    std::set<int> needed;
+    std::vector<int> work;
+    for (const Segment& seg : p.segments)
+      for (const Store& st : seg.stores)
+        if (!is_sum_store(st))
+          for (int sym : free_symbols(st.value)) work.push_back(sym);
+    std::map<int, std::vector<Expr>> bodies;
+    for (const Segment& seg : p.segments)
+      for (const Store& st : seg.stores)
+        if (is_sum_store(st)) bodies[symbol_of_var[st.target]].push_back(st.value);
+    while (!work.empty()) {
+      const int sym = work.back();
+      work.pop_back();
+      if (!needed.insert(sym).second) continue;
+      for (Expr body : bodies[sym])
+        for (int s2 : free_symbols(body)) work.push_back(s2);
+    }
+    std::vector<Segment> kept;
+    for (Segment seg : p.segments) {
+      std::vector<Store> stores;
+      std::set<std::string> dropped;
+      for (const Store& st : seg.stores) {
+        if (is_sum_store(st) && !needed.count(symbol_of_var[st.target])) {
+          dropped.insert(st.target);
+          continue;
+        }
+        stores.push_back(st);
+      }
+      std::vector<std::string> before;
+      for (const std::string& line : seg.before) {
+        bool drop = false;
+        for (const std::string& v : dropped) drop = drop || line == "double " + v + " = 0.0;";
+        if (!drop) before.push_back(line);
+      }
+      seg.stores = stores;
+      seg.before = before;
+      if (!seg.stores.empty() || !seg.before.empty()) kept.push_back(seg);
+    }
+    p.segments = kept;
     return p;
   }
 

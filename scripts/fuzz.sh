@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (+ ASan/UBSan) into build-fuzz/ and fuzzes the
+# scene reader. Usage: scripts/fuzz.sh [seconds]   (default 20; a longer run: 3600)
+# New inputs that reach new code are added to tests/fuzz/corpus/scene/; any crash
+# input is written to build-fuzz/ and fails the run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-20}"
+./scripts/install_deps.sh
+if [ ! -f build-fuzz/CMakeCache.txt ]; then cmake --preset fuzz >/dev/null; fi
+cmake --build build-fuzz -j "$(nproc)" --target fuzz_scene
+cd build-fuzz
+./bin/fuzz_scene -max_total_time="$seconds" -max_len=4096 -timeout=10 ../tests/fuzz/corpus/scene
