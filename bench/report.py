@@ -34,7 +34,7 @@ def cpu_model():
 
 def main():
     times, bonds, ctx = median_times(sys.argv[1])
-    command = sys.argv[2]
+    command = sys.argv[3]
     kinds = ["generated_residual", "generated_tangent_factors", "generated_tangent_dense", "generated_jvp",
              "forward_ad_tangent_dense", "central_fd_tangent_dense"]
     cases = sorted({re.sub(r"^BM_[a-z_]+?/", "", n) for n in times}, key=lambda c: (c.startswith("three"), c))
@@ -72,7 +72,37 @@ def main():
             get("generated_jvp"), get("forward_ad_tangent_dense"), get("central_fd_tangent_dense"),
             get("forward_ad_tangent_dense") / gen, get("central_fd_tangent_dense") / gen))
     out.append("")
+    out.extend(assembly_tables(sys.argv[2]))
     print("\n".join(out))
+
+
+def assembly_tables(path):
+    data = json.load(open(path))
+    runs = defaultdict(list)
+    counters = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate":
+            continue
+        name = b.get("run_name", b["name"])
+        runs[name].append(b["real_time"] * {"ns": 1e-6, "us": 1e-3, "ms": 1, "s": 1e3}[b["time_unit"]])
+        counters[name] = b
+    out = ["## Global assembly: Silling's law, 2D grid, cubic influence\n",
+           "`build/bin/assembly_bench` (medians). Forces: internal nodal forces; stiffness: K = -df/du into the",
+           "two-horizon sparsity (OpenMP over families, atomic adds); matrix-free: K v from the generated JVP kernel.\n",
+           "| operation | grid | delta/h | threads | ms | families/s | nonzeros/s |", "|---|---|---|---|---|---|---|"]
+    for name in sorted(runs, key=lambda n: (n.split("/")[0], int(n.split("/")[1]), int(n.split("/")[2]), int(n.split("/")[3]))):
+        op, n, r, t = name.split("/")[:4]
+        c = counters[name]
+        nz = c.get("nonzeros_per_s")
+        out.append("| %s | %s² | %.1f | %s | %.1f | %.3g | %s |" % (op.replace("BM_", ""), n, int(r) / 10, t, statistics.median(runs[name]),
+                                                             c.get("families_per_s", float("nan")), "%.3g" % nz if nz else ""))
+    out.append("")
+    out.append("The stiffness assembly is the slow path: every entry of every family's dense local matrix is an")
+    out.append("atomic add located by a binary search, so 2 threads gain little over 1 and the throughput falls")
+    out.append("with the family size (delta/h = 3.5: about 37 bonds, (L+1)^2 = 1444 blocks per family). The")
+    out.append("matrix-free product is 50-100x cheaper than assembling K at delta/h = 3.5. Two-thread timings are")
+    out.append("sensitive to other load on this 2-core machine (a build ran beside the run that produced these).")
+    return out
 
 
 if __name__ == "__main__":
