@@ -122,18 +122,46 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) 
 
 std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, const Bonds& bonds, const Sparsity& sp) {
   std::vector<PressurePair> pairs;
+  const int d = s.dim;
   for (const Crack& crack : s.cracks) {
     if (crack.pressure == 0) continue;
     Bonds single = bonds;
     std::fill(single.alpha.begin(), single.alpha.end(), 1.0);
     cut_bonds({crack}, p, single);
+    // The crack's unit normal and measure (length in 2D, polygon area in 3D).
+    double normal[3] = {0, 0, 0}, measure = 0;
+    if (d == 2) {
+      const double tx = crack.points[1][0] - crack.points[0][0], ty = crack.points[1][1] - crack.points[0][1];
+      measure = std::hypot(tx, ty);
+      normal[0] = -ty / measure, normal[1] = tx / measure;
+    } else {
+      const Point& o = crack.points[0];
+      for (std::size_t i = 1; i + 1 < crack.points.size(); ++i) {
+        const double u[3] = {crack.points[i][0] - o[0], crack.points[i][1] - o[1], crack.points[i][2] - o[2]};
+        const double v[3] = {crack.points[i + 1][0] - o[0], crack.points[i + 1][1] - o[1], crack.points[i + 1][2] - o[2]};
+        normal[0] += u[1] * v[2] - u[2] * v[1], normal[1] += u[2] * v[0] - u[0] * v[2], normal[2] += u[0] * v[1] - u[1] * v[0];
+      }
+      measure = 0.5 * std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      for (double& c : normal) c /= 2 * measure;
+    }
+    const std::size_t first = pairs.size();
+    double normal_total = 0;
     for (int a = 0; a < p.size(); ++a)
       for (int e = bonds.offsets[a]; e < bonds.offsets[a + 1]; ++e) {
         const int b = bonds.neighbor[e];
         // Nearest neighbours only (|xi| < 1.2 h): the particles facing each other across the crack.
         if (b <= a || single.alpha[e] != 0.0 || bonds.length[e] > 1.2 * s.h) continue;
-        pairs.push_back({a, b, crack.pressure * p.volume[b] / bonds.length[e]});
+        const double magnitude = crack.pressure * p.volume[b] / bonds.length[e];
+        double cosine = 0;
+        for (int c = 0; c < d; ++c) cosine += normal[c] * bonds.xi[e * d + c] / bonds.length[e];
+        normal_total += magnitude * std::fabs(cosine);
+        pairs.push_back({a, b, magnitude});
       }
+    // On the paper's lattice the pairs carry exactly p x measure across each face; on a
+    // perturbed cloud the |xi| < 1.2 h rule picks tilted and extra pairs, so scale them to
+    // keep the total normal load p x measure.
+    if (normal_total > 0)
+      for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].magnitude *= crack.pressure * measure / normal_total;
   }
   if (pairs.empty()) return nullptr;
   return std::make_unique<CrackPressure>(p, std::move(pairs), sp);

@@ -32,7 +32,9 @@ std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles&
 
 // Crack pressure on the broken bonds between nearest neighbours across a crack
 // (paper 000 eqs. 23, 30): a pair force of magnitude p V / |xi| along the deformed
-// bond, pushing the two particles apart (p h per face particle for |xi| = h in 2D).
+// bond, pushing the two particles apart (p h per face particle for |xi| = h in 2D). On a
+// perturbed cloud the pair forces are scaled so the total normal load on each face is
+// still p x crack length (area in 3D); on the paper's lattice the scale is exactly 1.
 std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds,
                                             const Sparsity& sparsity);
 
