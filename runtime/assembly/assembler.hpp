@@ -1,0 +1,80 @@
+// Global assembly of one law over all families: internal forces, stiffness, K v, diag K.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "assembly/family_colouring.hpp"
+#include "assembly/family_gather.hpp"
+#include "assembly/sparsity_pattern.hpp"
+#include "kernel_abi.hpp"
+#include "particles.hpp"
+
+namespace pd {
+
+struct AssemblerOptions {
+  bool intact = false;  // the variant with alpha folded to 1: only when no bond is broken
+  bool matrix = true;   // build the sparsity pattern and slots (false: matrix-free use only)
+  int threads = 0;      // 0: OpenMP's default
+  int chunk_size = 0;   // families per colouring chunk; 0: automatic
+};
+
+// Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over
+// families; the stiffness is the solver's K = -df/du (symmetric for an energy-derived
+// law); the product and diagonal are those of K. All vectors are [n*dim], particle-major.
+//
+// One code path, assemble(), fills forces, K, or both: families are visited colour by
+// colour (FamilyColouring) so no two threads touch the same entry, the local matrix is
+// formed by pd::form_local_matrix and written straight into the family's precomputed
+// slots. Results do not depend on the thread count, bit for bit.
+//
+// Every kernel output is checked before it is scattered; a NaN or Inf throws
+// std::runtime_error naming the stage, the law and the particle (the lowest one if
+// several families fail).
+class FamilyAssembler {
+ public:
+  // params: one parameter vector per material (Particles::material indexes it), in the
+  // order of law.param_names. particles and bonds must outlive the assembler.
+  FamilyAssembler(const Particles& particles, const Bonds& bonds, const abi::LawDescriptor& law,
+                  std::vector<std::vector<double>> params, AssemblerOptions options = {});
+
+  // Recompute the moments (after bond factors alpha changed).
+  void update_moments();
+  void set_threads(int threads) { options_.threads = threads; }
+
+  // forces (may be null) += nothing: overwritten with f(u); K (may be null) overwritten
+  // with -df/du in pattern(). u null means zero displacement.
+  void assemble(const double* u, double* forces, SparseMatrix* K) const;
+  void internal_forces(const double* u, double* forces) const { assemble(u, forces, nullptr); }
+  void stiffness(const double* u, SparseMatrix& K, double* forces = nullptr) const { assemble(u, forces, &K); }
+  // Kv = K(u) v from the kernel's tangent-vector product: no matrix, cost linear in the bonds.
+  void stiffness_product(const double* u, const double* v, double* Kv) const;
+  // diag = diagonal of K(u), from the tangent factors in O(bonds): the Jacobi
+  // preconditioner of the matrix-free path.
+  void stiffness_diagonal(const double* u, double* diag) const;
+  // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
+  std::vector<double> particle_outputs(const double* u) const;
+
+  // A zero matrix with the assembly pattern; throws if options.matrix was false.
+  SparseMatrix make_matrix() const;
+  const SparsityPattern& pattern() const;
+  const FamilyColouring& colouring() const { return colouring_; }
+  const FamilyInputs& inputs() const { return inputs_; }
+  const abi::LawDescriptor& law() const { return law_; }
+  const abi::KernelVariant& variant() const { return variant_; }
+  bool intact() const { return options_.intact; }
+  int dofs() const { return inputs_.size() * inputs_.dim(); }
+
+ private:
+  template <class Body>
+  void for_each_family(const char* stage, Body&& body) const;
+
+  const abi::LawDescriptor& law_;
+  const abi::KernelVariant& variant_;
+  AssemblerOptions options_;
+  FamilyInputs inputs_;
+  FamilyColouring colouring_;
+  std::unique_ptr<SparsityPattern> pattern_;
+};
+
+}  // namespace pd

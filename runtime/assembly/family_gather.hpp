@@ -1,0 +1,51 @@
+// Fills the kernel ABI's per-family inputs from the global particle and bond arrays.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "kernel_abi.hpp"
+#include "particles.hpp"
+
+namespace pd {
+
+// What every family of a body shares: the cloud, its bonds, one parameter vector per
+// material, and the per-particle moments (empty until compute_moments ran).
+struct FamilyInputs {
+  const Particles* particles = nullptr;
+  const Bonds* bonds = nullptr;
+  std::vector<std::vector<double>> params;  // [material][law.n_params]
+  std::vector<double> moments;              // [n * n_moments]
+  int n_moments = 0;
+
+  int dim() const { return particles->dim; }
+  int size() const { return particles->size(); }
+  int max_family_size() const;
+};
+
+// One per thread. The buffers are sized once for the largest family, so gathering a
+// family never allocates; the returned abi::Family points into them (and into the
+// bond arrays) and stays valid until the next gather on this object.
+class FamilyGather {
+ public:
+  explicit FamilyGather(const FamilyInputs& inputs);
+
+  // Family of particle p at displacement u ([n*dim]; null = reference configuration).
+  abi::Family gather(int p, const double* u);
+  // Global particle index of local particle a (0 = center, a = k+1 for bond k).
+  int particle(int p, int a) const { return a == 0 ? p : in_->bonds->neighbor[in_->bonds->offsets[p] + a - 1]; }
+  // Copies the entries of a global [n*dim] vector for the family's particles into a
+  // local [(L+1)*dim] buffer owned by this object.
+  const double* gather_local(int p, const double* global);
+  // Scratch for a family's local vector or matrix; grows only the first time.
+  double* local_vector() { return local_out_.data(); }
+  double* local_matrix() { return local_matrix_.data(); }
+  int max_bonds() const { return max_bonds_; }
+
+ private:
+  const FamilyInputs* in_;
+  int max_bonds_;
+  std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_;
+};
+
+}  // namespace pd
