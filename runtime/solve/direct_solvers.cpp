@@ -1,0 +1,69 @@
+// CHOLMOD (supernodal Cholesky) and UMFPACK (LU) through Eigen's SuiteSparse wrappers.
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
+#include "solve/linear_solver.hpp"
+
+namespace pd {
+
+namespace {
+class CholmodSolver final : public SparseSolver {
+ public:
+  CholmodSolver() {
+    // CHOLMOD prints its own warning for a non-positive-definite matrix; the caller
+    // reports the failure (and the fallback) in the run log instead.
+    llt_.cholmod().print = 0;
+  }
+  std::string name() const override { return "cholmod"; }
+  void analyse(const SparseMatrix& A) override {
+    llt_.analyzePattern(A);
+    analysed_ = true;
+  }
+  bool factor(const SparseMatrix& A) override {
+    if (!analysed_) analyse(A);
+    llt_.factorize(A);
+    if (llt_.info() == Eigen::Success) return true;
+    failure_ = "CHOLMOD: the matrix is not positive definite (a rigid-body mode left unconstrained, a "
+               "non-symmetric law, or a law that lost stability?)";
+    return false;
+  }
+  LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    x = llt_.solve(b);
+    return {name(), 0, 0.0, true};
+  }
+
+ private:
+  // Lower: CHOLMOD reads one triangle of the symmetric matrix.
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
+  bool analysed_ = false;
+};
+
+class UmfpackSolver final : public SparseSolver {
+ public:
+  std::string name() const override { return "umfpack"; }
+  void analyse(const SparseMatrix& A) override {
+    lu_.analyzePattern(A);
+    analysed_ = true;
+  }
+  bool factor(const SparseMatrix& A) override {
+    if (!analysed_) analyse(A);
+    lu_.factorize(A);
+    if (lu_.info() == Eigen::Success) return true;
+    failure_ = "UMFPACK: the matrix is singular (an unconstrained rigid-body mode?)";
+    return false;
+  }
+  LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    x = lu_.solve(b);
+    return {name(), 0, 0.0, true};
+  }
+
+ private:
+  Eigen::UmfPackLU<SparseMatrix> lu_;
+  bool analysed_ = false;
+};
+}  // namespace
+
+std::unique_ptr<SparseSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+std::unique_ptr<SparseSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+
+}  // namespace pd

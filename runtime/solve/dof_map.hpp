@@ -1,0 +1,63 @@
+// Dirichlet conditions by elimination: free/constrained dof numbering and the reduced system.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "assembly/sparsity_pattern.hpp"
+
+namespace pd {
+
+// Numbers the free dofs 0..nf-1 in ascending global order and keeps the prescribed
+// value of every constrained dof (at full load; a load factor s scales them).
+class DofMap {
+ public:
+  DofMap() = default;
+  // constrained[i] != 0 marks dof i; prescribed[i] is its value (ignored when free).
+  DofMap(std::span<const char> constrained, std::span<const double> prescribed);
+  // From a list of constrained dofs (any order, no repeats) and their values.
+  static DofMap from_list(int n_dofs, std::span<const int> dofs, std::span<const double> values);
+
+  int size() const { return static_cast<int>(free_index_.size()); }
+  int free_count() const { return static_cast<int>(free_.size()); }
+  int constrained_count() const { return static_cast<int>(constrained_.size()); }
+  // Reduced index of a dof, -1 when constrained.
+  int free_index(int dof) const { return free_index_[dof]; }
+  const std::vector<int>& free_dofs() const { return free_; }
+  const std::vector<int>& constrained_dofs() const { return constrained_; }
+  // Prescribed values, one per constrained dof (constrained_dofs() order).
+  const std::vector<double>& prescribed() const { return prescribed_; }
+
+  Eigen::VectorXd restrict_free(const Eigen::VectorXd& full) const;
+  // full[free] = reduced (constrained entries untouched).
+  void expand_free(const Eigen::VectorXd& reduced, Eigen::VectorXd& full) const;
+  // full[constrained] = factor * prescribed.
+  void apply_prescribed(Eigen::VectorXd& full, double factor = 1.0) const;
+
+ private:
+  std::vector<int> free_index_, free_, constrained_;
+  std::vector<double> prescribed_;
+};
+
+// K_ff and K_fc of a matrix with a fixed pattern. The index plans are built once; each
+// update() is then a gather of values. K_ff keeps K's symmetry (same rows and columns
+// removed), so CHOLMOD applies whenever it applied to K.
+class ReducedSystem {
+ public:
+  ReducedSystem(const DofMap& dofs, const SparseMatrix& pattern);
+  // Copies the values of K (same pattern as at construction) into K_ff and K_fc.
+  void update(const SparseMatrix& K);
+  const SparseMatrix& Kff() const { return Kff_; }
+  const SparseMatrix& Kfc() const { return Kfc_; }
+  // Right-hand side b_f - K_fc u_c for the full vector b and the constrained values
+  // u_c (constrained_dofs() order; empty = zero, as for a Newton increment).
+  Eigen::VectorXd rhs(const Eigen::VectorXd& b_full, const Eigen::VectorXd& u_c) const;
+
+ private:
+  const DofMap* dofs_;
+  SparseMatrix Kff_, Kfc_;
+  std::vector<int> ff_source_, fc_source_;  // value-array positions in K
+};
+
+}  // namespace pd

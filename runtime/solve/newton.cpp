@@ -1,0 +1,157 @@
+// Newton loop: per load step, solve K_ff du = r_f (direct/Krylov or matrix-free), backtrack on |r_f|.
+#include "solve/newton.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "solve/matrix_free_krylov.hpp"
+
+namespace pd {
+
+void NonlinearSystem::jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd&, Eigen::VectorXd&) {
+  throw std::logic_error("this nonlinear system has no matrix-free product");
+}
+void NonlinearSystem::diagonal(const Eigen::VectorXd&, double, Eigen::VectorXd&) {
+  throw std::logic_error("this nonlinear system has no matrix-free diagonal");
+}
+
+NewtonSolver::NewtonSolver(NewtonSettings settings, std::function<void(const std::string&)> log)
+    : s_(std::move(settings)), log_(std::move(log)) {
+  if (s_.load_steps < 1) throw std::invalid_argument("Newton: load_steps must be at least 1");
+}
+
+NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen::VectorXd& u) {
+  NewtonResult res;
+  auto say = [&](const std::string& line) {
+    if (log_) log_(line);
+  };
+  const int n = sys.size();
+  if (dofs.size() != n || u.size() != n) throw std::invalid_argument("Newton: the system, dof map and u differ in size");
+  if (dofs.free_count() == 0) throw std::invalid_argument("Newton: every degree of freedom is constrained");
+  if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
+
+  SparseMatrix K;
+  std::unique_ptr<ReducedSystem> reduced;
+  AutoLinearSolver linear(s_.linear, sys.symmetric(), log_);
+  Eigen::VectorXd r(n), r_trial(n), trial(n), du(n), v_full(n), Kv_full(n), diag(n);
+  double reference = 0;
+
+  // Newton step on the free dofs: K_ff du_f = r_f (du_c = 0: the constrained values
+  // were already set at the start of the load step).
+  auto newton_direction = [&](const Eigen::VectorXd& rf, double load, NewtonRecord& rec) -> Eigen::VectorXd {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs.free_count());
+    if (!s_.matrix_free) {
+      sys.tangent(u, load, K, nullptr);
+      if (!reduced) reduced = std::make_unique<ReducedSystem>(dofs, K);
+      reduced->update(K);
+      linear.factor(reduced->Kff());
+      const LinearSolveStats st = linear.solve(rf, x);
+      res.linear_solver = st.method;
+      res.linear_choice = linear.choice().reason;
+      rec.linear_iterations = st.iterations;
+      rec.linear_error = st.estimated_error;
+      if (!st.converged)
+        throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})", st.method,
+                                             st.iterations, st.estimated_error));
+      return x;
+    }
+    sys.diagonal(u, load, diag);
+    const Eigen::VectorXd inv_diag = safe_inverse_diagonal(dofs.restrict_free(diag));
+    const LinearOperator op = [&](const Eigen::VectorXd& xf, Eigen::VectorXd& yf) {
+      v_full.setZero();
+      dofs.expand_free(xf, v_full);
+      sys.jvp(u, load, v_full, Kv_full);
+      yf = dofs.restrict_free(Kv_full);
+    };
+    const bool cg = sys.symmetric();
+    const KrylovResult kr = cg ? preconditioned_cg(op, inv_diag, rf, x, s_.krylov_tolerance, s_.krylov_max_iterations)
+                               : preconditioned_gmres(op, inv_diag, rf, x, s_.krylov_tolerance, s_.gmres_restart,
+                                                      s_.krylov_max_iterations);
+    res.linear_solver = cg ? "matrix-free cg+jacobi" : "matrix-free gmres+jacobi";
+    res.linear_choice = "matrix-free Newton-Krylov";
+    rec.linear_iterations = kr.iterations;
+    rec.linear_error = kr.relative_residual;
+    if (!kr.converged)
+      throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})",
+                                           res.linear_solver, kr.iterations, kr.relative_residual));
+    return x;
+  };
+
+  for (int step = 1; step <= s_.load_steps; ++step) {
+    const double load = static_cast<double>(step) / s_.load_steps;
+    dofs.apply_prescribed(u, load);
+    sys.residual(u, load, r);
+    double norm = dofs.restrict_free(r).norm();
+    reference = std::max(reference, norm);
+    NewtonRecord rec{step, 0, load, norm, 0.0, 0.0, 0, 0.0};
+    bool done = false;
+    for (int it = 0;; ++it) {
+      rec.iteration = it;
+      rec.residual = norm;
+      res.history.push_back(rec);
+      say(fmt::format("  load {:.3g} (step {}/{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
+                      s_.load_steps, it, norm, reference > 0 ? norm / reference : 0.0,
+                      it == 0 ? std::string()
+                              : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
+                                            rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
+                                                                  : std::string())));
+      if (!std::isfinite(norm)) {
+        res.message = fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
+        return res;
+      }
+      if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance ||
+          (it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance)) {
+        done = true;
+        break;
+      }
+      if (it == s_.max_iterations) break;
+      rec = NewtonRecord{step, it + 1, load, 0.0, 0.0, 0.0, 0, 0.0};
+      const Eigen::VectorXd rf = dofs.restrict_free(r);
+      Eigen::VectorXd dx;
+      try {
+        dx = newton_direction(rf, load, rec);
+      } catch (const std::runtime_error& e) {
+        res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load, it + 1, e.what());
+        return res;
+      }
+      du.setZero();
+      dofs.expand_free(dx, du);
+      // Backtracking: halve the step until |r_f| decreases sufficiently; if none does,
+      // keep the smallest step (the next tangent may do better) and say so.
+      double alpha = 1.0, trial_norm = 0.0;
+      for (int b = 0;; ++b) {
+        trial = u + alpha * du;
+        sys.residual(trial, load, r_trial);
+        trial_norm = dofs.restrict_free(r_trial).norm();
+        if (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm) break;
+        if (b == s_.max_backtracks) {
+          say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
+          break;
+        }
+        alpha *= 0.5;
+      }
+      const double unorm = trial.norm();
+      rec.step_length = alpha;
+      rec.increment = unorm > 0 ? alpha * du.norm() / unorm : 0.0;
+      u = trial;
+      r = r_trial;
+      norm = trial_norm;
+    }
+    if (!done) {
+      res.message = fmt::format(
+          "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, {:.2e} of the "
+          "reference {:.3e} (tolerance {:.1e}); try more load steps or more iterations",
+          load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0, reference,
+          s_.relative_tolerance);
+      say(res.message);
+      return res;
+    }
+  }
+  res.converged = true;
+  return res;
+}
+
+}  // namespace pd

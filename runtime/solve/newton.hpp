@@ -1,0 +1,84 @@
+// Newton's method with backtracking line search and load stepping, assembled or matrix-free.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assembly/sparsity_pattern.hpp"
+#include "solve/dof_map.hpp"
+#include "solve/linear_solver.hpp"
+
+namespace pd {
+
+// The problem, as callbacks: nothing here knows about peridynamics. `load` is the load
+// factor in (0, 1] of the current load step; the system scales its external loads by
+// it (prescribed displacements are scaled by the solver through the DofMap).
+class NonlinearSystem {
+ public:
+  virtual ~NonlinearSystem() = default;
+  virtual int size() const = 0;
+  // Out-of-balance force r(u) = f_internal(u) + load * f_external: zero at equilibrium.
+  virtual void residual(const Eigen::VectorXd& u, double load, Eigen::VectorXd& r) = 0;
+  // K = -dr/du with a pattern that does not change between calls; also r when r is
+  // not null (one assembly pass gives both).
+  virtual void tangent(const Eigen::VectorXd& u, double load, SparseMatrix& K, Eigen::VectorXd* r) = 0;
+  virtual bool symmetric() const { return true; }
+  // Matrix-free Newton-Krylov needs these two: Kv = K(u) v and the diagonal of K(u).
+  virtual bool has_jvp() const { return false; }
+  virtual void jvp(const Eigen::VectorXd& u, double load, const Eigen::VectorXd& v, Eigen::VectorXd& Kv);
+  virtual void diagonal(const Eigen::VectorXd& u, double load, Eigen::VectorXd& d);
+};
+
+struct NewtonSettings {
+  int load_steps = 1;
+  int max_iterations = 25;           // per load step
+  double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
+  double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
+  // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
+  // strain problem has a rounding floor (|Y| - |xi| cancels) that rtol may sit below.
+  double increment_tolerance = 1e-13;
+  int max_backtracks = 12;            // halvings of the step
+  double sufficient_decrease = 1e-4;  // Armijo constant on |r_f|
+  LinearSolverOptions linear;
+  // Matrix-free Newton-Krylov: the linear systems are solved by Jacobi-preconditioned
+  // CG (symmetric) or GMRES through NonlinearSystem::jvp, never forming K.
+  bool matrix_free = false;
+  double krylov_tolerance = 1e-8;  // forcing term: |K du - r| <= tol |r|
+  int krylov_max_iterations = 5000;
+  int gmres_restart = 60;
+};
+
+struct NewtonRecord {
+  int step = 0, iteration = 0;
+  double load = 0, residual = 0;  // |r_f| at this iterate
+  double step_length = 0;         // line-search factor of the step that led here (0 at iteration 0)
+  double increment = 0;           // |du| / |u| of that step
+  int linear_iterations = 0;      // Krylov iterations of that step
+  double linear_error = 0;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  std::vector<NewtonRecord> history;
+  std::string linear_solver;  // the method that solved the last system
+  std::string linear_choice;  // why (and any fallback)
+  std::string message;        // the failure, when not converged
+  int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }
+};
+
+// Solves r(u) = 0 on the free dofs of `dofs`, with the constrained ones at
+// load * prescribed, for load = 1/steps .. 1. u holds the initial guess and the
+// result. `log` gets one line per iteration and solver messages.
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(NewtonSettings settings, std::function<void(const std::string&)> log = {});
+  NewtonResult solve(NonlinearSystem& system, const DofMap& dofs, Eigen::VectorXd& u);
+
+ private:
+  NewtonSettings s_;
+  std::function<void(const std::string&)> log_;
+};
+
+}  // namespace pd

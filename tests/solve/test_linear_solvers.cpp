@@ -1,0 +1,101 @@
+// Every linear solver on the reduced system of a clamped 2D spring grid; the automatic
+// rule; the CHOLMOD-to-UMFPACK fallback on an indefinite matrix.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "solve/linear_solver.hpp"
+#include "support_spring_grid_problem.hpp"
+
+namespace {
+struct Reduced {
+  pd::test::GridProblem pb{pd::test::linear_spring_2d(), {1.0e3}, 9, 7, 0.01, 0.0};
+  pd::SparseMatrix K;
+  std::unique_ptr<pd::ReducedSystem> red;
+  Eigen::VectorXd b;
+  Reduced() {
+    Eigen::VectorXd f(pb.assembler->dofs());
+    pb.assembler->stiffness(nullptr, K, f.data());
+    red = std::make_unique<pd::ReducedSystem>(pb.dofs, K);
+    red->update(K);
+    const Eigen::VectorXd uc = Eigen::Map<const Eigen::VectorXd>(pb.dofs.prescribed().data(), pb.dofs.constrained_count());
+    b = red->rhs(f, uc);  // f = 0 at u = 0: b = -K_fc u_c
+  }
+};
+}  // namespace
+
+TEST(LinearSolvers, EachSolverSolvesTheSpringGrid) {
+  Reduced r;
+  ASSERT_GT(r.b.norm(), 0.0);
+  const Eigen::VectorXd ref = Eigen::MatrixXd(r.red->Kff()).llt().solve(r.b);
+  struct Case {
+    std::string method, pre;
+  };
+  for (const Case& c : {Case{"cholmod", "auto"}, Case{"umfpack", "auto"}, Case{"cg", "ic"}, Case{"cg", "diagonal"},
+                        Case{"bicgstab", "ilut"}, Case{"auto", "auto"}}) {
+    pd::LinearSolverOptions o;
+    o.method = c.method;
+    o.preconditioner = c.pre;
+    o.tolerance = 1e-12;
+    pd::AutoLinearSolver s(o, true);
+    s.analyse(r.red->Kff());
+    ASSERT_TRUE(s.factor(r.red->Kff())) << c.method;
+    Eigen::VectorXd x;
+    const pd::LinearSolveStats st = s.solve(r.b, x);
+    EXPECT_TRUE(st.converged) << c.method;
+    EXPECT_LT((r.red->Kff() * x - r.b).norm(), 1e-10 * r.b.norm()) << c.method << "+" << c.pre;
+    EXPECT_LT((x - ref).norm(), 1e-8 * ref.norm()) << c.method;
+    if (c.method == "cg" || c.method == "bicgstab") {
+      EXPECT_GT(st.iterations, 0) << c.method;
+      EXPECT_LE(st.estimated_error, 1e-12) << c.method;
+    }
+    // A second factor/solve on the same pattern (Newton does this) gives the same answer.
+    ASSERT_TRUE(s.factor(r.red->Kff()));
+    Eigen::VectorXd x2;
+    s.solve(r.b, x2);
+    EXPECT_LT((x2 - x).norm(), 1e-10 * x.norm()) << c.method;
+  }
+}
+
+TEST(LinearSolvers, AutomaticRule) {
+  pd::LinearSolverOptions o;
+  o.direct_max_nonzeros = 1000;
+  EXPECT_EQ(pd::choose_linear_solver(o, 100, 1000, true).method, "cholmod");
+  EXPECT_EQ(pd::choose_linear_solver(o, 100, 1000, false).method, "umfpack");
+  EXPECT_EQ(pd::choose_linear_solver(o, 100, 1001, true).method, "cg");
+  EXPECT_EQ(pd::choose_linear_solver(o, 100, 1001, false).method, "bicgstab");
+  o.method = "umfpack";
+  EXPECT_EQ(pd::choose_linear_solver(o, 100, 1e9, true).method, "umfpack");
+  EXPECT_THROW(pd::make_sparse_solver("lapack", o), std::invalid_argument);
+  o.method = "lapack";
+  EXPECT_THROW(pd::AutoLinearSolver(o, true), std::invalid_argument);
+}
+
+TEST(LinearSolvers, IndefiniteMatrixFallsBackToUmfpack) {
+  Reduced r;
+  pd::SparseMatrix A = r.red->Kff();
+  // Flip the sign of one diagonal entry far beyond the rest: symmetric, not definite.
+  A.coeffRef(3, 3) = -10 * Eigen::MatrixXd(A).cwiseAbs().maxCoeff();
+  std::vector<std::string> log;
+  pd::LinearSolverOptions o;
+  pd::AutoLinearSolver s(o, true, [&](const std::string& m) { log.push_back(m); });
+  ASSERT_TRUE(s.factor(A));
+  EXPECT_EQ(s.name(), "umfpack");
+  bool said = false;
+  for (const auto& m : log) said |= m.find("not positive definite") != std::string::npos && m.find("umfpack") != std::string::npos;
+  EXPECT_TRUE(said);
+  Eigen::VectorXd x;
+  s.solve(r.b, x);
+  EXPECT_LT((A * x - r.b).norm(), 1e-10 * r.b.norm());
+}
+
+TEST(LinearSolvers, SingularMatrixThrows) {
+  pd::SparseMatrix A(4, 4);
+  A.insert(0, 0) = 1.0;
+  A.insert(1, 1) = 1.0;
+  A.makeCompressed();
+  pd::LinearSolverOptions o;
+  o.method = "umfpack";
+  pd::AutoLinearSolver s(o, false);
+  EXPECT_THROW(s.factor(A), std::runtime_error);
+}

@@ -1,0 +1,151 @@
+// Newton: one step on a linear problem, quadratic convergence on a nonlinear one, load
+// stepping, the matrix-free Newton-Krylov variant, the non-symmetric path, and the
+// failure message.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdlib>
+
+#include "solve/newton.hpp"
+#include "support_spring_grid_problem.hpp"
+
+namespace {
+// Pulls the right edge by force: the tip moves by about 40% of the length, clearly
+// nonlinear, yet Newton converges from zero without load steps.
+pd::test::GridProblem nonlinear_problem() {
+  const double load = std::getenv("PD_TEST_LOAD") ? std::atof(std::getenv("PD_TEST_LOAD")) : 0.01;
+  return {pd::test::state_law_2d(), {5.0e2, 3.0e2}, 8, 6, 0.0, load};
+}
+
+// The same system declared non-symmetric: exercises UMFPACK and GMRES.
+struct NonSymmetric final : pd::NonlinearSystem {
+  pd::NonlinearSystem& s;
+  explicit NonSymmetric(pd::NonlinearSystem& inner) : s(inner) {}
+  int size() const override { return s.size(); }
+  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r); }
+  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override { s.tangent(u, l, K, r); }
+  bool symmetric() const override { return false; }
+  bool has_jvp() const override { return true; }
+  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override { s.jvp(u, l, v, Kv); }
+  void diagonal(const Eigen::VectorXd& u, double l, Eigen::VectorXd& d) override { s.diagonal(u, l, d); }
+};
+
+pd::NewtonResult run(pd::NonlinearSystem& sys, const pd::DofMap& dofs, Eigen::VectorXd& u, pd::NewtonSettings st,
+                     std::vector<std::string>* log = nullptr) {
+  u = Eigen::VectorXd::Zero(sys.size());
+  pd::NewtonSolver solver(st, [&](const std::string& m) {
+    if (log) log->push_back(m);
+    if (std::getenv("PD_TEST_VERBOSE")) std::printf("%s\n", m.c_str());
+  });
+  return solver.solve(sys, dofs, u);
+}
+}  // namespace
+
+TEST(Newton, LinearProblemConvergesInOneStep) {
+  pd::test::GridProblem pb(pd::test::linear_spring_2d(), {1.0e3}, 9, 7, 0.01, 0.0);
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  std::vector<std::string> log;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, {}, &log);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.iterations(), 1);
+  EXPECT_EQ(r.linear_solver, "cholmod");
+  EXPECT_EQ(log.size(), 3u);  // the solver choice and two iterations
+  EXPECT_LT(r.history[1].residual, 1e-10 * r.history[0].residual);
+  // The pulled edge moved by the prescribed amount, the interior in between.
+  for (int p = 0; p < pb.body.particles.size(); ++p) {
+    if (p % 9 == 8) {
+      EXPECT_DOUBLE_EQ(u[2 * p], 0.01);
+    }
+    if (p % 9 == 4) {
+      EXPECT_GT(u[2 * p], 0.002);
+    }
+  }
+}
+
+TEST(Newton, NonlinearProblemConvergesQuadratically) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, {});
+  ASSERT_TRUE(r.converged) << r.message;
+  const auto& h = r.history;
+  std::printf("max |u| = %g\n", u.cwiseAbs().maxCoeff());
+  for (const auto& rec : h) std::printf("  it %d  |r| = %.3e  step %.3g\n", rec.iteration, rec.residual, rec.step_length);
+  ASSERT_GE(r.iterations(), 3) << "the problem should be nonlinear";
+  EXPECT_LE(r.iterations(), 8);
+  // Quadratic: once the step is full, r_{k+1} <= C r_k^2 / r_0 with a modest C, down to rounding.
+  int checked = 0;
+  for (std::size_t k = 1; k + 1 < h.size(); ++k) {
+    if (h[k + 1].step_length != 1.0 || h[k + 1].residual < 1e-12 * h[0].residual) continue;
+    const double e0 = h[k].residual / h[0].residual, e1 = h[k + 1].residual / h[0].residual;
+    EXPECT_LT(e1, 50 * e0 * e0) << "iteration " << k + 1;
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);
+  // The external load is balanced: the clamped edge carries the reaction, the rest is in equilibrium.
+  Eigen::VectorXd res;
+  sys.residual(u, 1.0, res);
+  EXPECT_LT(pb.dofs.restrict_free(res).norm(), 1e-9 * pb.external.norm());
+}
+
+TEST(Newton, LoadSteppingReachesTheSameSolution) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u1, u3;
+  ASSERT_TRUE(run(sys, pb.dofs, u1, {}).converged);
+  pd::NewtonSettings st;
+  st.load_steps = 3;
+  const pd::NewtonResult r = run(sys, pb.dofs, u3, st);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.history.back().step, 3);
+  EXPECT_LT((u1 - u3).norm(), 1e-9 * u1.norm());
+}
+
+TEST(Newton, MatrixFreeNewtonKrylovMatchesAssembledNewton) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u_direct, u_mf;
+  ASSERT_TRUE(run(sys, pb.dofs, u_direct, {}).converged);
+  pd::NewtonSettings st;
+  st.matrix_free = true;
+  st.krylov_tolerance = 1e-10;
+  const pd::NewtonResult r = run(sys, pb.dofs, u_mf, st);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.linear_solver, "matrix-free cg+jacobi");
+  EXPECT_GT(r.history[1].linear_iterations, 0);
+  EXPECT_LT((u_direct - u_mf).norm(), 1e-8 * u_direct.norm());
+}
+
+TEST(Newton, NonSymmetricPathUsesUmfpackAndGmres) {
+  auto pb = nonlinear_problem();
+  auto inner = pb.system();
+  NonSymmetric sys(inner);
+  Eigen::VectorXd u_ref, u_lu, u_gm;
+  ASSERT_TRUE(run(inner, pb.dofs, u_ref, {}).converged);
+  const pd::NewtonResult lu = run(sys, pb.dofs, u_lu, {});
+  ASSERT_TRUE(lu.converged) << lu.message;
+  EXPECT_EQ(lu.linear_solver, "umfpack");
+  pd::NewtonSettings st;
+  st.matrix_free = true;
+  st.krylov_tolerance = 1e-10;
+  st.gmres_restart = 20;  // forces restarts on this problem
+  const pd::NewtonResult gm = run(sys, pb.dofs, u_gm, st);
+  ASSERT_TRUE(gm.converged) << gm.message;
+  EXPECT_EQ(gm.linear_solver, "matrix-free gmres+jacobi");
+  EXPECT_LT((u_ref - u_lu).norm(), 1e-9 * u_ref.norm());
+  EXPECT_LT((u_ref - u_gm).norm(), 1e-8 * u_ref.norm());
+}
+
+TEST(Newton, NonConvergenceIsReportedClearly) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  pd::NewtonSettings st;
+  st.max_iterations = 1;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("did not converge"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("load steps"), std::string::npos) << r.message;
+}
