@@ -1,0 +1,184 @@
+// VTU and CSV writers: well-formed XML with the right counts, CSV shape, atomic writes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "output/atomic_file.hpp"
+#include "output/csv_writer.hpp"
+#include "output/vtu_writer.hpp"
+#include "support_grid.hpp"
+
+namespace {
+struct Element {
+  std::string name;
+  std::map<std::string, std::string> attributes;
+  std::string text;
+  std::vector<Element> children;
+};
+
+// A strict little XML reader for what the writer emits (declaration, elements,
+// quoted attributes, text): throws on anything malformed, e.g. a mismatched tag.
+class Xml {
+ public:
+  explicit Xml(std::string s) : s_(std::move(s)) {}
+  Element parse() {
+    skip_ws();
+    if (s_.compare(i_, 5, "<?xml") == 0) i_ = s_.find("?>", i_) + 2;
+    skip_ws();
+    Element root = element();
+    skip_ws();
+    if (i_ != s_.size()) throw std::runtime_error("content after the root element");
+    return root;
+  }
+
+ private:
+  void skip_ws() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  }
+  std::string name() {
+    const std::size_t b = i_;
+    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) ++i_;
+    if (b == i_) throw std::runtime_error("expected a name at " + std::to_string(b));
+    return s_.substr(b, i_ - b);
+  }
+  Element element() {
+    if (s_[i_] != '<') throw std::runtime_error("expected '<' at " + std::to_string(i_));
+    ++i_;
+    Element e;
+    e.name = name();
+    for (;;) {
+      skip_ws();
+      if (s_.compare(i_, 2, "/>") == 0) {
+        i_ += 2;
+        return e;
+      }
+      if (s_[i_] == '>') break;
+      const std::string key = name();
+      if (s_[i_++] != '=' || s_[i_++] != '"') throw std::runtime_error("bad attribute " + key);
+      const std::size_t end = s_.find('"', i_);
+      if (e.attributes.count(key)) throw std::runtime_error("repeated attribute " + key);
+      e.attributes[key] = s_.substr(i_, end - i_);
+      i_ = end + 1;
+    }
+    ++i_;
+    for (;;) {
+      const std::size_t lt = s_.find('<', i_);
+      if (lt == std::string::npos) throw std::runtime_error("unclosed <" + e.name + ">");
+      e.text += s_.substr(i_, lt - i_);
+      i_ = lt;
+      if (s_.compare(i_, 2, "</") == 0) {
+        i_ += 2;
+        if (name() != e.name || s_[i_++] != '>') throw std::runtime_error("mismatched </" + e.name + ">");
+        return e;
+      }
+      e.children.push_back(element());
+    }
+  }
+  std::string s_;
+  std::size_t i_ = 0;
+};
+
+const Element& child(const Element& e, const std::string& name) {
+  for (const auto& c : e.children)
+    if (c.name == name) return c;
+  throw std::runtime_error("no <" + name + "> in <" + e.name + ">");
+}
+std::vector<double> numbers(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<double> v;
+  double x;
+  while (in >> x) v.push_back(x);
+  return v;
+}
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+}  // namespace
+
+TEST(Output, VtuIsWellFormedWithTheRightCounts) {
+  const auto body = pd::test::make_grid(2, 5, 4, 1, 1.5, 0.1);
+  const int n = body.particles.size();
+  std::vector<double> u(2 * n);
+  for (int i = 0; i < 2 * n; ++i) u[i] = 1e-3 * i;
+  std::vector<pd::OutputField> fields{{"damage", 1, std::vector<double>(n, 0.25)},
+                                      {"force", 2, std::vector<double>(2 * n, -1.5)}};
+  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_output";
+  std::filesystem::remove_all(dir);
+  const auto path = dir / "sub" / "result.vtu";
+  pd::write_vtu_file(path.string(), body.particles, u, fields);
+  ASSERT_TRUE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  const Element root = Xml(read(path)).parse();
+  EXPECT_EQ(root.name, "VTKFile");
+  EXPECT_EQ(root.attributes.at("type"), "UnstructuredGrid");
+  const Element& piece = child(child(root, "UnstructuredGrid"), "Piece");
+  EXPECT_EQ(piece.attributes.at("NumberOfPoints"), std::to_string(n));
+  EXPECT_EQ(piece.attributes.at("NumberOfCells"), std::to_string(n));
+  EXPECT_EQ(numbers(child(child(piece, "Points"), "DataArray").text).size(), 3u * n);
+  const Element& cells = child(piece, "Cells");
+  ASSERT_EQ(cells.children.size(), 3u);
+  for (const auto& a : cells.children) {
+    const auto v = numbers(a.text);
+    ASSERT_EQ(v.size(), static_cast<std::size_t>(n)) << a.attributes.at("Name");
+    if (a.attributes.at("Name") == "types") {
+      for (double t : v) EXPECT_EQ(t, 1.0);
+    }
+    if (a.attributes.at("Name") == "offsets") {
+      EXPECT_EQ(v.back(), n);
+    }
+  }
+  const Element& pd_data = child(piece, "PointData");
+  ASSERT_EQ(pd_data.children.size(), 3u);
+  std::map<std::string, std::vector<double>> arrays;
+  for (const auto& a : pd_data.children) arrays[a.attributes.at("Name")] = numbers(a.text);
+  ASSERT_EQ(arrays["displacement"].size(), 3u * n);
+  EXPECT_EQ(arrays["displacement"][3 * 4 + 1], u[2 * 4 + 1]);  // exact round trip, z padded
+  EXPECT_EQ(arrays["displacement"][3 * 4 + 2], 0.0);
+  EXPECT_EQ(arrays["damage"].size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(arrays["force"].size(), 3u * n);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Output, XmlCheckerRejectsMalformedDocuments) {
+  EXPECT_THROW(Xml("<a><b></a></b>").parse(), std::runtime_error);
+  EXPECT_THROW(Xml("<a x=\"1\"><b/>").parse(), std::runtime_error);
+  EXPECT_NO_THROW(Xml("<?xml version=\"1.0\"?>\n<a x=\"1\"><b/>text</a>").parse());
+}
+
+TEST(Output, CsvHasHeaderAndOneRowPerParticle) {
+  const auto body = pd::test::make_grid(3, 3, 2, 2, 1.5);
+  const int n = body.particles.size();
+  std::vector<double> u(3 * n, 0.5);
+  std::vector<pd::OutputField> fields{{"theta", 1, std::vector<double>(n, 2.0)}, {"f", 3, std::vector<double>(3 * n, 1.0)}};
+  const std::string csv = pd::csv_document(body.particles, u, fields);
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "id,x,y,z,u_x,u_y,u_z,theta,f_x,f_y,f_z");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 10);
+  }
+  EXPECT_EQ(rows, n);
+}
+
+TEST(Output, BadFieldsAndUnwritablePathsFailWithoutAFile) {
+  const auto body = pd::test::make_grid(2, 3, 3, 1, 1.5);
+  std::vector<pd::OutputField> bad{{"short", 1, std::vector<double>(2, 0.0)}};
+  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_bad";
+  std::filesystem::remove_all(dir);
+  const auto path = dir / "r.vtu";
+  EXPECT_THROW(pd::write_vtu_file(path.string(), body.particles, {}, bad), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  // A directory where the file should go: the rename fails and no temporary is left.
+  std::filesystem::create_directories(path);
+  EXPECT_THROW(pd::write_file_atomically(path.string(), "x"), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  std::filesystem::remove_all(dir);
+}
