@@ -8,6 +8,7 @@
 namespace pd {
 
 int FamilyInputs::max_family_size() const {
+  if (max_bonds >= 0) return max_bonds;
   int m = 0;
   for (int p = 0; p < bonds->particle_count(); ++p) m = std::max(m, bonds->family_size(p));
   return m;

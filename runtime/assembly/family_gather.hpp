@@ -17,10 +17,12 @@ struct FamilyInputs {
   std::vector<std::vector<double>> params;  // [material][law.n_params]
   std::vector<double> moments;              // [n * n_moments]
   int n_moments = 0;
+  int max_bonds = -1;  // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }
   int max_family_size() const;
+  void cache_max_bonds() { max_bonds = -1, max_bonds = max_family_size(); }
 };
 
 // One per thread. The buffers are sized once for the largest family, so gathering a
