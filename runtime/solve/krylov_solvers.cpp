@@ -14,7 +14,11 @@ class KrylovSolver final : public SparseSolver {
     if (o.max_iterations > 0) solver_.setMaxIterations(o.max_iterations);
   }
   std::string name() const override { return name_; }
-  void analyse(const SparseMatrix& A) override { solver_.analyzePattern(A); }
+  // No separate analysis: compute() in factor() analyses and factors the preconditioner
+  // together. Eigen 3.4's IterativeSolverBase::analyzePattern reads
+  // IncompleteLUT::info() before factorize() has set it (an uninitialised enum that
+  // UBSan reports, and a random success/failure otherwise).
+  void analyse(const SparseMatrix&) override {}
   bool factor(const SparseMatrix& A) override {
     solver_.compute(A);  // the preconditioner; Eigen keeps a reference to A for the products
     if (solver_.info() == Eigen::Success) return true;
