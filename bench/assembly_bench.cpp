@@ -6,9 +6,10 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <map>
 #include <memory>
 
-#include "assemble/assembler.hpp"
+#include "assembly/assembler.hpp"
 #include "discretize/discretization.hpp"
 #include "material/elastic_constants.hpp"
 
@@ -17,7 +18,7 @@ struct Grid {
   pd::Scene scene;
   pd::Particles p;
   pd::Bonds b;
-  std::unique_ptr<pd::Assembler> a;
+  std::unique_ptr<pd::FamilyAssembler> a;
   std::vector<double> u;
   Grid(int n, double ratio) {
     scene.dim = 2;
@@ -29,7 +30,9 @@ struct Grid {
     const auto* law = pd::abi::find_law("silling_plane_strain");
     b = pd::find_bonds(p, ratio * scene.h, pd::abi::find_influence("cubic")->weight);
     const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
-    a = std::make_unique<pd::Assembler>(p, b, *law, std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, true);
+    pd::AssemblerOptions o;
+    o.intact = true;
+    a = std::make_unique<pd::FamilyAssembler>(p, b, *law, std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, o);
     u.assign(p.x.size(), 0.0);
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = 1e-3 * p.x[i];
   }
@@ -47,15 +50,15 @@ void set_counters(benchmark::State& state, const Grid& g, bool matrix) {
   state.counters["families_per_s"] = benchmark::Counter(families, benchmark::Counter::kIsIterationInvariantRate);
   if (matrix)
     state.counters["nonzeros_per_s"] =
-        benchmark::Counter(static_cast<double>(g.a->sparsity().nonzeros()), benchmark::Counter::kIsIterationInvariantRate);
+        benchmark::Counter(static_cast<double>(g.a->pattern().nonzeros()), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["particles"] = families;
 }
 
 void BM_forces(benchmark::State& state) {
   Grid& g = grid(static_cast<int>(state.range(0)), state.range(1) / 10.0);
   omp_set_num_threads(static_cast<int>(state.range(2)));
-  std::vector<double> f;
-  for (auto _ : state) g.a->forces(g.u, f);
+  std::vector<double> f(g.u.size());
+  for (auto _ : state) g.a->internal_forces(g.u.data(), f.data());
   set_counters(state, g, false);
 }
 
@@ -63,16 +66,16 @@ void BM_stiffness(benchmark::State& state) {
   Grid& g = grid(static_cast<int>(state.range(0)), state.range(1) / 10.0);
   omp_set_num_threads(static_cast<int>(state.range(2)));
   pd::SparseMatrix K;
-  std::vector<double> f;
-  for (auto _ : state) g.a->stiffness(g.u, K, &f);
+  std::vector<double> f(g.u.size());
+  for (auto _ : state) g.a->stiffness(g.u.data(), K, f.data());
   set_counters(state, g, true);
 }
 
 void BM_matrix_free_product(benchmark::State& state) {
   Grid& g = grid(static_cast<int>(state.range(0)), state.range(1) / 10.0);
   omp_set_num_threads(static_cast<int>(state.range(2)));
-  std::vector<double> out;
-  for (auto _ : state) g.a->apply_stiffness(g.u, g.u, out);
+  std::vector<double> out(g.u.size());
+  for (auto _ : state) g.a->stiffness_product(g.u.data(), g.u.data(), out.data());
   set_counters(state, g, false);
 }
 

@@ -11,8 +11,7 @@
 namespace pd {
 
 // Column-major, compressed, 32-bit indices: what Eigen's CHOLMOD/UMFPACK wrappers and
-// iterative solvers take without a copy. (The same alias is declared in the older
-// assemble/sparsity.hpp; a repeated alias of one type is legal.)
+// iterative solvers take without a copy.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 // Particle a couples to particle b when some family holds both (two-horizon reach):

@@ -347,7 +347,14 @@ Scene read(const YAML::Node& root, const std::string& file) {
   }
   if (m.has("solver")) {
     MapReader sv(m.get("solver"));
-    s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab"});
+    s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab", "matrix_free"});
+    s.solver.preconditioner = sv.choice("preconditioner", "auto", {"auto", "ic", "diagonal", "ilut"});
+    if ((s.solver.linear == "cg" && s.solver.preconditioner == "ilut") ||
+        (s.solver.linear == "bicgstab" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "diagonal")) ||
+        ((s.solver.linear == "cholmod" || s.solver.linear == "umfpack") && s.solver.preconditioner != "auto") ||
+        (s.solver.linear == "matrix_free" && s.solver.preconditioner != "auto" && s.solver.preconditioner != "diagonal"))
+      sv.get("preconditioner").fail("preconditioner '" + s.solver.preconditioner + "' does not go with linear solver '" +
+                                    s.solver.linear + "' (cg: ic or diagonal; bicgstab: ilut; matrix_free: diagonal)");
     s.solver.nonlinear = sv.choice("nonlinear", "newton", {"newton"});
     s.solver.load_steps = sv.integer("load_steps", 1);
     if (s.solver.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
@@ -355,6 +362,11 @@ Scene read(const YAML::Node& root, const std::string& file) {
     s.solver.max_iterations = sv.integer("max_iterations", 30);
     s.solver.increment_tolerance = sv.number("increment_tolerance", 1e-9);
     s.solver.krylov_tolerance = sv.number("krylov_tolerance", 1e-12);
+    s.solver.krylov_max_iterations = sv.integer("krylov_max_iterations", 0);
+    if (s.solver.krylov_max_iterations < 0) sv.get("krylov_max_iterations").fail("must be 0 (automatic) or positive");
+    const double direct_max = sv.number("direct_max_nonzeros", 8e6);
+    if (!(direct_max >= 0) || direct_max > 9e18) sv.get("direct_max_nonzeros").fail("must be a non-negative count");
+    s.solver.direct_max_nonzeros = static_cast<long long>(direct_max);
     if (s.solver.tolerance <= 0 || s.solver.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
     if (s.solver.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
     sv.finish();

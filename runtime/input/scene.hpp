@@ -65,13 +65,18 @@ struct Crack {
 };
 
 struct SolverSpec {
-  std::string linear = "auto";  // auto cholmod umfpack cg bicgstab
+  // auto | cholmod | umfpack | cg | bicgstab | matrix_free (Newton-Krylov on the
+  // generated tangent-vector product, never forming K)
+  std::string linear = "auto";
+  std::string preconditioner = "auto";  // cg: ic | diagonal; bicgstab: ilut
   std::string nonlinear = "newton";  // the only nonlinear method so far; the key keeps scenes explicit
   int load_steps = 1;
   double tolerance = 1e-10;     // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
   int max_iterations = 30;
   double krylov_tolerance = 1e-12;
+  int krylov_max_iterations = 0;  // 0: 2 x unknowns for assembled Krylov, 20000 matrix-free
+  long long direct_max_nonzeros = 8'000'000;  // auto: a direct solver up to this many nonzeros
 };
 
 struct OutputSpec {

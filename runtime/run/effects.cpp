@@ -9,25 +9,28 @@
 
 namespace pd {
 
-void Effect::add_stiffness(const std::vector<double>&, double, SparseMatrix&) const {}
+void Effect::add_stiffness(const double*, double, const SparsityPattern&, SparseMatrix&) const {}
+void Effect::add_stiffness_product(const double*, double, const double*, double*) const {}
+void Effect::add_stiffness_diagonal(const double*, double, double*) const {}
 
 namespace {
-class ExternalLoads final : public Effect {
+// Dead loads: a fixed nodal force vector scaled by the load factor.
+class NodalForces final : public Effect {
  public:
-  ExternalLoads(std::vector<double> f, int tractions, int body) : f_(std::move(f)), tractions_(tractions), body_(body) {}
+  NodalForces(std::vector<double> f, std::string description) : f_(std::move(f)), description_(std::move(description)) {}
   std::string name() const override { return "external loads"; }
   std::string describe() const override {
     double total = 0;
     for (double v : f_) total += std::fabs(v);
-    return fmt::format("external loads: {} traction and {} body-force conditions, sum |f| = {:.6g}", tractions_, body_, total);
+    return fmt::format("external loads: {}, sum |f| = {:.6g}", description_, total);
   }
-  void add_forces(const std::vector<double>&, double load, std::vector<double>& r) const override {
+  void add_forces(const double*, double load, double* r) const override {
     for (std::size_t i = 0; i < f_.size(); ++i) r[i] += load * f_[i];
   }
 
  private:
   std::vector<double> f_;
-  int tractions_, body_;
+  std::string description_;
 };
 
 // The measure (length in 2D, area in 3D) of the domain face a side region lies on.
@@ -46,11 +49,10 @@ struct PressurePair {
 
 class CrackPressure final : public Effect {
  public:
-  CrackPressure(const Particles& p, std::vector<PressurePair> pairs, const Sparsity& sp)
-      : p_(p), pairs_(std::move(pairs)), sparsity_(sp) {}
+  CrackPressure(const Particles& p, std::vector<PressurePair> pairs) : p_(p), pairs_(std::move(pairs)) {}
   std::string name() const override { return "crack pressure"; }
   std::string describe() const override { return fmt::format("crack pressure on {} bond pairs across the crack faces", pairs_.size()); }
-  void add_forces(const std::vector<double>& u, double load, std::vector<double>& r) const override {
+  void add_forces(const double* u, double load, double* r) const override {
     const int d = p_.dim;
     for (const PressurePair& q : pairs_) {
       double Y[3], l = 0;
@@ -62,27 +64,49 @@ class CrackPressure final : public Effect {
       }
     }
   }
-  // f_b = g n with n = Y/|Y|: d f_b / d y_b = g (I - n n^T) / |Y| = G; the pair block is [[G, -G], [-G, G]]
-  // and K = -dr/du takes its negative.
-  void add_stiffness(const std::vector<double>& u, double load, SparseMatrix& K) const override {
+  // f_b = g n with n = Y/|Y|: d f_b / d y_b = g (I - n n^T) / |Y| = G; the pair block is
+  // [[G, -G], [-G, G]] and K = -dr/du takes its negative. A handful of pairs per crack:
+  // the block search costs nothing next to the law's assembly.
+  void add_stiffness(const double* u, double load, const SparsityPattern& pattern, SparseMatrix& K) const override {
     const int d = p_.dim;
     double* v = K.valuePtr();
     for (const PressurePair& q : pairs_) {
-      double Y[3], l = 0;
-      deformed(u, q, Y, l);
+      double G[3][3];
+      pair_block(u, load, q, G);
+      const int ids[2] = {q.a, q.b};
+      for (int i : ids)
+        for (int j : ids) {
+          const int base = pattern.block_base(i, j), stride = pattern.column_stride(j);
+          const double sign = i == j ? -1.0 : 1.0;
+          for (int r = 0; r < d; ++r)
+            for (int c = 0; c < d; ++c) v[base + c * stride + r] += sign * G[r][c];
+        }
+    }
+  }
+  void add_stiffness_product(const double* u, double load, const double* v, double* Kv) const override {
+    const int d = p_.dim;
+    for (const PressurePair& q : pairs_) {
+      double G[3][3];
+      pair_block(u, load, q, G);
       for (int r = 0; r < d; ++r)
         for (int c = 0; c < d; ++c) {
-          const double G = load * q.magnitude * ((r == c ? 1.0 : 0.0) - Y[r] * Y[c] / (l * l)) / l;
-          v[sparsity_.slot(q.b, q.b, r, c)] -= G;
-          v[sparsity_.slot(q.a, q.a, r, c)] -= G;
-          v[sparsity_.slot(q.b, q.a, r, c)] += G;
-          v[sparsity_.slot(q.a, q.b, r, c)] += G;
+          const double dv = G[r][c] * (v[q.b * d + c] - v[q.a * d + c]);
+          Kv[q.b * d + r] -= dv;
+          Kv[q.a * d + r] += dv;
         }
+    }
+  }
+  void add_stiffness_diagonal(const double* u, double load, double* diag) const override {
+    const int d = p_.dim;
+    for (const PressurePair& q : pairs_) {
+      double G[3][3];
+      pair_block(u, load, q, G);
+      for (int r = 0; r < d; ++r) diag[q.b * d + r] -= G[r][r], diag[q.a * d + r] -= G[r][r];
     }
   }
 
  private:
-  void deformed(const std::vector<double>& u, const PressurePair& q, double* Y, double& l) const {
+  void deformed(const double* u, const PressurePair& q, double* Y, double& l) const {
     const int d = p_.dim;
     l = 0;
     for (int c = 0; c < d; ++c) {
@@ -91,11 +115,20 @@ class CrackPressure final : public Effect {
     }
     l = std::sqrt(l);
   }
+  void pair_block(const double* u, double load, const PressurePair& q, double G[3][3]) const {
+    double Y[3], l = 0;
+    deformed(u, q, Y, l);
+    for (int r = 0; r < p_.dim; ++r)
+      for (int c = 0; c < p_.dim; ++c) G[r][c] = load * q.magnitude * ((r == c ? 1.0 : 0.0) - Y[r] * Y[c] / (l * l)) / l;
+  }
   const Particles& p_;
   std::vector<PressurePair> pairs_;
-  const Sparsity& sparsity_;
 };
 }  // namespace
+
+std::unique_ptr<Effect> make_nodal_forces(std::vector<double> f, std::string description) {
+  return std::make_unique<NodalForces>(std::move(f), std::move(description));
+}
 
 std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) {
   const int d = s.dim;
@@ -117,10 +150,10 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) 
     }
   }
   if (tractions + body == 0) return nullptr;
-  return std::make_unique<ExternalLoads>(std::move(f), tractions, body);
+  return make_nodal_forces(std::move(f), fmt::format("{} traction and {} body-force conditions", tractions, body));
 }
 
-std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, const Bonds& bonds, const Sparsity& sp) {
+std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, const Bonds& bonds) {
   std::vector<PressurePair> pairs;
   const int d = s.dim;
   for (const Crack& crack : s.cracks) {
@@ -164,7 +197,7 @@ std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, 
       for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].magnitude *= crack.pressure * measure / normal_total;
   }
   if (pairs.empty()) return nullptr;
-  return std::make_unique<CrackPressure>(p, std::move(pairs), sp);
+  return std::make_unique<CrackPressure>(p, std::move(pairs));
 }
 
 }  // namespace pd

@@ -2,13 +2,16 @@
 // separate object created only when the scene needs it (see make_effects), so an
 // effect that is off costs nothing. New effects (inertia, damping, damage evolution)
 // implement this interface without touching the existing ones.
+//
+// Vectors are particle-major [n * dim]; r is the out-of-balance force (internal plus
+// external: zero at equilibrium) and K = -dr/du, the solver's sign (docs/conventions.md).
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "assemble/sparsity.hpp"
+#include "assembly/sparsity_pattern.hpp"
 #include "input/scene.hpp"
 #include "particles.hpp"
 
@@ -19,12 +22,18 @@ class Effect {
   virtual ~Effect() = default;
   virtual std::string name() const = 0;      // e.g. "tractions"
   virtual std::string describe() const = 0;  // one line for the run log
-  // Adds this effect's nodal forces at load factor `load` to r (out-of-balance force).
-  virtual void add_forces(const std::vector<double>& u, double load, std::vector<double>& r) const = 0;
-  // Adds its contribution to K = -dr/du (nothing for dead loads).
-  virtual void add_stiffness(const std::vector<double>& u, double load, SparseMatrix& K) const;
+  // Adds this effect's nodal forces at load factor `load` to r.
+  virtual void add_forces(const double* u, double load, double* r) const = 0;
+  // Adds its contribution to K = -dr/du, whose pattern is `pattern` (nothing for dead loads).
+  virtual void add_stiffness(const double* u, double load, const SparsityPattern& pattern, SparseMatrix& K) const;
+  // Matrix-free counterparts: Kv += K_effect v, diag += diag(K_effect).
+  virtual void add_stiffness_product(const double* u, double load, const double* v, double* Kv) const;
+  virtual void add_stiffness_diagonal(const double* u, double load, double* diag) const;
   virtual bool symmetric() const { return true; }
 };
+
+// Dead loads given as a nodal force vector [n * dim] at full load.
+std::unique_ptr<Effect> make_nodal_forces(std::vector<double> f, std::string description);
 
 // Dead loads: tractions on boundary particles (paper 000 eq. 34: the total force T x
 // face measure shared equally by the region's particles) and body forces (per volume).
@@ -35,7 +44,6 @@ std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles&
 // bond, pushing the two particles apart (p h per face particle for |xi| = h in 2D). On a
 // perturbed cloud the pair forces are scaled so the total normal load on each face is
 // still p x crack length (area in 3D); on the paper's lattice the scale is exactly 1.
-std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds,
-                                            const Sparsity& sparsity);
+std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds);
 
 }  // namespace pd

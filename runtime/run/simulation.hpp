@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "assemble/assembler.hpp"
+#include "assembly/assembler.hpp"
 #include "input/scene.hpp"
 #include "run/effects.hpp"
-#include "solvers/newton.hpp"
+#include "solve/newton.hpp"
 
 namespace pd {
 
@@ -30,7 +30,7 @@ struct RunSummary {
   int broken_bonds = 0;
   std::string variant;
   std::vector<std::string> effects;
-  NewtonReport newton;
+  NewtonResult newton;
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2
@@ -52,15 +52,17 @@ class Simulation {
   const Bonds& bonds() const { return bonds_; }
   const std::vector<double>& displacement() const { return u_; }
   const Scene& scene() const { return scene_; }
+  const FamilyAssembler& assembler() const { return *assembler_; }
 
  private:
-  Constraints constraints() const;
+  NewtonSettings newton_settings() const;
   std::vector<ProbeResult> evaluate_probes() const;
+  void write_outputs();
   Scene scene_;
   Log log_;
   Particles particles_;
   Bonds bonds_;
-  std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<FamilyAssembler> assembler_;
   std::vector<std::unique_ptr<Effect>> effects_;
   std::vector<double> u_;
   RunSummary summary_;

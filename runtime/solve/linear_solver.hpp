@@ -20,7 +20,6 @@ struct LinearSolveStats {
 
 // analyse() once per pattern (orderings, symbolic factorisation), factor() per matrix
 // (numeric factorisation, or the preconditioner), then any number of solve()s.
-// (Named SparseSolver because runtime/solvers/ already defines a LinearSolver.)
 class SparseSolver {
  public:
   virtual ~SparseSolver() = default;

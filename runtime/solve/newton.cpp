@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -11,11 +12,29 @@
 
 namespace pd {
 
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
 void NonlinearSystem::jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd&, Eigen::VectorXd&) {
   throw std::logic_error("this nonlinear system has no matrix-free product");
 }
 void NonlinearSystem::diagonal(const Eigen::VectorXd&, double, Eigen::VectorXd&) {
   throw std::logic_error("this nonlinear system has no matrix-free diagonal");
+}
+
+// The last `window` records of this load step (iterations it-window+1 .. it) each came
+// from a step of |du|/|u| <= the stagnation increment, and |r| fell by less than half
+// over them.
+bool NewtonSolver::stagnated(const std::vector<NewtonRecord>& history, int it) const {
+  const int w = s_.stagnation_window;
+  if (w <= 0 || it < w) return false;
+  const std::size_t last = history.size() - 1;
+  for (int k = 0; k < w; ++k)
+    if (history[last - k].increment > s_.stagnation_increment) return false;
+  return history[last].residual > 0.5 * history[last - w].residual;
 }
 
 NewtonSolver::NewtonSolver(NewtonSettings settings, std::function<void(const std::string&)> log)
@@ -33,6 +52,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   if (dofs.free_count() == 0) throw std::invalid_argument("Newton: every degree of freedom is constrained");
   if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
 
+  res.unknowns = dofs.free_count();
   SparseMatrix K;
   std::unique_ptr<ReducedSystem> reduced;
   AutoLinearSolver linear(s_.linear, sys.symmetric(), log_);
@@ -44,11 +64,16 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   auto newton_direction = [&](const Eigen::VectorXd& rf, double load, NewtonRecord& rec) -> Eigen::VectorXd {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs.free_count());
     if (!s_.matrix_free) {
+      auto t0 = std::chrono::steady_clock::now();
       sys.tangent(u, load, K, nullptr);
       if (!reduced) reduced = std::make_unique<ReducedSystem>(dofs, K);
       reduced->update(K);
+      res.assembly_seconds += seconds_since(t0);
+      res.nonzeros = reduced->Kff().nonZeros();
+      t0 = std::chrono::steady_clock::now();
       linear.factor(reduced->Kff());
       const LinearSolveStats st = linear.solve(rf, x);
+      res.linear_seconds += seconds_since(t0);
       res.linear_solver = st.method;
       res.linear_choice = linear.choice().reason;
       rec.linear_iterations = st.iterations;
@@ -58,8 +83,11 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
                                              st.iterations, st.estimated_error));
       return x;
     }
+    auto t0 = std::chrono::steady_clock::now();
     sys.diagonal(u, load, diag);
     const Eigen::VectorXd inv_diag = safe_inverse_diagonal(dofs.restrict_free(diag));
+    res.assembly_seconds += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
     const LinearOperator op = [&](const Eigen::VectorXd& xf, Eigen::VectorXd& yf) {
       v_full.setZero();
       dofs.expand_free(xf, v_full);
@@ -70,6 +98,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
     const KrylovResult kr = cg ? preconditioned_cg(op, inv_diag, rf, x, s_.krylov_tolerance, s_.krylov_max_iterations)
                                : preconditioned_gmres(op, inv_diag, rf, x, s_.krylov_tolerance, s_.gmres_restart,
                                                       s_.krylov_max_iterations);
+    res.linear_seconds += seconds_since(t0);
     res.linear_solver = cg ? "matrix-free cg+jacobi" : "matrix-free gmres+jacobi";
     res.linear_choice = "matrix-free Newton-Krylov";
     rec.linear_iterations = kr.iterations;
@@ -107,6 +136,14 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
         done = true;
         break;
       }
+      if (stagnated(res.history, it)) {
+        res.stagnated = done = true;
+        say(fmt::format("  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
+                        "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning allows",
+                        norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
+                        s_.relative_tolerance));
+        break;
+      }
       if (it == s_.max_iterations) break;
       rec = NewtonRecord{step, it + 1, load, 0.0, 0.0, 0.0, 0, 0.0};
       const Eigen::VectorXd rf = dofs.restrict_free(r);
@@ -119,14 +156,18 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       }
       du.setZero();
       dofs.expand_free(dx, du);
-      // Backtracking: halve the step until |r_f| decreases sufficiently; if none does,
-      // keep the smallest step (the next tangent may do better) and say so.
+      // A full step below the increment tolerance has converged to rounding: the residual
+      // sits on its floor there, so it is taken without a line search (which could only
+      // waste halvings). Otherwise backtrack: halve the step until |r_f| decreases
+      // sufficiently; if none does, keep the smallest step (the next tangent may do
+      // better) and say so.
+      const bool negligible = du.norm() <= s_.increment_tolerance * u.norm();
       double alpha = 1.0, trial_norm = 0.0;
       for (int b = 0;; ++b) {
         trial = u + alpha * du;
         sys.residual(trial, load, r_trial);
         trial_norm = dofs.restrict_free(r_trial).norm();
-        if (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm) break;
+        if (negligible || (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm)) break;
         if (b == s_.max_backtracks) {
           say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
           break;

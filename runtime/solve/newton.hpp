@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -39,6 +40,12 @@ struct NewtonSettings {
   // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
   // strain problem has a rounding floor (|Y| - |xi| cancels) that rtol may sit below.
   double increment_tolerance = 1e-13;
+  // ... or stagnation on the rounding floor: `stagnation_window` consecutive steps, each
+  // moving u by at most stagnation_increment |u|, that together reduced |r_f| by less
+  // than half. An ill-conditioned system (nearly incompressible, stiff inclusions) has a
+  // residual floor far above rtol; this ends the iteration there and says so. 0 turns it off.
+  int stagnation_window = 3;
+  double stagnation_increment = 1e-7;
   int max_backtracks = 12;            // halvings of the step
   double sufficient_decrease = 1e-4;  // Armijo constant on |r_f|
   LinearSolverOptions linear;
@@ -61,10 +68,15 @@ struct NewtonRecord {
 
 struct NewtonResult {
   bool converged = false;
+  bool stagnated = false;  // converged by the stagnation rule (the residual floor), not by rtol
   std::vector<NewtonRecord> history;
   std::string linear_solver;  // the method that solved the last system
   std::string linear_choice;  // why (and any fallback)
   std::string message;        // the failure, when not converged
+  std::int64_t unknowns = 0;  // free dofs
+  std::int64_t nonzeros = 0;  // of the reduced tangent (0 when matrix-free)
+  double assembly_seconds = 0;  // forming tangents (or diagonals, matrix-free)
+  double linear_seconds = 0;    // factorisations and linear solves
   int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }
 };
 
@@ -77,6 +89,7 @@ class NewtonSolver {
   NewtonResult solve(NonlinearSystem& system, const DofMap& dofs, Eigen::VectorXd& u);
 
  private:
+  bool stagnated(const std::vector<NewtonRecord>& history, int it) const;
   NewtonSettings s_;
   std::function<void(const std::string&)> log_;
 };

@@ -13,7 +13,7 @@
 #include "input/scene.hpp"
 #include "run/simulation.hpp"
 #include "study/study.hpp"
-#include "write/writers.hpp"
+#include "output/atomic_file.hpp"
 
 namespace pd {
 
@@ -76,7 +76,7 @@ StudyPoint run_point(const Scene& base, const std::string& problem, const std::s
     pt.nonzeros = r.newton.nonzeros;
     pt.setup_seconds = r.setup_seconds;
     pt.assembly_seconds = r.newton.assembly_seconds;
-    pt.solve_seconds = r.newton.solve_seconds;
+    pt.solve_seconds = r.newton.linear_seconds;
     pt.newton_iterations = r.newton.history.empty() ? 0 : static_cast<int>(r.newton.history.size()) - 1;
   } catch (const std::exception& e) {
     pt.converged = false;
@@ -119,7 +119,7 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
               pt = from_json(nlohmann::json::parse(in));
             } else {
               pt = run_point(base, problem, law, inf, ratio, count);
-              write_text_atomically(cache.string(), to_json(pt).dump(1));
+              write_file_atomically(cache.string(), to_json(pt).dump(1));
             }
             log(fmt::format("[{}/{}] {} {} {} delta/h={} n={}: {}", done, total, problem, law, inf, ratio, count,
                             pt.converged ? fmt::format("error {:.3e}, {:.3f} s", pt.error, pt.total_seconds)
@@ -159,7 +159,7 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
                        p.influence, p.ratio, p.count, p.h, p.converged ? 1 : 0, p.error, p.particles, p.nonzeros,
                        p.setup_seconds, p.assembly_seconds, p.solve_seconds, p.total_seconds, p.newton_iterations,
                        frontier.count(&p) ? 1 : 0, p.failure);
-  write_text_atomically((fs::path(out) / "points.csv").string(), csv.str());
+  write_file_atomically((fs::path(out) / "points.csv").string(), csv.str());
   std::ostringstream md;
   md << "# Orders of convergence\n\nFitted by least squares on log e against log h (paper 000 eq. 37) from `"
      << spec.file << "`" << (quick ? " (quick sweep)" : "") << ". Paper: paper 000 Tables 3-5 where it reports the series; "
@@ -169,7 +169,7 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
     md << fmt::format("| {} | {} | {} | {} | {} | {}{:.3f}{} | {} |\n", o.problem, o.law, o.influence, o.ratio, o.points,
                       off ? "**" : "", o.order, off ? "**" : "", o.has_paper ? fmt::format("{:.4f}", o.paper) : "");
   }
-  write_text_atomically((fs::path(out) / "orders.md").string(), md.str());
+  write_file_atomically((fs::path(out) / "orders.md").string(), md.str());
   // Plots, when matplotlib is there: Debian's python3-matplotlib for /usr/bin/python3 (scripts/install_deps.sh),
   // called by absolute path because a python3 earlier on PATH (pyenv) may not see it.
   const fs::path script = fs::path(PD_SOURCE_DIR) / "scripts" / "plot_study.py";

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "assemble/assembler.hpp"
+#include "assembly/assembler.hpp"
 #include "discretize/discretization.hpp"
 #include "material/elastic_constants.hpp"
 #include "verify/random_family.hpp"
@@ -42,7 +42,10 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
   const pd::Bonds b = pd::find_bonds(p, delta, GetParam().influence->weight);
   const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
   const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, {{"stab", 1.0}, {"hourglass", 1.0}});
-  const pd::Assembler a(p, b, law, {params}, true);
+  pd::AssemblerOptions options;
+  options.intact = true;
+  options.matrix = false;
+  const pd::FamilyAssembler a(p, b, law, {params}, options);
   const double H[9] = {1e-3, 4e-4, -2e-4, -3e-4, 2e-3, 1e-4, 5e-4, -1e-4, -1e-3};
   std::vector<double> u(p.x.size());
   const int d = law.dim;
@@ -51,8 +54,8 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
       u[i * d + r] = 0;
       for (int c = 0; c < d; ++c) u[i * d + r] += H[r * 3 + c] * p.x[i * d + c];
     }
-  std::vector<double> f;
-  a.forces(u, f);
+  std::vector<double> f(u.size());
+  a.internal_forces(u.data(), f.data());
   double boundary = 0, interior = 0;
   int n_interior = 0;
   for (int i = 0; i < p.size(); ++i) {

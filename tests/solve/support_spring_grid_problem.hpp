@@ -5,7 +5,7 @@
 
 #include "assembly/assembler.hpp"
 #include "solve/dof_map.hpp"
-#include "solve/peridynamic_system.hpp"
+#include "run/peridynamic_system.hpp"
 #include "support_grid.hpp"
 #include "support_spring_law.hpp"
 
@@ -37,7 +37,11 @@ struct GridProblem {
     }
     dofs = DofMap::from_list(2 * n, c, v);
   }
-  PeridynamicSystem system() const { return PeridynamicSystem(*assembler, external); }
+  PeridynamicSystem system() {
+    loads = make_nodal_forces(std::vector<double>(external.data(), external.data() + external.size()), "pull");
+    return PeridynamicSystem(*assembler, {loads.get()});
+  }
+  std::unique_ptr<Effect> loads;
 };
 
 }  // namespace pd::test

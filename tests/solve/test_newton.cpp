@@ -149,3 +149,45 @@ TEST(Newton, NonConvergenceIsReportedClearly) {
   EXPECT_NE(r.message.find("did not converge"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("load steps"), std::string::npos) << r.message;
 }
+
+namespace {
+// The spring grid with a deterministic residual "rounding floor": a fixed pseudo-random
+// vector of relative size 1e-7 added to r, as an ill-conditioned system's cancellation does.
+struct NoisyFloor final : pd::NonlinearSystem {
+  pd::NonlinearSystem& s;
+  double floor;
+  int calls = 0;
+  NoisyFloor(pd::NonlinearSystem& inner, double f) : s(inner), floor(f) {}
+  int size() const override { return s.size(); }
+  void add_noise(Eigen::VectorXd& r) {
+    ++calls;
+    for (Eigen::Index i = 0; i < r.size(); ++i) r[i] += floor * std::sin(12.9898 * (i + 1) * calls);
+  }
+  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r), add_noise(r); }
+  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override {
+    s.tangent(u, l, K, r);
+    if (r) add_noise(*r);
+  }
+};
+}  // namespace
+
+TEST(Newton, StagnationOnTheRoundingFloorEndsTheIterationAndIsReported) {
+  auto pb = nonlinear_problem();
+  auto inner = pb.system();
+  NoisyFloor sys(inner, 1e-7 * pb.external.norm());
+  Eigen::VectorXd u;
+  pd::NewtonSettings st;
+  std::vector<std::string> log;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st, &log);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(r.stagnated);
+  EXPECT_LT(r.iterations(), 15);
+  bool said = false;
+  for (const auto& line : log) said = said || line.find("stagnated on the rounding floor") != std::string::npos;
+  EXPECT_TRUE(said);
+  // Without the rule the same system cannot reach rtol = 1e-10 and fails clearly.
+  st.stagnation_window = 0;
+  const pd::NewtonResult strict = run(sys, pb.dofs, u, st);
+  EXPECT_FALSE(strict.converged);
+  EXPECT_NE(strict.message.find("did not converge"), std::string::npos);
+}

@@ -1,0 +1,103 @@
+// Constraints from boundary conditions, and the cluster / rigid-mode check.
+#include "run/constraints.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "discretize/discretization.hpp"
+#include "fields/analytic.hpp"
+#include "input/yaml_keys.hpp"
+
+namespace pd {
+
+DofMap scene_constraints(const Scene& scene, const Particles& particles) {
+  const int d = particles.dim;
+  const std::size_t n = static_cast<std::size_t>(particles.size()) * d;
+  std::vector<double> value(n, 0.0);
+  std::vector<char> fixed(n, 0);
+  for (const BoundaryCondition& bc : scene.boundary) {
+    if (bc.kind != BoundaryCondition::Kind::Fixed && bc.kind != BoundaryCondition::Kind::Displacement &&
+        bc.kind != BoundaryCondition::Kind::Field)
+      continue;
+    const auto ids = region_particles(bc.region, particles, scene);
+    if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
+    std::unique_ptr<AnalyticField> field;
+    if (bc.kind == BoundaryCondition::Kind::Field) field = std::make_unique<AnalyticField>(bc.field, scene.materials[0].elastic);
+    for (int p : ids)
+      for (int c = 0; c < d; ++c) {
+        if (!bc.components[c]) continue;
+        fixed[p * d + c] = 1;
+        value[p * d + c] = bc.kind == BoundaryCondition::Kind::Fixed ? 0.0
+                           : field ? field->displacement(particles.position(p))[c]
+                                   : bc.values[c];
+      }
+  }
+  return DofMap(fixed, value);
+}
+
+namespace {
+// Rigid-body modes that the constrained dofs `dofs` of one cluster leave free, as a
+// message ("" when held).
+std::string missing_constraints(const Particles& p, const std::vector<int>& dofs) {
+  const int d = p.dim;
+  // For each component, the positions (along the next axis) of the particles holding it.
+  std::vector<std::vector<double>> coords(static_cast<std::size_t>(d));
+  for (int dof : dofs) coords[dof % d].push_back(p.x[(dof / d) * d + (dof % d + 1) % d]);
+  std::string missing;
+  const char* axes = "xyz";
+  for (int c = 0; c < d; ++c)
+    if (coords[c].empty()) missing += fmt::format("no particle has its {} displacement prescribed (rigid translation in {}); ", axes[c], axes[c]);
+  auto spread = [](const std::vector<double>& v) {
+    if (v.empty()) return 0.0;
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return *hi - *lo;
+  };
+  if (d == 2 && missing.empty() && spread(coords[0]) == 0.0 && spread(coords[1]) == 0.0) {
+    // x fixed along one horizontal line and y along one vertical line: rotation about
+    // their crossing point is free unless the two constraints sit at different points.
+    bool blocked = false;
+    for (int dof : dofs)
+      for (int other : dofs)
+        if (dof % 2 == 0 && other % 2 == 0 && p.x[(dof / 2) * 2 + 1] != p.x[(other / 2) * 2 + 1]) blocked = true;
+    if (!blocked && coords[0].size() + coords[1].size() < 3) missing += "the constraints leave the rigid rotation free; ";
+  }
+  return missing;
+}
+}  // namespace
+
+void check_held(const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
+  // Clusters of particles joined by intact bonds (union-find): each needs its own
+  // constraints, or it floats (a particle whose every bond is broken is a cluster of one).
+  const int n = particles.size(), d = particles.dim;
+  std::vector<int> parent(static_cast<std::size_t>(n));
+  for (int p = 0; p < n; ++p) parent[p] = p;
+  auto root = [&](int p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  for (int p = 0; p < n; ++p)
+    for (int e = bonds.offsets[p]; e < bonds.offsets[p + 1]; ++e)
+      if (bonds.alpha[e] != 0.0) parent[root(p)] = root(bonds.neighbor[e]);
+  std::map<int, std::vector<int>> clusters, cluster_dofs;
+  for (int p = 0; p < n; ++p) clusters[root(p)].push_back(p);
+  for (int dof : dofs.constrained_dofs()) cluster_dofs[root(dof / d)].push_back(dof);
+  for (const auto& [r, members] : clusters) {
+    const std::string missing = missing_constraints(particles, cluster_dofs[r]);
+    if (missing.empty()) continue;
+    std::string list;
+    for (std::size_t i = 0; i < std::min<std::size_t>(members.size(), 8); ++i) list += (i ? ", " : "") + std::to_string(members[i]);
+    const double* x = particles.position(members[0]);
+    const std::string what = clusters.size() == 1
+                                 ? std::string("the body is under-constrained: ")
+                                 : fmt::format("a cluster of {} particle(s) joined by intact bonds (particles {}{}; the first at ({:.6g}, {:.6g})) "
+                                               "is disconnected from the rest of the body and under-constrained: ",
+                                               members.size(), list, members.size() > 8 ? ", ..." : "", x[0], x[1]);
+    throw std::runtime_error(what + missing.substr(0, missing.size() - 2));
+  }
+}
+
+}  // namespace pd

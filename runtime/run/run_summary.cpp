@@ -1,0 +1,62 @@
+// The run summary: text for the log, JSON for summary.json.
+#include <fmt/core.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run/simulation.hpp"
+
+namespace pd {
+
+std::string RunSummary::json() const {
+  nlohmann::ordered_json j;
+  j["scene"] = scene;
+  j["law"] = law;
+  j["influence"] = influence;
+  j["kernel_variant"] = variant;
+  j["effects"] = effects;
+  j["particles"] = particles;
+  j["bonds"] = bonds;
+  j["broken_bonds"] = broken_bonds;
+  j["unknowns"] = newton.unknowns;
+  j["nonzeros"] = newton.nonzeros;
+  j["linear_solver"] = {{"method", newton.linear_solver}, {"choice", newton.linear_choice}};
+  nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
+  for (const auto& it : newton.history)
+    iterations.push_back({{"load_step", it.step}, {"load", it.load}, {"iteration", it.iteration}, {"residual", it.residual},
+                          {"increment", it.increment}, {"line_search", it.step_length},
+                          {"linear_iterations", it.linear_iterations}});
+  j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
+  j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
+                  {"solve", solve_seconds}, {"output", output_seconds}};
+  nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
+  for (const auto& p : probes) {
+    nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
+    if (p.has_reference) e["reference"] = p.reference, e["error"] = p.error;
+    probe_list.push_back(e);
+  }
+  j["probes"] = probe_list;
+  if (has_field_error) j["field_error_eq48"] = field_error;
+  j["files"] = files;
+  return j.dump(2) + "\n";
+}
+
+std::string RunSummary::text() const {
+  std::string s = fmt::format("particles: {}\nbonds: {}\nbroken bonds: {}\nkernel variant: {}\neffects:\n", particles,
+                              bonds, broken_bonds, variant);
+  for (const auto& e : effects) s += "  - " + e + "\n";
+  s += fmt::format("unknowns: {}\nnonzeros: {}\nlinear solver: {} ({})\nnewton iterations: {}\n", newton.unknowns,
+                   newton.nonzeros, newton.linear_solver, newton.linear_choice, newton.iterations());
+  for (const auto& it : newton.history)
+    s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
+                     it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
+  s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
+                   setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
+  if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
+  s += "probes:\n";
+  for (const auto& p : probes)
+    s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)
+                         : fmt::format("  {}: value {:.12g}\n", p.name, p.value);
+  return s;
+}
+
+}  // namespace pd
