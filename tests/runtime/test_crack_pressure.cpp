@@ -4,26 +4,34 @@
 
 #include <cmath>
 
+#include <Eigen/Sparse>
+
+#include "assembly/sparsity_pattern.hpp"
 #include "discretize/discretization.hpp"
 #include "run/effects.hpp"
-#include "assembly/sparsity_pattern.hpp"
 
-#include <Eigen/Sparse>
+namespace {
+// A square [-half, half]^2 of spacing h, perturbed, with one pressurised crack a-b.
+pd::Scene crack_scene(double half, double h, double perturbation, pd::Point a, pd::Point b, double pressure) {
+  pd::Scene s;
+  s.dim = 2;
+  s.lo = {-half, -half, 0};
+  s.hi = {half, half, 0};
+  s.h = h;
+  s.perturbation = perturbation;
+  s.seed = 11;
+  s.materials.resize(1);
+  pd::Crack c;
+  c.points = {a, b};
+  c.pressure = pressure;
+  s.cracks = {c};
+  return s;
+}
+}  // namespace
 
 TEST(CrackPressure, TotalNormalLoadOnEachFaceIsPressureTimesLength) {
   for (double amplitude : {0.0, 0.2, 0.4}) {
-    pd::Scene s;
-    s.dim = 2;
-    s.lo = {-1, -1, 0};
-    s.hi = {1, 1, 0};
-    s.h = 0.05;
-    s.perturbation = amplitude;
-    s.seed = 11;
-    s.materials.resize(1);
-    pd::Crack c;
-    c.points = {pd::Point{-0.4, 0, 0}, pd::Point{0.4, 0, 0}};
-    c.pressure = 0.1;
-    s.cracks = {c};
+    const pd::Scene s = crack_scene(1, 0.05, amplitude, {-0.4, 0, 0}, {0.4, 0, 0}, 0.1);
     const pd::Particles p = pd::discretize(s);
     pd::Bonds b = pd::find_bonds(p, 3 * s.h, [](double, double) { return 1.0; });
     pd::cut_bonds(s.cracks, p, b);
@@ -45,17 +53,7 @@ TEST(CrackPressure, TotalNormalLoadOnEachFaceIsPressureTimesLength) {
 // The pressure follows the deformed bond, so it has a stiffness: the assembled blocks,
 // the matrix-free product and the diagonal must all be -d(forces)/du (central differences).
 TEST(CrackPressure, StiffnessProductAndDiagonalAreMinusTheForceDerivative) {
-  pd::Scene s;
-  s.dim = 2;
-  s.lo = {-0.5, -0.5, 0};
-  s.hi = {0.5, 0.5, 0};
-  s.h = 0.1;
-  s.perturbation = 0.2;
-  s.materials.resize(1);
-  pd::Crack c;
-  c.points = {pd::Point{-0.25, 0.01, 0}, pd::Point{0.25, -0.01, 0}};
-  c.pressure = 0.3;
-  s.cracks = {c};
+  const pd::Scene s = crack_scene(0.5, 0.1, 0.2, {-0.25, 0.01, 0}, {0.25, -0.01, 0}, 0.3);
   const pd::Particles p = pd::discretize(s);
   pd::Bonds b = pd::find_bonds(p, 3 * s.h, [](double, double) { return 1.0; });
   pd::cut_bonds(s.cracks, p, b);
