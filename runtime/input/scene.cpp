@@ -348,13 +348,16 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (m.has("solver")) {
     MapReader sv(m.get("solver"));
     s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab", "matrix_free"});
-    s.solver.preconditioner = sv.choice("preconditioner", "auto", {"auto", "ic", "diagonal", "ilut"});
+    s.solver.preconditioner = sv.choice("preconditioner", "auto", {"auto", "ic", "diagonal", "ilut", "short_horizon"});
+    s.solver.preconditioner_ratio = sv.number("preconditioner_ratio", 1.5);
+    if (!(s.solver.preconditioner_ratio >= 1.0)) sv.get("preconditioner_ratio").fail("must be at least 1 (a horizon of one spacing)");
     if ((s.solver.linear == "cg" && s.solver.preconditioner == "ilut") ||
         (s.solver.linear == "bicgstab" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "diagonal")) ||
         ((s.solver.linear == "cholmod" || s.solver.linear == "umfpack") && s.solver.preconditioner != "auto") ||
-        (s.solver.linear == "matrix_free" && s.solver.preconditioner != "auto" && s.solver.preconditioner != "diagonal"))
+        (s.solver.linear != "matrix_free" && s.solver.preconditioner == "short_horizon") ||
+        (s.solver.linear == "matrix_free" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "ilut")))
       sv.get("preconditioner").fail("preconditioner '" + s.solver.preconditioner + "' does not go with linear solver '" +
-                                    s.solver.linear + "' (cg: ic or diagonal; bicgstab: ilut; matrix_free: diagonal)");
+                                    s.solver.linear + "' (cg: ic or diagonal; bicgstab: ilut; matrix_free: short_horizon or diagonal)");
     s.solver.nonlinear = sv.choice("nonlinear", "newton", {"newton"});
     s.solver.load_steps = sv.integer("load_steps", 1);
     if (s.solver.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");

@@ -68,7 +68,8 @@ struct SolverSpec {
   // auto | cholmod | umfpack | cg | bicgstab | matrix_free (Newton-Krylov on the
   // generated tangent-vector product, never forming K)
   std::string linear = "auto";
-  std::string preconditioner = "auto";  // cg: ic | diagonal; bicgstab: ilut
+  std::string preconditioner = "auto";  // cg: ic | diagonal; bicgstab: ilut; matrix_free: short_horizon | diagonal
+  double preconditioner_ratio = 1.5;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
   std::string nonlinear = "newton";  // the only nonlinear method so far; the key keeps scenes explicit
   int load_steps = 1;
   double tolerance = 1e-10;     // on the residual norm relative to the load

@@ -15,8 +15,11 @@ namespace pd {
 // the linear solver must be a general one. The effects are borrowed, not owned.
 class PeridynamicSystem final : public NonlinearSystem {
  public:
-  PeridynamicSystem(const FamilyAssembler& assembler, std::vector<const Effect*> effects)
-      : a_(assembler), effects_(std::move(effects)) {}
+  // approximation (optional): the same law on a shorter horizon, whose stiffness
+  // preconditions the matrix-free path (NonlinearSystem::approximate_tangent).
+  PeridynamicSystem(const FamilyAssembler& assembler, std::vector<const Effect*> effects,
+                    const FamilyAssembler* approximation = nullptr)
+      : a_(assembler), effects_(std::move(effects)), approximation_(approximation) {}
   int size() const override { return a_.dofs(); }
   void residual(const Eigen::VectorXd& u, double load, Eigen::VectorXd& r) override {
     r.resize(size());
@@ -47,10 +50,16 @@ class PeridynamicSystem final : public NonlinearSystem {
     a_.stiffness_diagonal(u.data(), d.data());
     for (const Effect* e : effects_) e->add_stiffness_diagonal(u.data(), load, d.data());
   }
+  bool has_approximate_tangent() const override { return approximation_ != nullptr; }
+  void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P) override {
+    approximation_->stiffness(u.data(), P);
+    for (const Effect* e : effects_) e->add_stiffness(u.data(), load, approximation_->pattern(), P);
+  }
 
  private:
   const FamilyAssembler& a_;
   std::vector<const Effect*> effects_;
+  const FamilyAssembler* approximation_;
 };
 
 }  // namespace pd

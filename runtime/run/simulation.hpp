@@ -56,6 +56,7 @@ class Simulation {
 
  private:
   NewtonSettings newton_settings() const;
+  std::string matrix_free_preconditioner() const;  // "" (assembled), diagonal or approximate
   std::vector<ProbeResult> evaluate_probes() const;
   void write_outputs();
   Scene scene_;
@@ -63,6 +64,9 @@ class Simulation {
   Particles particles_;
   Bonds bonds_;
   std::unique_ptr<FamilyAssembler> assembler_;
+  // Matrix-free runs with the short-horizon preconditioner: the law on delta = ratio h.
+  Bonds short_bonds_;
+  std::unique_ptr<FamilyAssembler> approximation_;
   std::vector<std::unique_ptr<Effect>> effects_;
   std::vector<double> u_;
   RunSummary summary_;

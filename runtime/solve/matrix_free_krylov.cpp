@@ -17,7 +17,11 @@ Eigen::VectorXd safe_inverse_diagonal(const Eigen::VectorXd& d) {
   return inv;
 }
 
-KrylovResult preconditioned_cg(const LinearOperator& A, const Eigen::VectorXd& M, const Eigen::VectorXd& b,
+LinearOperator diagonal_preconditioner(Eigen::VectorXd inv_diagonal) {
+  return [d = std::move(inv_diagonal)](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = d.cwiseProduct(r); };
+}
+
+KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M, const Eigen::VectorXd& b,
                                Eigen::VectorXd& x, double tol, int max_it) {
   KrylovResult res;
   const double bnorm = b.norm();
@@ -30,7 +34,9 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const Eigen::VectorXd& M
   Eigen::VectorXd r(b.size()), Ap(b.size());
   A(x, Ap);
   r = b - Ap;
-  Eigen::VectorXd z = M.cwiseProduct(r), p = z;
+  Eigen::VectorXd z(b.size());
+  M(r, z);
+  Eigen::VectorXd p = z;
   double rz = r.dot(z);
   for (res.iterations = 0; res.iterations < max_it; ++res.iterations) {
     if (r.norm() <= tol * bnorm) break;
@@ -40,7 +46,7 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const Eigen::VectorXd& M
     const double alpha = rz / pAp;
     x += alpha * p;
     r -= alpha * Ap;
-    z = M.cwiseProduct(r);
+    M(r, z);
     const double rz_new = r.dot(z);
     p = z + (rz_new / rz) * p;
     rz = rz_new;
@@ -52,7 +58,7 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const Eigen::VectorXd& M
   return res;
 }
 
-KrylovResult preconditioned_gmres(const LinearOperator& A, const Eigen::VectorXd& M, const Eigen::VectorXd& b,
+KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator& M, const Eigen::VectorXd& b,
                                   Eigen::VectorXd& x, double tol, int restart, int max_it) {
   KrylovResult res;
   const Eigen::Index n = b.size();
@@ -65,7 +71,7 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const Eigen::VectorXd
   if (x.size() != n) x = Eigen::VectorXd::Zero(n);
   const int m = std::max(1, restart);
   Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
-  Eigen::VectorXd cs(m), sn(m), g(m + 1), w(n), Ax(n);
+  Eigen::VectorXd cs(m), sn(m), g(m + 1), w(n), Ax(n), z(n);
   while (res.iterations < max_it) {
     A(x, Ax);
     Eigen::VectorXd r = b - Ax;
@@ -77,7 +83,8 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const Eigen::VectorXd
     g[0] = beta;
     int j = 0;
     for (; j < m && res.iterations < max_it; ++j, ++res.iterations) {
-      A(M.cwiseProduct(V.col(j)), w);  // right preconditioning: A M^-1 v
+      M(V.col(j), z);
+      A(z, w);  // right preconditioning: A M v
       for (int i = 0; i <= j; ++i) {    // modified Gram-Schmidt
         H(i, j) = w.dot(V.col(i));
         w -= H(i, j) * V.col(i);
@@ -103,7 +110,8 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const Eigen::VectorXd
     }
     // x += M^-1 V_j y with H_j y = g_j (upper triangular).
     const Eigen::VectorXd y = H.topLeftCorner(j, j).triangularView<Eigen::Upper>().solve(g.head(j));
-    x += M.cwiseProduct(V.leftCols(j) * y);
+    M(V.leftCols(j) * y, z);
+    x += z;
     if (H.topLeftCorner(j, j).diagonal().cwiseAbs().minCoeff() == 0) break;  // breakdown: nothing more to gain
   }
   A(x, Ax);

@@ -1,4 +1,4 @@
-// Krylov methods on an operator given only as a product: Jacobi-preconditioned CG and GMRES.
+// Krylov methods on an operator given only as a product: preconditioned CG and GMRES.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,16 +16,19 @@ struct KrylovResult {
   bool converged = false;
 };
 
-// Conjugate gradients for symmetric positive definite A, preconditioned by
-// diag(A)^-1 (inv_diagonal, entries of the inverse diagonal). x is the initial guess
-// and the result. Stops at |b - A x| <= tolerance |b|.
-KrylovResult preconditioned_cg(const LinearOperator& A, const Eigen::VectorXd& inv_diagonal, const Eigen::VectorXd& b,
+// Conjugate gradients for symmetric positive definite A, preconditioned by M ~ A^-1
+// (z = M r; symmetric positive definite). x is the initial guess and the result.
+// Stops at |b - A x| <= tolerance |b|.
+KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M, const Eigen::VectorXd& b,
                                Eigen::VectorXd& x, double tolerance, int max_iterations);
 
-// Restarted GMRES(m) for a general A, right-preconditioned by diag(A)^-1 so the
+// Restarted GMRES(m) for a general A, right-preconditioned by M ~ A^-1 so the
 // residual it minimises is the true one.
-KrylovResult preconditioned_gmres(const LinearOperator& A, const Eigen::VectorXd& inv_diagonal, const Eigen::VectorXd& b,
+KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator& M, const Eigen::VectorXd& b,
                                   Eigen::VectorXd& x, double tolerance, int restart, int max_iterations);
+
+// The Jacobi preconditioner z = inv_diagonal .* r as an operator.
+LinearOperator diagonal_preconditioner(Eigen::VectorXd inv_diagonal);
 
 // 1/d where d is usable, 1 where it is zero or not finite (a dof no bond reaches):
 // a Jacobi preconditioner that never divides by zero.

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -23,6 +24,9 @@ void NonlinearSystem::jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd&
 }
 void NonlinearSystem::diagonal(const Eigen::VectorXd&, double, Eigen::VectorXd&) {
   throw std::logic_error("this nonlinear system has no matrix-free diagonal");
+}
+void NonlinearSystem::approximate_tangent(const Eigen::VectorXd&, double, SparseMatrix&) {
+  throw std::logic_error("this nonlinear system has no approximate tangent");
 }
 
 // The last `window` records of this load step (iterations it-window+1 .. it) each came
@@ -57,10 +61,38 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   std::unique_ptr<ReducedSystem> reduced;
   AutoLinearSolver linear(s_.linear, sys.symmetric(), log_);
   Eigen::VectorXd r(n), r_trial(n), trial(n), du(n), v_full(n), Kv_full(n), diag(n);
+  // The matrix-free preconditioner: Jacobi, or a factorised approximate tangent.
+  if (s_.matrix_free && s_.matrix_free_preconditioner != "diagonal" && s_.matrix_free_preconditioner != "approximate")
+    throw std::invalid_argument("Newton: unknown matrix-free preconditioner '" + s_.matrix_free_preconditioner + "'");
+  const bool approximate = s_.matrix_free && s_.matrix_free_preconditioner == "approximate";
+  if (approximate && !sys.has_approximate_tangent())
+    throw std::invalid_argument("Newton: the approximate-tangent preconditioner needs the system's approximate_tangent()");
+  SparseMatrix P;
+  std::unique_ptr<ReducedSystem> reduced_P;
+  LinearSolverOptions p_options;  // a direct factorisation, whatever its size
+  p_options.direct_max_nonzeros = std::numeric_limits<std::int64_t>::max();
+  AutoLinearSolver P_solver(p_options, sys.symmetric(), log_);
+  LinearOperator jacobi;
+  const LinearOperator approximate_solve = [&](const Eigen::VectorXd& rf, Eigen::VectorXd& z) { P_solver.solve(rf, z); };
   double reference = 0;
 
   // Newton step on the free dofs: K_ff du_f = r_f (du_c = 0: the constrained values
   // were already set at the start of the load step).
+  // The Krylov tolerance of this Newton step (matrix-free path).
+  double previous_norm = 0, previous_forcing = 0;
+  auto forcing = [&](double norm, int iteration) {
+    if (!s_.adaptive_forcing) return s_.krylov_tolerance;
+    double eta = s_.max_forcing;
+    if (iteration > 1 && previous_norm > 0) {
+      eta = 0.9 * std::pow(norm / previous_norm, 2);
+      const double safeguard = 0.9 * previous_forcing * previous_forcing;
+      if (safeguard > 0.1) eta = std::max(eta, safeguard);
+    }
+    // No tighter than what brings |r| to the tolerance, nor than krylov_tolerance.
+    eta = std::min(eta, s_.max_forcing);
+    eta = std::max(eta, 0.5 * s_.relative_tolerance * reference / std::max(norm, 1e-300));
+    return std::max(eta, s_.krylov_tolerance);
+  };
   auto newton_direction = [&](const Eigen::VectorXd& rf, double load, NewtonRecord& rec) -> Eigen::VectorXd {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs.free_count());
     if (!s_.matrix_free) {
@@ -84,10 +116,25 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       return x;
     }
     auto t0 = std::chrono::steady_clock::now();
-    sys.diagonal(u, load, diag);
-    const Eigen::VectorXd inv_diag = safe_inverse_diagonal(dofs.restrict_free(diag));
-    res.assembly_seconds += seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
+    if (approximate) {
+      if (rec.iteration == 1) {  // once per load step
+        sys.approximate_tangent(u, load, P);
+        if (!reduced_P) reduced_P = std::make_unique<ReducedSystem>(dofs, P);
+        reduced_P->update(P);
+        res.assembly_seconds += seconds_since(t0);
+        res.nonzeros = reduced_P->Kff().nonZeros();
+        t0 = std::chrono::steady_clock::now();
+        P_solver.factor(reduced_P->Kff());
+        res.linear_seconds += seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
+      }
+    } else {
+      sys.diagonal(u, load, diag);
+      jacobi = diagonal_preconditioner(safe_inverse_diagonal(dofs.restrict_free(diag)));
+      res.assembly_seconds += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+    }
+    const LinearOperator& precondition = approximate ? approximate_solve : jacobi;
     const LinearOperator op = [&](const Eigen::VectorXd& xf, Eigen::VectorXd& yf) {
       v_full.setZero();
       dofs.expand_free(xf, v_full);
@@ -95,12 +142,15 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       yf = dofs.restrict_free(Kv_full);
     };
     const bool cg = sys.symmetric();
-    const KrylovResult kr = cg ? preconditioned_cg(op, inv_diag, rf, x, s_.krylov_tolerance, s_.krylov_max_iterations)
-                               : preconditioned_gmres(op, inv_diag, rf, x, s_.krylov_tolerance, s_.gmres_restart,
+    const double eta = forcing(rf.norm(), rec.iteration);
+    previous_forcing = eta;
+    const KrylovResult kr = cg ? preconditioned_cg(op, precondition, rf, x, eta, s_.krylov_max_iterations)
+                               : preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart,
                                                       s_.krylov_max_iterations);
     res.linear_seconds += seconds_since(t0);
-    res.linear_solver = cg ? "matrix-free cg+jacobi" : "matrix-free gmres+jacobi";
-    res.linear_choice = "matrix-free Newton-Krylov";
+    res.linear_solver = fmt::format("matrix-free {}+{}", cg ? "cg" : "gmres", approximate ? P_solver.name() : "jacobi");
+    res.linear_choice = approximate ? "matrix-free Newton-Krylov preconditioned by a factorised approximate tangent"
+                                    : "matrix-free Newton-Krylov";
     rec.linear_iterations = kr.iterations;
     rec.linear_error = kr.relative_residual;
     if (!kr.converged)
@@ -150,6 +200,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       Eigen::VectorXd dx;
       try {
         dx = newton_direction(rf, load, rec);
+        previous_norm = norm;
       } catch (const std::runtime_error& e) {
         res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load, it + 1, e.what());
         return res;

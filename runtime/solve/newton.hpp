@@ -30,6 +30,10 @@ class NonlinearSystem {
   virtual bool has_jvp() const { return false; }
   virtual void jvp(const Eigen::VectorXd& u, double load, const Eigen::VectorXd& v, Eigen::VectorXd& Kv);
   virtual void diagonal(const Eigen::VectorXd& u, double load, Eigen::VectorXd& d);
+  // A sparser matrix close to K(u) (e.g. the same law on a shorter horizon), whose
+  // factorisation preconditions the matrix-free path; fixed pattern between calls.
+  virtual bool has_approximate_tangent() const { return false; }
+  virtual void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P);
 };
 
 struct NewtonSettings {
@@ -49,10 +53,19 @@ struct NewtonSettings {
   int max_backtracks = 12;            // halvings of the step
   double sufficient_decrease = 1e-4;  // Armijo constant on |r_f|
   LinearSolverOptions linear;
-  // Matrix-free Newton-Krylov: the linear systems are solved by Jacobi-preconditioned
-  // CG (symmetric) or GMRES through NonlinearSystem::jvp, never forming K.
+  // Matrix-free Newton-Krylov: the linear systems are solved by preconditioned CG
+  // (symmetric) or GMRES through NonlinearSystem::jvp, never forming K. The
+  // preconditioner: "diagonal" (Jacobi, from NonlinearSystem::diagonal) or
+  // "approximate" (a direct factorisation of NonlinearSystem::approximate_tangent,
+  // formed once per load step: its cost is amortised over the Krylov iterations).
   bool matrix_free = false;
+  std::string matrix_free_preconditioner = "diagonal";
   double krylov_tolerance = 1e-8;  // forcing term: |K du - r| <= tol |r|
+  // Eisenstat-Walker forcing (their choice 2, gamma 0.9, exponent 2) for the matrix-
+  // free path: solve loosely while far from the solution, tightly near it, never
+  // tighter than krylov_tolerance nor than reaching rtol needs. Off: always krylov_tolerance.
+  bool adaptive_forcing = true;
+  double max_forcing = 1e-2;
   int krylov_max_iterations = 5000;
   int gmres_restart = 60;
 };
