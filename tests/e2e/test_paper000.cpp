@@ -70,7 +70,7 @@ TEST(Paper000, PressurisedCrackSolvesWithQuadraticNewtonAndSmallFieldError) {
 
 // The matrix-free Newton-Krylov paths (Jacobi, and the short-horizon factorisation as
 // preconditioner, both with Eisenstat-Walker forcing) reach the direct solve's answer
-// on the crack scene (80 x 80, delta/h = 3.5), and the short-horizon preconditioner needs
+// on the crack scene (80 x 80, delta/h = 3), and the short-horizon preconditioner needs
 // under half the Krylov iterations of Jacobi (the gap widens with n: 158 vs ~900 at 200 x 200).
 TEST(Paper000, MatrixFreeCrackSolvesAgreeWithCholmod) {
   auto solve = [](const std::string& linear, const std::string& preconditioner, std::vector<double>& u) {
