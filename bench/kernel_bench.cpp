@@ -1,122 +1,436 @@
-// Kernel benchmarks: the generated residual, tangent factors, dense local tangent and
-// tangent-vector product, against the tangent by forward automatic differentiation of
-// a hand-written templated residual (Eigen AutoDiffScalar, as Peridigm does with Sacado
-// for its elastic models) and by central finite differences of the generated residual
-// (Peridigm's default for other models). Families are perturbed lattices at the
-// horizon ratios of paper 000 (2D: delta/h = 1.5, 2, 3, 3.5) and 3D delta/h = 3.
+// Kernel benchmarks, one family at a time, for four laws (Silling, Oterkus, correspondence,
+// bond-based with constant micromodulus) at the neighbour counts of a square lattice
+// with delta/h = 1.5, 2, 3, 3.5 and sqrt(13) (8, 12, 28, 36, 44 bonds) in 2D and
+// delta/h = 3 (122 bonds) in 3D:
+//   generated residual, tangent factors, tangent formed into the dense local matrix
+//   (form_local_matrix), tangent-vector product (JVP);
+//   the dense tangent by forward-mode AD of a hand-written templated residual over all
+//   (L+1)*dim family dofs (Eigen AutoDiffScalar; Peridigm's approach with Sacado):
+//   once with a heap derivative vector (VectorXd, like Sacado's DFad) and once with a
+//   fixed-capacity one (no allocation at all);
+//   the dense tangent by central finite differences of the generated residual (one
+//   residual pair per dof, Peridigm's default), allocation-free.
+// Before timing, the AD and FD benchmarks check their matrix against the generated one
+// (max |difference| / max |entry| <= 1e-8) and the reference residual against the
+// generated residual; a mismatch prints the numbers and exits with status 2.
 //
-//   build/bin/kernel_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   build/bin/kernel_bench --benchmark_repetitions=5 --benchmark_min_time=0.1
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
 #include <unsupported/Eigen/AutoDiff>
+#include <vector>
 
+#include "reference_laws.hpp"
 #include "verify/random_family.hpp"
-#include "verify/reference_silling.hpp"
 
 namespace {
-using pd::verify::FamilyOptions;
 using pd::verify::TestFamily;
 
-TestFamily bench_family(const char* law_name, double ratio) {
-  const auto* law = pd::abi::find_law(law_name);
-  if (law == nullptr) throw std::runtime_error(std::string("no law ") + law_name);
-  FamilyOptions o;
-  o.dim = law->dim;
-  o.horizon_ratio = ratio;
-  o.seed = 3;
-  return pd::verify::make_family(*law, o);
+enum class Ref { Silling, Oterkus, Correspondence, BondBased };
+
+struct Case {
+  const char* law;
+  Ref ref;
+  double ratio;  // delta/h of the lattice
+  const char* ratio_label;
+};
+
+constexpr double kTolerance = 1e-8;       // AD and FD tangents against the generated one
+constexpr double kResidualTolerance = 1e-12;  // hand-written residual against the generated one
+constexpr double kFdStep = 1e-5;          // central-difference step, times the lattice spacing
+
+// A perturbed square (cubic) lattice neighbourhood: the neighbours are the lattice
+// points with |index| <= delta/h, so the bond count is the lattice's (8, 12, 28, 36, 44;
+// 122), then every position moves by up to 0.1 h and the family deforms by a random
+// displacement gradient (5%) plus noise, as runtime/verify/random_family.hpp does.
+TestFamily lattice_family(const pd::abi::LawDescriptor& law, double ratio, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int d = law.dim;
+  const double h = 1.0 + 0.2 * u(rng);
+  TestFamily f;
+  f.dim = d;
+  f.law = &law;
+  f.delta = ratio * h;
+  f.V0 = std::pow(h, d);
+  for (int c = 0; c < d; ++c) f.x.push_back(0.1 * h * u(rng));
+  const int n = static_cast<int>(std::ceil(ratio));
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j)
+      for (int l = (d == 3 ? -n : 0); l <= (d == 3 ? n : 0); ++l) {
+        if ((i == 0 && j == 0 && l == 0) || i * i + j * j + l * l > ratio * ratio * (1 + 1e-12)) continue;
+        const int idx[3] = {i, j, l};
+        for (int c = 0; c < d; ++c) f.x.push_back(idx[c] * h + 0.1 * h * u(rng));
+      }
+  const int L = static_cast<int>(f.x.size()) / d - 1;
+  f.xi.resize(static_cast<std::size_t>(L * d));
+  f.Y.resize(f.xi.size());
+  for (int k = 0; k < L; ++k) {
+    for (int c = 0; c < d; ++c) f.xi[k * d + c] = f.x[(k + 1) * d + c] - f.x[c];
+    f.w.push_back(0.2 + 0.4 * (u(rng) + 1.0));
+    f.V.push_back(f.V0 * (0.8 + 0.2 * (u(rng) + 1.0)));
+    f.alpha.push_back(1.0);
+  }
+  for (int p = 0; p < law.n_params; ++p) f.params.push_back(0.5 + 0.5 * (u(rng) + 1.0));
+  double H[9];
+  for (double& e : H) e = 0.05 * u(rng);
+  std::vector<double> y(f.x.size());
+  for (int a = 0; a <= L; ++a)
+    for (int r = 0; r < d; ++r) {
+      double v = f.x[a * d + r] + 0.01 * h * u(rng);
+      for (int c = 0; c < d; ++c) v += H[r * 3 + c] * f.x[a * d + c];
+      y[a * d + r] = v;
+    }
+  f.set_positions(y);
+  f.update_moments(law.intact);
+  return f;
+}
+
+TestFamily family(const Case& c) {
+  const auto* law = pd::abi::find_law(c.law);
+  if (law == nullptr) {
+    std::fprintf(stderr, "kernel_bench: no law %s\n", c.law);
+    std::exit(2);
+  }
+  return lattice_family(*law, c.ratio, 3);
+}
+
+template <class S>
+void reference(Ref r, const pd::abi::Family& fam, int d, const S* y, S* f, pd::bench::Workspace<S>& w) {
+  switch (r) {
+    case Ref::Silling: return pd::bench::silling(fam, d, y, f, w);
+    case Ref::Oterkus: return pd::bench::oterkus(fam, d, y, f, w);
+    case Ref::Correspondence: return pd::bench::correspondence(fam, d, y, f, w);
+    case Ref::BondBased: return pd::bench::bond_based_constant(fam, d, y, f, w);
+  }
+}
+
+double rel_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double diff = 0, scale = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(b[i]));
+  }
+  return diff / scale;
+}
+
+void check(const char* what, const Case& c, const TestFamily& f, double diff, double tol) {
+  if (diff <= tol) return;
+  std::fprintf(stderr, "kernel_bench: %s of %s at %d bonds differs from the generated kernel: %.3g > %.0e relative\n",
+               what, c.law, f.bonds(), diff, tol);
+  std::exit(2);
 }
 
 void label(benchmark::State& state, const TestFamily& f) {
   state.counters["bonds"] = f.bonds();
-  state.SetLabel(f.law->name);
+  state.counters["dofs"] = f.dofs();
 }
 
-void BM_generated_residual(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
+// Forward AD over all family dofs: seed y, evaluate the templated residual, read the
+// derivative vectors into the dense row-major matrix.
+template <class Der>
+struct ForwardAd {
+  using AD = Eigen::AutoDiffScalar<Der>;
+  Ref ref;
+  const TestFamily& f;
+  int n;
+  std::vector<AD> y, F;
+  pd::bench::Workspace<AD> w;
+  ForwardAd(Ref r, const TestFamily& fam) : ref(r), f(fam), n(fam.dofs()), y(n), F(n) {}
+  void run(double* M) {
+    for (int i = 0; i < n; ++i) {
+      y[i].value() = f.y[i];
+      y[i].derivatives().setZero(n);
+      y[i].derivatives()[i] = 1.0;
+    }
+    reference(ref, f.view(), f.dim, y.data(), F.data(), w);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) M[i * n + j] = F[i].derivatives()[j];
+  }
+};
+
+// Central differences of the generated residual, perturbing the bond vectors in place
+// (a center dof moves every Y_k, a neighbour dof one): 2n residual calls, no allocation.
+struct CentralFd {
+  const TestFamily& f;
+  int n, d;
+  double step;
+  std::vector<double> Y, fp, fm;
+  explicit CentralFd(const TestFamily& fam)
+      : f(fam), n(fam.dofs()), d(fam.dim), step(kFdStep * std::pow(fam.V0, 1.0 / fam.dim)), Y(fam.Y), fp(n), fm(n) {}
+  void shift(int j, double s) {
+    const int a = j / d, c = j % d;
+    if (a == 0)
+      for (int k = 0; k < f.bonds(); ++k) Y[k * d + c] -= s;
+    else
+      Y[(a - 1) * d + c] += s;
+  }
+  void restore(int j) {
+    const int a = j / d, c = j % d;
+    if (a == 0)
+      for (int k = 0; k < f.bonds(); ++k) Y[k * d + c] = f.Y[k * d + c];
+    else
+      Y[(a - 1) * d + c] = f.Y[(a - 1) * d + c];
+  }
+  void run(double* M) {
+    pd::abi::Family fam = f.view();
+    fam.Y = Y.data();
+    const auto residual = f.law->intact.residual;
+    const double inv = 1.0 / (2 * step);
+    for (int j = 0; j < n; ++j) {
+      shift(j, step);
+      residual(fam, fp.data());
+      restore(j);
+      shift(j, -step);
+      residual(fam, fm.data());
+      restore(j);
+      for (int i = 0; i < n; ++i) M[i * n + j] = (fp[i] - fm[i]) * inv;
+    }
+  }
+};
+
+void BM_generated_residual(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
   std::vector<double> forces(static_cast<std::size_t>(f.dofs()));
+  const pd::abi::Family fam = f.view();
   for (auto _ : state) {
-    f.law->intact.residual(f.view(), forces.data());
+    f.law->intact.residual(fam, forces.data());
     benchmark::DoNotOptimize(forces.data());
+    benchmark::ClobberMemory();
   }
   label(state, f);
 }
 
-void BM_generated_tangent_factors(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
+void BM_generated_tangent_factors(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
   pd::TangentScratch scratch;
   const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
   std::vector<double> forces(static_cast<std::size_t>(f.dofs()));
+  const pd::abi::Family fam = f.view();
   for (auto _ : state) {
-    f.law->intact.tangent(f.view(), forces.data(), fac);
+    f.law->intact.tangent(fam, forces.data(), fac);
     benchmark::DoNotOptimize(fac.direct);
+    benchmark::ClobberMemory();
   }
   label(state, f);
 }
 
-void BM_generated_tangent_dense(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
+void BM_generated_tangent_dense(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
   pd::TangentScratch scratch;
   const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
   std::vector<double> forces(static_cast<std::size_t>(f.dofs())), M(static_cast<std::size_t>(f.dofs() * f.dofs()));
+  const pd::abi::Family fam = f.view();
   for (auto _ : state) {
-    f.law->intact.tangent(f.view(), forces.data(), fac);
-    pd::form_local_matrix(f.dim, f.law->n_states, f.view(), fac, M.data());
+    f.law->intact.tangent(fam, forces.data(), fac);
+    pd::form_local_matrix(f.dim, f.law->n_states, fam, fac, M.data());
     benchmark::DoNotOptimize(M.data());
+    benchmark::ClobberMemory();
   }
   label(state, f);
 }
 
-void BM_generated_jvp(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
-  std::vector<double> dy(static_cast<std::size_t>(f.dofs()), 0.1), df(dy.size());
+void BM_generated_jvp(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
+  std::vector<double> dy(static_cast<std::size_t>(f.dofs())), df(dy.size());
+  for (std::size_t i = 0; i < dy.size(); ++i) dy[i] = std::sin(1.0 + static_cast<double>(i));
+  const pd::abi::Family fam = f.view();
   for (auto _ : state) {
-    f.law->intact.jvp(f.view(), dy.data(), df.data());
+    f.law->intact.jvp(fam, dy.data(), df.data());
     benchmark::DoNotOptimize(df.data());
+    benchmark::ClobberMemory();
   }
   label(state, f);
 }
 
-void BM_forward_ad_tangent_dense(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
+template <class Der>
+void BM_forward_ad_tangent_dense(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
   const int n = f.dofs();
-  using AD = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-  std::vector<AD> y(static_cast<std::size_t>(n)), forces(static_cast<std::size_t>(n));
+  ForwardAd<Der> ad(c.ref, f);
+  std::vector<double> M(static_cast<std::size_t>(n * n)), forces(static_cast<std::size_t>(n));
+  ad.run(M.data());
+  for (int i = 0; i < n; ++i) forces[i] = ad.F[i].value();
+  check("hand-written residual", c, f, rel_diff(forces, f.forces(f.law->intact)), kResidualTolerance);
+  const double diff = rel_diff(M, f.tangent_matrix(f.law->intact));
+  check("forward-AD tangent", c, f, diff, kTolerance);
+  for (auto _ : state) {
+    ad.run(M.data());
+    benchmark::DoNotOptimize(M.data());
+    benchmark::ClobberMemory();
+  }
+  label(state, f);
+  state.counters["rel_diff"] = diff;
+}
+
+void BM_central_fd_tangent_dense(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
+  const int n = f.dofs();
+  CentralFd fd(f);
   std::vector<double> M(static_cast<std::size_t>(n * n));
+  fd.run(M.data());
+  const double diff = rel_diff(M, f.tangent_matrix(f.law->intact));
+  check("central-difference tangent", c, f, diff, kTolerance);
   for (auto _ : state) {
-    for (int i = 0; i < n; ++i) y[i] = AD(f.y[i], n, i);
-    pd::verify::silling_forces<AD>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(), f.V0,
-                                   f.params[0], f.params[1], y.data(), forces.data());
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) M[i * n + j] = forces[i].derivatives()[j];
+    fd.run(M.data());
     benchmark::DoNotOptimize(M.data());
+    benchmark::ClobberMemory();
   }
   label(state, f);
+  state.counters["rel_diff"] = diff;
 }
 
-void BM_central_fd_tangent_dense(benchmark::State& state, const char* law, double ratio) {
-  TestFamily f = bench_family(law, ratio);
+// Bench-only prototype, not used by the runtime: pd::form_local_matrix with the
+// neighbour block computed entry by entry with the state sum innermost (one store per
+// entry, the right factors of a bond read contiguously) instead of one read-modify-write
+// pass over the row per state. Only for laws with several states (correspondence:
+// d*d); checked against form_local_matrix before timing.
+template <int D, int S>
+void form_local_matrix_state_inner(const pd::abi::Family& fam, const pd::abi::TangentFactors& fac, double* M) {
+  const int L = fam.n_bonds, n = (L + 1) * D;
+  double rs[S * D] = {}, ls[S * D] = {}, center[D * D] = {};
+  for (int k = 0; k < L; ++k) {
+    const double c = fam.V0 * fam.V[k];
+    for (int a = 0; a < S * D; ++a) {
+      rs[a] += fac.right[k * S * D + a];
+      ls[a] += c * fac.left[k * S * D + a];
+    }
+  }
+  for (int i = 0; i < L; ++i) {
+    const double c = fam.V0 * fam.V[i];
+    const double* left_i = fac.left + i * S * D;
+    const double* direct_i = fac.direct + i * D * D;
+    for (int r = 0; r < D; ++r) {
+      double* row = M + static_cast<std::ptrdiff_t>((i + 1) * D + r) * n;
+      double a[S];
+      for (int s = 0; s < S; ++s) a[s] = -c * left_i[s * D + r];
+      double* __restrict block = row + D;
+      for (int k = 0; k < L; ++k) {
+        const double* __restrict rk = fac.right + k * S * D;
+        for (int q = 0; q < D; ++q) {
+          double v = 0;
+          for (int s = 0; s < S; ++s) v += a[s] * rk[s * D + q];
+          block[k * D + q] = v;
+        }
+      }
+      for (int q = 0; q < D; ++q) row[(i + 1) * D + q] -= c * direct_i[r * D + q];
+      for (int q = 0; q < D; ++q) {
+        double v = direct_i[r * D + q];
+        for (int s = 0; s < S; ++s) v += left_i[s * D + r] * rs[s * D + q];
+        row[q] = c * v;
+        center[r * D + q] -= c * v;
+      }
+    }
+  }
+  for (int r = 0; r < D; ++r) {
+    double* row = M + static_cast<std::ptrdiff_t>(r) * n;
+    for (int q = 0; q < D; ++q) row[q] = center[r * D + q];
+    for (int k = 0; k < L; ++k) {
+      const double c = fam.V0 * fam.V[k];
+      for (int q = 0; q < D; ++q) {
+        double v = c * fac.direct[k * D * D + r * D + q];
+        for (int s = 0; s < S; ++s) v += ls[s * D + r] * fac.right[(k * S + s) * D + q];
+        row[(k + 1) * D + q] = v;
+      }
+    }
+  }
+}
+
+using FormFn = void (*)(const pd::abi::Family&, const pd::abi::TangentFactors&, double*);
+FormFn state_inner_form(int dim, int n_states) {
+  if (dim == 2 && n_states == 4) return form_local_matrix_state_inner<2, 4>;
+  if (dim == 3 && n_states == 9) return form_local_matrix_state_inner<3, 9>;
+  return nullptr;
+}
+
+void BM_prototype_tangent_dense(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
+  const FormFn form = state_inner_form(f.dim, f.law->n_states);
+  pd::TangentScratch scratch;
+  const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs())), M(static_cast<std::size_t>(f.dofs() * f.dofs()));
+  const pd::abi::Family fam = f.view();
+  f.law->intact.tangent(fam, forces.data(), fac);
+  form(fam, fac, M.data());
+  const double diff = rel_diff(M, f.tangent_matrix(f.law->intact));
+  check("prototype dense tangent", c, f, diff, 1e-14);
   for (auto _ : state) {
-    auto M = f.fd_matrix(f.law->intact, 1e-6 * f.delta);
+    f.law->intact.tangent(fam, forces.data(), fac);
+    form(fam, fac, M.data());
     benchmark::DoNotOptimize(M.data());
+    benchmark::ClobberMemory();
   }
   label(state, f);
+  state.counters["rel_diff"] = diff;
 }
 
-#define PD_KERNEL_BENCH(fn)                                                       \
-  BENCHMARK_CAPTURE(fn, plane_strain_1_5, "silling_plane_strain", 1.5);           \
-  BENCHMARK_CAPTURE(fn, plane_strain_2_0, "silling_plane_strain", 2.0);           \
-  BENCHMARK_CAPTURE(fn, plane_strain_3_0, "silling_plane_strain", 3.0);           \
-  BENCHMARK_CAPTURE(fn, plane_strain_3_5, "silling_plane_strain", 3.5);           \
-  BENCHMARK_CAPTURE(fn, three_d_3_0, "silling_3d", 3.0);
+// Derivative vectors: heap (like Sacado DFad) and fixed capacity (stack, no allocation).
+using HeapDer = Eigen::VectorXd;
+template <int Max>
+using FixedDer = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
+constexpr int kMax2d = 45 * 2, kMax3d = 123 * 3;
 
-PD_KERNEL_BENCH(BM_generated_residual)
-PD_KERNEL_BENCH(BM_generated_tangent_factors)
-PD_KERNEL_BENCH(BM_generated_tangent_dense)
-PD_KERNEL_BENCH(BM_generated_jvp)
-PD_KERNEL_BENCH(BM_forward_ad_tangent_dense)
-PD_KERNEL_BENCH(BM_central_fd_tangent_dense)
+const Case kCases[] = {
+    {"silling_plane_strain", Ref::Silling, 1.5, "1.5"},
+    {"silling_plane_strain", Ref::Silling, 2.0, "2"},
+    {"silling_plane_strain", Ref::Silling, 3.0, "3"},
+    {"silling_plane_strain", Ref::Silling, 3.5, "3.5"},
+    {"silling_plane_strain", Ref::Silling, 3.6056, "sqrt13"},
+    {"oterkus_plane_strain", Ref::Oterkus, 1.5, "1.5"},
+    {"oterkus_plane_strain", Ref::Oterkus, 2.0, "2"},
+    {"oterkus_plane_strain", Ref::Oterkus, 3.0, "3"},
+    {"oterkus_plane_strain", Ref::Oterkus, 3.5, "3.5"},
+    {"oterkus_plane_strain", Ref::Oterkus, 3.6056, "sqrt13"},
+    {"correspondence_plane_strain", Ref::Correspondence, 1.5, "1.5"},
+    {"correspondence_plane_strain", Ref::Correspondence, 2.0, "2"},
+    {"correspondence_plane_strain", Ref::Correspondence, 3.0, "3"},
+    {"correspondence_plane_strain", Ref::Correspondence, 3.5, "3.5"},
+    {"correspondence_plane_strain", Ref::Correspondence, 3.6056, "sqrt13"},
+    {"bond_based_constant_2d", Ref::BondBased, 1.5, "1.5"},
+    {"bond_based_constant_2d", Ref::BondBased, 2.0, "2"},
+    {"bond_based_constant_2d", Ref::BondBased, 3.0, "3"},
+    {"bond_based_constant_2d", Ref::BondBased, 3.5, "3.5"},
+    {"bond_based_constant_2d", Ref::BondBased, 3.6056, "sqrt13"},
+    {"silling_3d", Ref::Silling, 3.0, "3"},
+    {"correspondence_3d", Ref::Correspondence, 3.0, "3"},
+    {"bond_based_constant_3d", Ref::BondBased, 3.0, "3"},
+};
+
+// Names: <kind>/<law>/<delta/h>; the cases of one family run back to back, so the
+// ratios of a row come from measurements minutes apart at most.
+void register_all() {
+  for (const Case& c : kCases) {
+    const std::string suffix = std::string("/") + c.law + "/" + c.ratio_label;
+    const bool three_d = pd::abi::find_law(c.law) && pd::abi::find_law(c.law)->dim == 3;
+    benchmark::RegisterBenchmark(("generated_residual" + suffix).c_str(), BM_generated_residual, c);
+    benchmark::RegisterBenchmark(("generated_tangent_factors" + suffix).c_str(), BM_generated_tangent_factors, c);
+    benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c);
+    benchmark::RegisterBenchmark(("generated_jvp" + suffix).c_str(), BM_generated_jvp, c);
+    if (const auto* law = pd::abi::find_law(c.law); law && state_inner_form(law->dim, law->n_states))
+      benchmark::RegisterBenchmark(("prototype_tangent_dense" + suffix).c_str(), BM_prototype_tangent_dense, c);
+    benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<HeapDer>, c);
+    if (three_d)
+      benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
+                                   BM_forward_ad_tangent_dense<FixedDer<kMax3d>>, c);
+    else
+      benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
+                                   BM_forward_ad_tangent_dense<FixedDer<kMax2d>>, c);
+    benchmark::RegisterBenchmark(("central_fd_tangent_dense" + suffix).c_str(), BM_central_fd_tangent_dense, c);
+  }
+}
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

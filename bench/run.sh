@@ -1,15 +1,50 @@
 #!/usr/bin/env bash
 # Runs the benchmark suite in one go and writes docs/performance.md from the medians.
-# Usage: bench/run.sh [--quick]   (--quick: 1 repetition, short minimum time)
+# Usage: bench/run.sh [--quick] [--profile]
+#   (default)  kernels: 7 randomly interleaved repetitions of >= 0.1 s each; assembly:
+#              100^2, 200^2, 400^2, 1000^2 grids, 5 repetitions of >= 0.2 s (about 7 min here)
+#   --quick    1 repetition of >= 0.02 s, grids 100^2 and 200^2 only (under a minute)
+#   --profile  first re-run bench/profile.sh (perf + cachegrind; rewrites bench/profile.md)
+# Results (JSON) go to build/bench/; docs/performance.md embeds bench/profile.md (measured) and
+# bench/profile_notes.md (conclusions, by hand).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-reps=7 min_time=0.2
-if [ "${1:-}" = "--quick" ]; then reps=1 min_time=0.02; fi
+quick=0 profile=0
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    --profile) profile=1 ;;
+    *) echo "usage: bench/run.sh [--quick] [--profile]" >&2; exit 2 ;;
+  esac
+done
+if [ "$quick" = 1 ]; then
+  kreps=1 kmin=0.02 areps=1 amin=0.02 grids="100 200"
+else
+  kreps=7 kmin=0.1 areps=5 amin=0.2 grids="100 200 400 1000"
+fi
+start=$(date +%s)
 ./scripts/build.sh --target kernel_bench --target assembly_bench
-mkdir -p build/bench
-build/bin/kernel_bench --benchmark_repetitions="$reps" --benchmark_min_time="$min_time" \
-  --benchmark_out=build/bench/kernels.json --benchmark_out_format=json >/dev/null
-build/bin/assembly_bench --benchmark_repetitions="$reps" --benchmark_min_time="$min_time" \
-  --benchmark_out=build/bench/assembly.json --benchmark_out_format=json >/dev/null
-python3 bench/report.py build/bench/kernels.json build/bench/assembly.json "bench/run.sh $*" > docs/performance.md
-echo "wrote docs/performance.md"
+if [ "$profile" = 1 ]; then bench/profile.sh; fi
+out=build/bench
+mkdir -p "$out"
+rm -f "$out"/kernels.json "$out"/assembly_*.json
+echo "kernel_bench ..."
+build/bin/kernel_bench --benchmark_repetitions="$kreps" --benchmark_min_time="$kmin" \
+  --benchmark_enable_random_interleaving=true \
+  --benchmark_out="$out/kernels.json" --benchmark_out_format=json >/dev/null
+# One grid per process, so each peak-memory reading belongs to one grid alone.
+assembly=()
+for n in $grids; do
+  for r in 15 35; do
+    echo "assembly_bench ${n}^2, delta/h = ${r:0:1}.${r:1} ..."
+    build/bin/assembly_bench --grids="$n" --benchmark_filter="/$n/$r/" \
+      --benchmark_repetitions="$areps" --benchmark_min_time="$amin" \
+      --benchmark_out="$out/assembly_${n}_${r}.json" --benchmark_out_format=json >/dev/null
+    assembly+=("$out/assembly_${n}_${r}.json")
+  done
+done
+command="bench/run.sh${*:+ $*}"
+python3 bench/report.py --command "$command" --kernels "$out/kernels.json" --assembly "${assembly[@]}" \
+  --profile bench/profile.md bench/profile_notes.md --build build --seconds "$(( $(date +%s) - start ))" > docs/performance.md.tmp
+mv docs/performance.md.tmp docs/performance.md
+echo "wrote docs/performance.md ($(( $(date +%s) - start )) s)"

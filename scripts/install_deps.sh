@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project builds with, if any is missing.
+# Usage: scripts/install_deps.sh [--profile]   (--profile: also perf and valgrind, for bench/profile.sh)
 set -euo pipefail
 packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev libfmt-dev
           libyaml-cpp-dev libgtest-dev libbenchmark-dev libomp-dev python3
           nlohmann-json3-dev python3-matplotlib clang libclang-rt-14-dev
           libopenblas0-pthread)  # OpenBLAS: CHOLMOD's supernodal factorisation is 4x faster than with reference BLAS
+if [ "${1:-}" = "--profile" ]; then packages+=(linux-perf valgrind); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
