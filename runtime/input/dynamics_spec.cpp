@@ -73,6 +73,8 @@ DynamicsSpec read_dynamics(const YamlAt& at, int dim) {
   if (d.output_every == 0) d.output_every = std::max(1, d.steps / 100);
   d.progress_seconds = m.number("progress_seconds", 2.0);
   if (d.progress_seconds < 0) m.get("progress_seconds").fail("progress_seconds must not be negative");
+  d.threads = m.integer("threads", 0);
+  if (d.threads < 0) m.get("threads").fail("threads must not be negative (0: OpenMP's default)");
   d.restart = m.text("restart", "");
   if (m.has("initial")) {
     const YamlAt list = m.get("initial");

@@ -33,6 +33,7 @@ struct DynamicsSpec {
   int snapshot_every = 0;           // .vtu snapshot every N steps, with a .pvd collection (0: none)
   int checkpoint_every = 0;         // checkpoint every N steps (0: none)
   double progress_seconds = 2;      // progress line at most this often (0: none)
+  int threads = 0;                  // OpenMP threads of the force loop (0: OpenMP's default)
   std::string restart;              // a checkpoint to resume from ("" : start at t = 0)
   std::vector<InitialCondition> initial;
 };

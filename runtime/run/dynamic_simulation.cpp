@@ -66,6 +66,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   AssemblerOptions options;
   options.intact = summary_.broken_bonds == 0 && !scene_.damage;
   options.matrix = false;  // the explicit loop needs forces only
+  options.threads = dyn.threads;
   assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, params, options);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,

@@ -23,7 +23,8 @@ std::string RunSummary::json() const {
     nlohmann::ordered_json dj{{"method", d.method}, {"first_step", d.first_step}, {"last_step", d.last_step},
                               {"time", d.time}, {"dt", d.dt}};
     if (d.method == "explicit") dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
-    dj["damping"] = d.damping;
+    if (d.method == "relaxation") dj["last_adaptive_coefficient"] = d.damping;
+    else if (d.damping > 0) dj["viscous_damping"] = d.damping;
     nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
     if (d.strain_available) energy["strain"] = d.strain;
     else energy["strain"] = "unavailable (the law has no energy kernel)";

@@ -32,6 +32,7 @@ dynamics:
   steps: 10000
   safety_factor: 0.8
   output_every: 10
+  threads: 1
   initial:
     - region: {all: true}
       displacement: [0.001, 0.0005]
