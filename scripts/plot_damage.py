@@ -23,7 +23,7 @@ span = max(x) - min(x)
 umax = max(max(abs(v) for v in ux), max(abs(v) for v in uy)) or 1.0
 scale = min(0.02 * span / umax, 20.0)
 fig, ax = plt.subplots(figsize=(4.2, 4.0), dpi=90)
-sc = ax.scatter([a + scale * b for a, b in zip(x, ux)], [a + scale * b for a, b in zip(y, uy)], c=d, s=2.0,
+sc = ax.scatter([a + scale * b for a, b in zip(x, ux)], [a + scale * b for a, b in zip(y, uy)], c=d, s=3.0 if len(x) < 5000 else 1.2,
                 cmap="inferno_r", vmin=0, vmax=0.5, linewidths=0)
 fig.colorbar(sc, ax=ax, label="damage", shrink=0.8)
 ax.set_aspect("equal")
