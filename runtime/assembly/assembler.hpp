@@ -59,6 +59,10 @@ class FamilyAssembler {
   // diag = diagonal of K(u), from the tangent factors in O(bonds): the Jacobi
   // preconditioner of the matrix-free path.
   void stiffness_diagonal(const double* u, double* diag) const;
+  // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
+  // (and this throws std::logic_error) when the law has none.
+  bool has_energy() const { return variant_.energy != nullptr; }
+  double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
   std::vector<double> particle_outputs(const double* u) const;
 

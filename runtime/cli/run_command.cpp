@@ -1,5 +1,6 @@
 // `pd run SCENE.yaml [--out DIR]`: solve a scene and write its results.
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <fmt/core.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
+#include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 
 namespace pd::cli {
@@ -23,8 +25,11 @@ extern "C" void on_interrupt(int sig) {
 
 namespace {
 const char* kRunUsage =
-    "usage: pd run SCENE.yaml [--out DIR]\n"
+    "usage: pd run SCENE.yaml [--out DIR] [--restart CHECKPOINT]\n"
     "  Solves the scene and writes DIR/result.vtu (ParaView), DIR/result.csv and DIR/summary.json;\n"
+    "  a scene with a dynamics section runs explicit dynamics or dynamic relaxation and also writes\n"
+    "  DIR/energies.csv, DIR/animation.pvd (snapshots) and DIR/checkpoint.bin as the scene asks;\n"
+    "  --restart resumes such a run from a checkpoint.\n"
     "  DIR defaults to the scene's output.directory. The scene format: docs/scene_format.md.\n"
     "  Exit codes: 0 solved, 1 solve failed, 2 bad input (the message names file, line and key).\n";
 }  // namespace
@@ -35,10 +40,12 @@ int run_command(const Args& args) {
       fmt::print("{}", kRunUsage);
       return 0;
     }
-  std::string scene_path, out_dir;
+  std::string scene_path, out_dir, restart;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--out" && i + 1 < args.size())
       out_dir = args[++i];
+    else if (args[i] == "--restart" && i + 1 < args.size())
+      restart = args[++i];
     else if (scene_path.empty() && args[i].rfind("--", 0) != 0)
       scene_path = args[i];
     else {
@@ -60,10 +67,23 @@ int run_command(const Args& args) {
     return 2;
   }
   if (!out_dir.empty()) scene.output.directory = out_dir;
+  if (!restart.empty()) {
+    if (!scene.dynamics) {
+      fmt::print(stderr, "pd run: --restart needs a scene with a dynamics section\n");
+      return 2;
+    }
+    scene.dynamics->restart = restart;
+  }
   RunSummary s;
   try {
-    Simulation sim(std::move(scene), [](const std::string& line) { fmt::print("{}\n", line); });
-    s = sim.run();
+    const auto log = [](const std::string& line) { fmt::print("{}\n", line); std::fflush(stdout); };
+    if (scene.dynamics) {
+      DynamicSimulation sim(std::move(scene), log);
+      s = sim.run();
+    } else {
+      Simulation sim(std::move(scene), log);
+      s = sim.run();
+    }
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
     fmt::print(stderr, "pd run: {}\n", e.what());
     return 2;

@@ -67,6 +67,8 @@ Shape read_shape(const YamlAt& at, int dim, bool inclusion) {
   return s;
 }
 
+}  // namespace
+
 Region read_region(const YamlAt& at, int dim) {
   MapReader m(at);
   Region r;
@@ -96,6 +98,8 @@ Region read_region(const YamlAt& at, int dim) {
   m.finish();
   return r;
 }
+
+namespace {
 
 // The parameters of each analytic solution (runtime/fields/analytic.hpp), checked here
 // so that a scene with a misspelt or missing parameter fails at read time with its
@@ -200,9 +204,10 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
     bc.components = read_components(m.get("fixed"), dim);
     ++kinds;
   }
-  if (m.has("displacement")) {
-    bc.kind = BoundaryCondition::Kind::Displacement;
-    const YamlAt d = m.get("displacement");
+  for (const char* key : {"displacement", "velocity"}) {
+    if (!m.has(key)) continue;
+    bc.kind = std::string(key) == "displacement" ? BoundaryCondition::Kind::Displacement : BoundaryCondition::Kind::Velocity;
+    const YamlAt d = m.get(key);
     MapReader dm(d);
     for (const char* c : {"x", "y", "z"}) {
       if (!dm.has(c)) continue;
@@ -227,7 +232,14 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
     bc.values = to_point(m.get(key), dim);
     ++kinds;
   }
-  if (kinds != 1) at.fail("give exactly one of fixed, displacement, field, traction, body_force");
+  if (kinds != 1) at.fail("give exactly one of fixed, displacement, velocity, field, traction, body_force");
+  if (m.has("time_function")) {
+    const YamlAt tf = m.get("time_function");
+    if (bc.kind == BoundaryCondition::Kind::Fixed || bc.kind == BoundaryCondition::Kind::Field)
+      tf.fail("time functions scale displacement, velocity, traction and body_force conditions");
+    bc.time = read_time_function(tf);
+    bc.time_where = tf.location();
+  }
   if (bc.kind == BoundaryCondition::Kind::Traction) {
     bc.face_measure = m.number("face_measure", 0.0);
     if (bc.region.kind != Region::Kind::Side && bc.face_measure <= 0)
@@ -398,6 +410,26 @@ Scene read(const YAML::Node& root, const std::string& file) {
     }
   }
   if (m.has("reference")) s.reference = read_field(m.get("reference"));
+  if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
+  if (m.has("damage")) {
+    s.damage = read_damage(m.get("damage"));
+    // Breaking bonds between the load steps of an implicit solve is not implemented yet
+    // (issue 8): say so rather than ignore the section.
+    if (!s.dynamics) m.get("damage").fail("damage needs a dynamics section (explicit or relaxation); bond breaking between implicit load steps is not implemented yet");
+  }
+  if (!s.dynamics)
+    for (const BoundaryCondition& bc : s.boundary) {
+      if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");
+      if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": velocity conditions need a dynamics section");
+    }
+  if (s.dynamics && s.dynamics->method == "relaxation")
+    for (const BoundaryCondition& bc : s.boundary) {
+      if (bc.time) throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
+      if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
+    }
+  if (s.dynamics && s.dynamics->method == "relaxation")
+    for (const InitialCondition& ic : s.dynamics->initial)
+      if (ic.velocity != Point{}) throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");
   m.finish();
   return s;
 }

@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "input/dynamics_spec.hpp"
+#include "input/region.hpp"
+#include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
 
 namespace pd {
-
-using Point = std::array<double, 3>;
 
 struct Shape {  // a hole or an inclusion
   enum class Kind { Circle, Polygon, Box } kind = Kind::Circle;
@@ -33,16 +34,6 @@ struct MaterialSpec {
   std::map<std::string, double> parameters;  // extra law parameters by name
 };
 
-// Where a boundary condition or probe applies.
-struct Region {
-  enum class Kind { All, Side, Box, Outside } kind = Kind::All;
-  std::string side;          // left right bottom top back front
-  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row)
-  Point min{}, max{};        // Box / Outside (the complement of the box)
-  // True when a particle at x belongs (domain bounds lo/hi, spacing h).
-  bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;
-};
-
 // An analytic solution and its parameters (see runtime/fields/analytic.hpp).
 struct FieldSpec {
   std::string solution;  // uniaxial biaxial shear westergaard
@@ -50,13 +41,18 @@ struct FieldSpec {
 };
 
 struct BoundaryCondition {
-  enum class Kind { Fixed, Displacement, Field, Traction, BodyForce } kind = Kind::Fixed;
+  // Velocity: a prescribed velocity (dynamic scenes only).
+  enum class Kind { Fixed, Displacement, Field, Traction, BodyForce, Velocity } kind = Kind::Fixed;
   Region region;
-  std::array<bool, 3> components{};  // which components are constrained (Fixed, Displacement, Field)
-  Point values{};                    // prescribed displacement, traction or body force
+  std::array<bool, 3> components{};  // which components are constrained (Fixed, Displacement, Field, Velocity)
+  Point values{};                    // prescribed displacement, velocity, traction or body force
   FieldSpec field;
   double face_measure = 0;           // Traction: length/area the traction acts on (0: the region's domain face)
   std::string where;                 // "file:line: boundary[i]", for messages found after reading
+  // Dynamic scenes: the values are scaled by f(t) (a velocity's displacement is the
+  // integral). Without one: constant 1, i.e. applied at t = 0.
+  std::optional<TimeFunction> time;
+  std::string time_where;  // "file:line: boundary[i].time_function"
 };
 
 struct Crack {
@@ -115,10 +111,18 @@ struct Scene {
   std::vector<Probe> probes;
   // Analytic field for the global error of paper 000 eq. (48), when given.
   std::optional<FieldSpec> reference;
+  // Present only when the scene calls for them: `pd run` then uses the dynamic driver
+  // (dynamics) and bonds break at a critical stretch (damage).
+  std::optional<DynamicsSpec> dynamics;
+  std::optional<DamageSpec> damage;
 
   double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
   int material_index(const std::string& name) const;
 };
+
+struct YamlAt;
+// A region map (side / box / outside / all); used by the section readers.
+Region read_region(const YamlAt& at, int dim);
 
 // Reads and validates a scene file; throws SceneError (file:line: key: message).
 Scene read_scene(const std::string& path);

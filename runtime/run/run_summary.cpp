@@ -18,16 +18,36 @@ std::string RunSummary::json() const {
   j["bonds"] = bonds;
   j["broken_bonds"] = broken_bonds;
   j["unknowns"] = newton.unknowns;
-  j["nonzeros"] = newton.nonzeros;
-  j["linear_solver"] = {{"method", newton.linear_solver}, {"choice", newton.linear_choice}};
-  nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
-  for (const auto& it : newton.history)
-    iterations.push_back({{"load_step", it.step}, {"load", it.load}, {"iteration", it.iteration}, {"residual", it.residual},
-                          {"increment", it.increment}, {"line_search", it.step_length},
-                          {"linear_iterations", it.linear_iterations}});
-  j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
-  j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
-                  {"solve", solve_seconds}, {"output", output_seconds}};
+  if (dynamics) {
+    const DynamicsReport& d = *dynamics;
+    nlohmann::ordered_json dj{{"method", d.method}, {"first_step", d.first_step}, {"last_step", d.last_step},
+                              {"time", d.time}, {"dt", d.dt}};
+    if (d.method == "explicit") dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
+    if (d.method == "relaxation") dj["last_adaptive_coefficient"] = d.damping;
+    else if (d.damping > 0) dj["viscous_damping"] = d.damping;
+    nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
+    if (d.strain_available) energy["strain"] = d.strain;
+    else energy["strain"] = "unavailable (the law has no energy kernel)";
+    if (d.method == "explicit") dj["energy"] = energy;
+    if (d.method == "relaxation") dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
+    dj["bonds_broken"] = d.bonds_broken;
+    if (!d.restarted_from.empty()) dj["restarted_from"] = d.restarted_from;
+    dj["checkpoints"] = d.checkpoints;
+    dj["snapshots"] = d.snapshots;
+    j["dynamics"] = dj;
+    j["seconds"] = {{"setup", setup_seconds}, {"solve", solve_seconds}, {"output", output_seconds}};
+  } else {
+    j["nonzeros"] = newton.nonzeros;
+    j["linear_solver"] = {{"method", newton.linear_solver}, {"choice", newton.linear_choice}};
+    nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
+    for (const auto& it : newton.history)
+      iterations.push_back({{"load_step", it.step}, {"load", it.load}, {"iteration", it.iteration}, {"residual", it.residual},
+                            {"increment", it.increment}, {"line_search", it.step_length},
+                            {"linear_iterations", it.linear_iterations}});
+    j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
+    j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
+                    {"solve", solve_seconds}, {"output", output_seconds}};
+  }
   nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
   for (const auto& p : probes) {
     nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
@@ -44,13 +64,30 @@ std::string RunSummary::text() const {
   std::string s = fmt::format("particles: {}\nbonds: {}\nbroken bonds: {}\nkernel variant: {}\neffects:\n", particles,
                               bonds, broken_bonds, variant);
   for (const auto& e : effects) s += "  - " + e + "\n";
-  s += fmt::format("unknowns: {}\nnonzeros: {}\nlinear solver: {} ({})\nnewton iterations: {}\n", newton.unknowns,
-                   newton.nonzeros, newton.linear_solver, newton.linear_choice, newton.iterations());
-  for (const auto& it : newton.history)
-    s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
-                     it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
-  s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
-                   setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
+  if (dynamics) {
+    const DynamicsReport& d = *dynamics;
+    s += fmt::format("unknowns: {}\n{}: steps {}..{}, t = {:.6g}, dt = {:.6g}{}\n", newton.unknowns,
+                     d.method == "explicit" ? "explicit dynamics (velocity Verlet)" : "adaptive dynamic relaxation",
+                     d.first_step, d.last_step, d.time, d.dt,
+                     d.method == "explicit" ? fmt::format(" ({}; stable estimate {:.6g})", d.dt_rule, d.dt_stable) : "");
+    if (d.method == "explicit")
+      s += fmt::format("energy: kinetic {:.9g} strain {} external work {:.9g}\n", d.kinetic,
+                       d.strain_available ? fmt::format("{:.9g}", d.strain) : std::string("unavailable (no energy kernel)"),
+                       d.external_work);
+    else
+      s += fmt::format("relaxation: {} |r|/ref = {:.3e}, last damping c = {:.4g}\n", d.converged ? "converged" : "NOT converged",
+                       d.residual_ratio, d.damping);
+    if (d.bonds_broken > 0) s += fmt::format("bonds broken during the run: {}\n", d.bonds_broken);
+    s += fmt::format("seconds: setup {:.4f} solve {:.4f} output {:.4f}\n", setup_seconds, solve_seconds, output_seconds);
+  } else {
+    s += fmt::format("unknowns: {}\nnonzeros: {}\nlinear solver: {} ({})\nnewton iterations: {}\n", newton.unknowns,
+                     newton.nonzeros, newton.linear_solver, newton.linear_choice, newton.iterations());
+    for (const auto& it : newton.history)
+      s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
+                       it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
+    s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
+                     setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
+  }
   if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
   s += "probes:\n";
   for (const auto& p : probes)

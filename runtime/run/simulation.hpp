@@ -4,11 +4,13 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "assembly/assembler.hpp"
 #include "input/scene.hpp"
+#include "run/dynamics_report.hpp"
 #include "run/effects.hpp"
 #include "solve/newton.hpp"
 
@@ -30,7 +32,8 @@ struct RunSummary {
   int broken_bonds = 0;
   std::string variant;
   std::vector<std::string> effects;
-  NewtonResult newton;
+  NewtonResult newton;                    // static runs
+  std::optional<DynamicsReport> dynamics;  // dynamic and relaxation runs only
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2

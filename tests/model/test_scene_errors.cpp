@@ -195,7 +195,7 @@ TEST(SceneErrors, BoundaryConditionsAndRegions) {
       {"fixed: [x, y]", "fixed: [x, z]", "boundary[0].fixed", "'z' is not a component of a 2D scene"},
       {"fixed: [x, y]", "fixed: {x: 1}", "boundary[0].fixed", "expected a component (x, y, z) or a list of them"},
       {"    fixed: [x, y]", "    fixed: [x, y]\n    colour: red", "boundary[0].colour", "unknown key 'colour'", "    colour"},
-      {"    fixed: [x, y]", "    components: [x]", "boundary[0]", "give exactly one of fixed, displacement, field, traction, body_force",
+      {"    fixed: [x, y]", "    components: [x]", "boundary[0]", "give exactly one of fixed, displacement, velocity, field, traction, body_force",
        "  - region: {side: bottom}"},
       {"    traction: [0, -0.001]", "    traction: [0, -0.001]\n    fixed: [x]", "boundary[1]", "give exactly one of fixed",
        "  - region: {side: top"},

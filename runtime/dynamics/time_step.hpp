@@ -1,0 +1,36 @@
+// The stable time step of explicit central-difference (velocity Verlet) integration.
+//
+// Derivation (paper 003 eq. (20) is garbled in the extracted text; this replaces it).
+// Linearise the nodal forces about u: M a = f(u) ~ f(u0) - K du, K = -df/du the
+// stiffness (docs/conventions.md), M = diag(m) with m_p = rho_p V_p per component. The
+// central-difference scheme is stable for every mode when dt <= 2 / omega_max, with
+// omega_max^2 = lambda_max(M^-1 K). M^-1 K is similar to M^-1/2 K M^-1/2, and the
+// Gershgorin bound on the rows of M^-1 K gives
+//     lambda_max <= max_r (sum_c |K_rc|) / m_r,
+// hence dt_crit = 2 / sqrt(max_r S_r / m_r), S_r = sum_c |K_rc|, a bound that needs only
+// one assembly of K and holds for any law (state-based couplings included). For a
+// bond-based law (K block per bond k n n^T, k = c V_p V_q / |xi|) it reduces to
+// Silling & Askari's dt = sqrt(2 rho / sum_q V_q c / |xi|) per particle. The scene's
+// safety_factor (default 0.8) multiplies it. The same row sums give the fictitious
+// density of adaptive dynamic relaxation (dynamic_relaxation.hpp).
+#pragma once
+
+#include <vector>
+
+#include "assembly/assembler.hpp"
+
+namespace pd {
+
+// S_r = sum_c |K_rc| of the stiffness at u (null: the reference configuration), for
+// every dof. The assembler must have been built with a matrix (AssemblerOptions::matrix).
+std::vector<double> stiffness_row_sums(const FamilyAssembler& assembler, const double* u);
+
+struct StableStep {
+  double dt = 0;      // 2 / sqrt(max_r S_r / m_r)
+  int dof = -1;       // the dof that sets it
+};
+
+// mass: m_r per dof. Throws if no row has stiffness.
+StableStep stable_time_step(const std::vector<double>& row_sums, const std::vector<double>& mass);
+
+}  // namespace pd

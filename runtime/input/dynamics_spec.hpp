@@ -1,0 +1,51 @@
+// The optional `dynamics` and `damage` sections of a scene (docs/scene_format.md):
+// plain data with the documented defaults, read by read_dynamics / read_damage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "input/region.hpp"
+
+namespace pd {
+
+struct YamlAt;
+
+// Initial displacement and velocity of the particles of a region, optionally shaped by
+// a Gaussian profile exp(-((x_axis - center) / width)^2 / 2) along one axis.
+struct InitialCondition {
+  Region region;
+  Point displacement{}, velocity{};
+  bool gaussian = false;
+  int axis = 0;
+  double center = 0, width = 0;
+  std::string where;  // "file:line: dynamics.initial[i]"
+};
+
+struct DynamicsSpec {
+  std::string method = "explicit";  // explicit (velocity Verlet) | relaxation (adaptive dynamic relaxation)
+  int steps = 0;                    // explicit: time steps (required); relaxation: the iteration limit
+  double dt = 0;                    // explicit: a fixed step; 0: the estimate times safety_factor
+  double safety_factor = 0.8;       // fraction of the estimated stable step
+  double damping = 0;               // explicit: mass-proportional viscous damping c (a = f/m - c v)
+  double tolerance = 1e-8;          // relaxation: |r_free| <= tolerance * reference force
+  int output_every = 0;             // time-series row every N steps (0: steps / 100, at least 1)
+  int snapshot_every = 0;           // .vtu snapshot every N steps, with a .pvd collection (0: none)
+  int checkpoint_every = 0;         // checkpoint every N steps (0: none)
+  double progress_seconds = 2;      // progress line at most this often (0: none)
+  int threads = 0;                  // OpenMP threads of the force loop (0: OpenMP's default)
+  std::string restart;              // a checkpoint to resume from ("" : start at t = 0)
+  std::vector<InitialCondition> initial;
+};
+
+struct DamageSpec {
+  double critical_stretch = 0;  // given directly, or ...
+  double fracture_energy = 0;   // ... G0, converted with the PMB formula of the dimension
+  bool tension_only = true;     // bonds break in tension only (s > s0); false: |s| > s0
+  std::string where;            // "file:line: damage"
+};
+
+DynamicsSpec read_dynamics(const YamlAt& at, int dim);
+DamageSpec read_damage(const YamlAt& at);
+
+}  // namespace pd

@@ -1,0 +1,21 @@
+// Points and regions of a scene: where a boundary condition, probe or initial condition applies.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace pd {
+
+using Point = std::array<double, 3>;
+
+// Where a boundary condition or probe applies.
+struct Region {
+  enum class Kind { All, Side, Box, Outside } kind = Kind::All;
+  std::string side;          // left right bottom top back front
+  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row)
+  Point min{}, max{};        // Box / Outside (the complement of the box)
+  // True when a particle at x belongs (domain bounds lo/hi, spacing h).
+  bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;
+};
+
+}  // namespace pd

@@ -1,0 +1,102 @@
+// A dynamic run (scene with a `dynamics` section): explicit dynamics with velocity
+// Verlet, or adaptive dynamic relaxation to the static answer; optional critical-stretch
+// damage; time-dependent loads; time series, .vtu snapshots with a .pvd collection,
+// checkpoints and restarts. `pd run` uses it instead of Simulation when the scene has
+// a `dynamics` section. What the scene does not call for is not built: no damage object
+// or damaged kernels without `damage` or cracks, no snapshot or checkpoint files unless
+// asked, no mass array in relaxation (its fictitious density replaces it).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "damage/critical_stretch.hpp"
+#include "output/particle_fields.hpp"
+#include "input/scene.hpp"
+#include "run/effects.hpp"
+#include "run/simulation.hpp"
+
+namespace pd {
+
+// One row of the time series (energies.csv).
+struct SeriesRow {
+  int step = 0;
+  double time = 0, kinetic = 0, strain = 0, external_work = 0;
+  long long broken_bonds = 0;
+  double residual_ratio = 0;  // relaxation only
+  std::vector<double> probes;
+};
+
+class DynamicSimulation {
+ public:
+  using Log = std::function<void(const std::string&)>;
+  DynamicSimulation(Scene scene, Log log);
+  ~DynamicSimulation();
+  // Runs from t = 0, or from scene.dynamics->restart when set, to the scene's last step
+  // (or `stop_after` > 0: ends after that step, as an interrupted run would, after
+  // writing the checkpoints due). Throws on failure.
+  RunSummary run(bool write_outputs = true, int stop_after = 0);
+
+  const Particles& particles() const { return particles_; }
+  const Bonds& bonds() const { return bonds_; }
+  const std::vector<double>& displacement() const { return u_; }
+  const std::vector<double>& velocity() const { return v_; }
+  const std::vector<SeriesRow>& series() const { return series_; }
+  const FamilyAssembler& assembler() const { return *assembler_; }
+  const CriticalStretchDamage* damage() const { return damage_.get(); }
+  bool has_masses() const { return !mass_.empty(); }
+  const Scene& scene() const { return scene_; }
+
+ private:
+  struct TimedLoad {
+    std::unique_ptr<Effect> effect;
+    TimeFunction time;
+  };
+  struct Prescribed {
+    int dof;
+    BoundaryCondition::Kind kind;
+    double value;
+    int condition;  // index into scene_.boundary
+  };
+  void setup_constraints();
+  void apply_initial_conditions();
+  double load_scale(const TimedLoad& l, double t) const;
+  void prescribe(double t);
+  // f = f_int(u) + loads(t); g = the external forces for the work (loads on free dofs,
+  // reactions -f_int on constrained ones).
+  void forces(double t, std::vector<double>& f, std::vector<double>& g) const;
+  SeriesRow make_row(int step, double t, double residual_ratio) const;
+  std::string series_csv_header() const;
+  std::string series_csv_row(const SeriesRow& r) const;
+  void restore(const std::string& path, int& step, std::vector<double>& scalars);
+  void save_checkpoint(int step, const std::vector<double>& scalars);
+  void write_snapshot(int step, double t);
+  std::vector<OutputField> output_fields() const;
+  void write_results();
+  std::vector<ProbeResult> evaluate_probes() const;
+  RunSummary run_explicit(bool write, int stop_after);
+  RunSummary run_relaxation(bool write, int stop_after);
+
+  Scene scene_;
+  Log log_;
+  Particles particles_;
+  Bonds bonds_;
+  std::unique_ptr<FamilyAssembler> assembler_;
+  std::unique_ptr<CriticalStretchDamage> damage_;
+  std::vector<TimedLoad> loads_;
+  std::vector<Prescribed> prescribed_;
+  std::vector<int> free_, constrained_;
+  std::vector<std::vector<int>> probe_ids_;
+  std::vector<double> mass_;             // explicit only: rho V per dof
+  std::vector<double> density_;          // relaxation only: the fictitious D_ii
+  std::vector<double> u_, v_;
+  double dt_ = 0, dt_stable_ = 0;
+  std::vector<SeriesRow> series_;
+  std::vector<std::pair<int, double>> snapshots_;  // (step, time)
+  RunSummary summary_;
+};
+
+}  // namespace pd
