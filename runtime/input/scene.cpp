@@ -361,7 +361,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     MapReader sv(m.get("solver"));
     s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab", "matrix_free"});
     s.solver.preconditioner = sv.choice("preconditioner", "auto", {"auto", "ic", "diagonal", "ilut", "short_horizon"});
-    s.solver.preconditioner_ratio = sv.number("preconditioner_ratio", 1.5);
+    s.solver.preconditioner_ratio = sv.number("preconditioner_ratio", 2.0);
     if (!(s.solver.preconditioner_ratio >= 1.0)) sv.get("preconditioner_ratio").fail("must be at least 1 (a horizon of one spacing)");
     if ((s.solver.linear == "cg" && s.solver.preconditioner == "ilut") ||
         (s.solver.linear == "bicgstab" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "diagonal")) ||
@@ -382,6 +382,10 @@ Scene read(const YAML::Node& root, const std::string& file) {
     const double direct_max = sv.number("direct_max_nonzeros", 8e6);
     if (!(direct_max >= 0) || direct_max > 9e18) sv.get("direct_max_nonzeros").fail("must be a non-negative count");
     s.solver.direct_max_nonzeros = static_cast<long long>(direct_max);
+    const double preconditioner_max = sv.number("preconditioner_max_nonzeros", 4e7);
+    if (!(preconditioner_max >= 0) || preconditioner_max > 9e18)
+      sv.get("preconditioner_max_nonzeros").fail("must be a non-negative count");
+    s.solver.preconditioner_max_nonzeros = static_cast<long long>(preconditioner_max);
     if (s.solver.tolerance <= 0 || s.solver.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
     if (s.solver.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
     sv.finish();

@@ -65,7 +65,7 @@ struct SolverSpec {
   // generated tangent-vector product, never forming K)
   std::string linear = "auto";
   std::string preconditioner = "auto";  // cg: ic | diagonal; bicgstab: ilut; matrix_free: short_horizon | diagonal
-  double preconditioner_ratio = 1.5;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
+  double preconditioner_ratio = 2.0;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
   std::string nonlinear = "newton";  // the only nonlinear method so far; the key keeps scenes explicit
   int load_steps = 1;
   double tolerance = 1e-10;     // on the residual norm relative to the load
@@ -74,6 +74,9 @@ struct SolverSpec {
   double krylov_tolerance = 1e-12;
   int krylov_max_iterations = 0;  // 0: 2 x unknowns for assembled Krylov, 20000 matrix-free
   long long direct_max_nonzeros = 8'000'000;  // auto: a direct solver up to this many nonzeros
+  // auto, above direct_max_nonzeros: the short-horizon preconditioner while its stiffness
+  // has at most this many nonzeros (its factor must fit in memory), Jacobi above
+  long long preconditioner_max_nonzeros = 40'000'000;
 };
 
 struct OutputSpec {

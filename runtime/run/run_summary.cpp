@@ -38,7 +38,7 @@ std::string RunSummary::json() const {
     j["seconds"] = {{"setup", setup_seconds}, {"solve", solve_seconds}, {"output", output_seconds}};
   } else {
     j["nonzeros"] = newton.nonzeros;
-    j["linear_solver"] = {{"method", newton.linear_solver}, {"choice", newton.linear_choice}};
+    j["linear_solver"] = {{"path", solver_path}, {"method", newton.linear_solver}, {"choice", newton.linear_choice}};
     nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
     for (const auto& it : newton.history)
       iterations.push_back({{"load_step", it.step}, {"load", it.load}, {"iteration", it.iteration}, {"residual", it.residual},
@@ -80,8 +80,9 @@ std::string RunSummary::text() const {
     if (d.bonds_broken > 0) s += fmt::format("bonds broken during the run: {}\n", d.bonds_broken);
     s += fmt::format("seconds: setup {:.4f} solve {:.4f} output {:.4f}\n", setup_seconds, solve_seconds, output_seconds);
   } else {
-    s += fmt::format("unknowns: {}\nnonzeros: {}\nlinear solver: {} ({})\nnewton iterations: {}\n", newton.unknowns,
-                     newton.nonzeros, newton.linear_solver, newton.linear_choice, newton.iterations());
+    s += fmt::format("unknowns: {}\nnonzeros: {}\nsolver path: {}\nlinear solver: {} ({})\nnewton iterations: {}\n",
+                     newton.unknowns, newton.nonzeros, solver_path, newton.linear_solver, newton.linear_choice,
+                     newton.iterations());
     for (const auto& it : newton.history)
       s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
                        it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");

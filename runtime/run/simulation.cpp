@@ -1,6 +1,8 @@
 // The static run driver.
 #include "run/simulation.hpp"
 
+#include "run/solver_path.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include "output/vtu_writer.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
+#include "run/solver_path.hpp"
 
 namespace pd {
 
@@ -48,6 +51,12 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
+  const SolverPath path = choose_solver_path(scene_.solver, particles_.size(),
+                                             2.0 * static_cast<double>(summary_.bonds) / particles_.size(),
+                                             particles_.dim, scene_.delta() / scene_.h);
+  scene_.solver.linear = path.linear;
+  scene_.solver.preconditioner = path.preconditioner;
+  summary_.solver_path = path.reason;
   AssemblerOptions options;
   options.intact = summary_.broken_bonds == 0;
   options.matrix = scene_.solver.linear != "matrix_free";
@@ -74,6 +83,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
                    summary_.particles, summary_.bonds, scene_.delta(), scene_.delta() / scene_.h, summary_.setup_seconds));
   for (const auto& e : summary_.effects) log_("  effect: " + e);
+  log_("  solver path: " + summary_.solver_path);
 }
 
 std::string Simulation::matrix_free_preconditioner() const {

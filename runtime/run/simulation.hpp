@@ -32,6 +32,7 @@ struct RunSummary {
   int broken_bonds = 0;
   std::string variant;
   std::vector<std::string> effects;
+  std::string solver_path;  // the linear-solver path and why (run/solver_path.hpp)
   NewtonResult newton;                    // static runs
   std::optional<DynamicsReport> dynamics;  // dynamic and relaxation runs only
   std::vector<ProbeResult> probes;

@@ -1,0 +1,45 @@
+#include "run/solver_path.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace pd {
+
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim) {
+  const double rows_per_particle = std::pow(2.0, dim) * mean_family_size + 1.0;
+  return static_cast<std::int64_t>(std::llround(particles * rows_per_particle * dim * dim));
+}
+
+SolverPath choose_solver_path(const SolverSpec& solver, int particles, double mean_family_size, int dim,
+                              double delta_over_h) {
+  if (solver.linear != "auto") return {solver.linear, solver.preconditioner, "linear: " + solver.linear + " (scene)"};
+  if (solver.preconditioner != "auto")  // ic, ilut or diagonal name an assembled Krylov method
+    return {"auto", solver.preconditioner, "assembled tangent (the scene's preconditioner " + solver.preconditioner + ")"};
+  const std::int64_t k_estimate = estimated_tangent_nonzeros(particles, mean_family_size, dim);
+  if (k_estimate <= solver.direct_max_nonzeros)
+    return {"auto", solver.preconditioner,
+            fmt::format("assembled tangent: about {:.3g} nonzeros, within direct_max_nonzeros {:.3g}",
+                        static_cast<double>(k_estimate), static_cast<double>(solver.direct_max_nonzeros))};
+  // Families shrink with the horizon as (ratio / (delta/h))^dim on a uniform cloud.
+  const double short_ratio = std::min(delta_over_h, solver.preconditioner_ratio);
+  const std::int64_t p_estimate =
+      estimated_tangent_nonzeros(particles, mean_family_size * std::pow(short_ratio / delta_over_h, dim), dim);
+  const std::string over = fmt::format("assembled tangent would have about {:.3g} nonzeros (> direct_max_nonzeros {:.3g})",
+                                       static_cast<double>(k_estimate), static_cast<double>(solver.direct_max_nonzeros));
+  if (short_ratio < delta_over_h && p_estimate <= solver.preconditioner_max_nonzeros)
+    return {"matrix_free", "short_horizon",
+            fmt::format("{} -> matrix-free Newton-Krylov preconditioned by the delta/h = {:.3g} stiffness (about {:.3g} "
+                        "nonzeros)",
+                        over, short_ratio, static_cast<double>(p_estimate))};
+  return {"matrix_free", "diagonal",
+          fmt::format("{} -> matrix-free Newton-Krylov with Jacobi ({})", over,
+                      short_ratio >= delta_over_h
+                          ? "the horizon is already as short as the preconditioner's"
+                          : fmt::format("the short-horizon stiffness, about {:.3g} nonzeros, exceeds "
+                                        "preconditioner_max_nonzeros {:.3g}",
+                                        static_cast<double>(p_estimate),
+                                        static_cast<double>(solver.preconditioner_max_nonzeros)))};
+}
+
+}  // namespace pd

@@ -1,0 +1,73 @@
+// The `linear: auto` rule for large problems: the nonzero estimate it decides on is
+// checked against the real pattern, and each branch of the rule is taken when it should.
+#include <gtest/gtest.h>
+
+#include "assembly/sparsity_pattern.hpp"
+#include "discretize/discretization.hpp"
+#include "run/solver_path.hpp"
+
+namespace {
+pd::Scene square(double ratio, int count) {
+  pd::Scene s;
+  s.dim = 2;
+  s.lo = {0, 0, 0};
+  s.hi = {1, 1, 0};
+  s.h = 1.0 / count;
+  s.horizon_ratio = ratio;
+  s.materials.resize(1);
+  return s;
+}
+}  // namespace
+
+// The estimate must be close enough to decide on: within 35% of the real count (it
+// ignores the truncated families at the edges, so it errs high on small grids).
+TEST(SolverPath, NonzeroEstimateIsCloseToTheRealPattern) {
+  for (double ratio : {1.5, 2.0, 3.0, 3.5}) {
+    const pd::Scene s = square(ratio, 60);
+    const pd::Particles p = pd::discretize(s);
+    const pd::Bonds b = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
+    const double mean_family = static_cast<double>(b.bond_count()) / p.size();
+    const auto estimate = static_cast<double>(pd::estimated_tangent_nonzeros(p.size(), mean_family, 2));
+    const auto real = static_cast<double>(pd::SparsityPattern(b, 2).nonzeros());
+    EXPECT_GT(estimate, 0.95 * real) << "delta/h " << ratio;
+    EXPECT_LT(estimate, 1.35 * real) << "delta/h " << ratio;
+  }
+}
+
+TEST(SolverPath, AutoKeepsSmallProblemsAssembled) {
+  pd::SolverSpec spec;
+  const pd::SolverPath path = pd::choose_solver_path(spec, 10000, 35.0, 2, 3.5);  // about 5.6e6 nonzeros
+  EXPECT_EQ(path.linear, "auto");
+  EXPECT_NE(path.reason.find("within direct_max_nonzeros"), std::string::npos) << path.reason;
+}
+
+TEST(SolverPath, AutoGoesMatrixFreeWithTheShortHorizonAboveTheDirectLimit) {
+  pd::SolverSpec spec;
+  const pd::SolverPath path = pd::choose_solver_path(spec, 160000, 35.7, 2, 3.5);  // the 400^2 crack
+  EXPECT_EQ(path.linear, "matrix_free");
+  EXPECT_EQ(path.preconditioner, "short_horizon");
+  EXPECT_NE(path.reason.find("delta/h = 2"), std::string::npos) << path.reason;
+}
+
+TEST(SolverPath, AutoFallsBackToJacobiWhenTheShortHorizonCannotHelpOrFit) {
+  pd::SolverSpec spec;
+  // delta/h = 1.5 is already shorter than the preconditioner's horizon.
+  pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 7.9, 2, 1.5);
+  EXPECT_EQ(path.linear, "matrix_free");
+  EXPECT_EQ(path.preconditioner, "diagonal");
+  // 1000^2 at delta/h = 3.5: the delta/h = 2 stiffness alone would exceed the limit.
+  path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5);
+  EXPECT_EQ(path.preconditioner, "diagonal");
+  EXPECT_NE(path.reason.find("preconditioner_max_nonzeros"), std::string::npos) << path.reason;
+}
+
+TEST(SolverPath, ExplicitChoicesAreKept) {
+  pd::SolverSpec spec;
+  spec.linear = "cholmod";
+  EXPECT_EQ(pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5).linear, "cholmod");
+  spec.linear = "auto";
+  spec.preconditioner = "ic";  // names an assembled Krylov method
+  const pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5);
+  EXPECT_EQ(path.linear, "auto");
+  EXPECT_EQ(path.preconditioner, "ic");
+}
