@@ -246,11 +246,47 @@ def assembly_section(paths):
     return out
 
 
+def solve_section(paths):
+    rows = []
+    for path in paths:
+        if os.path.exists(path):
+            rows += [json.loads(line) for line in open(path) if line.strip()]
+    if not rows:
+        return []
+    out = ["## Solves of the pressurised crack: each linear-solver path\n",
+           "`bench/solve_bench.py` (called by bench/run.sh): scenes/crack.yaml (Silling plane strain, cubic influence, "
+           "Westergaard field on the collar) on n × n grids, one `pd run` process per point. *cholmod*: the assembled "
+           "tangent factorised; *cg+ic*: CG with incomplete Cholesky on the assembled tangent; *matrix-free*: Newton–Krylov "
+           "on the generated tangent–vector product with the factorised δ/h = 2 stiffness (*short horizon*) or Jacobi as "
+           "preconditioner, both with Eisenstat–Walker forcing; *auto*: what `pd run` picks by default (its choice in the "
+           "last column). Peak = the process's maximum resident set (`wait4`). Krylov = iterations summed over the Newton "
+           "steps. A point is not run when the same path's previous grid, scaled linearly in particles, projects past the "
+           "time limit.\n",
+           "| grid | δ/h | path | method | nonzeros | Newton | Krylov | setup s | assembly s | linear s | total s | peak MB | "
+           "kB/particle | field error | auto's choice |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        head = "| %d² | %g | %s |" % (r["grid"], r["ratio"], r["solver"])
+        if "skipped" in r:
+            out.append(head + " not run: %s |||||||||||" % r["skipped"])
+        elif "error" in r:
+            out.append(head + " failed: %s |||||||||||" % r["error"].replace("|", "/"))
+        else:
+            out.append(head + " %s | %.3g | %d | %d | %.3g | %.3g | %.3g | %.3g | %.0f | %.1f | %s | %s |" % (
+                r["method"], r["nonzeros"], r["newton_iterations"], r["krylov_iterations"], r["setup_seconds"],
+                r["assembly_seconds"], r["linear_seconds"], r["wall_seconds"], r["peak_mb"],
+                r["peak_mb"] * 1024 / r["particles"], "%.3e" % r["field_error"] if r.get("field_error") is not None else "–",
+                r["path"].split(" -> ")[-1] if r["solver"] == "auto" else ""))
+    out.append("")
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--command", required=True)
     ap.add_argument("--kernels", required=True)
     ap.add_argument("--assembly", nargs="+", required=True)
+    ap.add_argument("--solves", nargs="*", default=[], help="JSON lines of bench/solve_bench.py")
     ap.add_argument("--profile", nargs="*", default=[], help="markdown files appended as they are")
     ap.add_argument("--build", default="build")
     ap.add_argument("--seconds", type=float, default=0)
@@ -264,6 +300,7 @@ def main():
     out.append("")
     out += kernel_section(a.kernels)
     out += assembly_section(a.assembly)
+    out += solve_section(a.solves)
     for path in a.profile:
         if os.path.exists(path):
             out.append(open(path).read().rstrip() + "\n")

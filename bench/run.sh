@@ -2,8 +2,11 @@
 # Runs the benchmark suite in one go and writes docs/performance.md from the medians.
 # Usage: bench/run.sh [--quick] [--profile]
 #   (default)  kernels: 7 randomly interleaved repetitions of >= 0.1 s each; assembly:
-#              100^2, 200^2, 400^2, 1000^2 grids, 5 repetitions of >= 0.2 s (about 7 min here)
-#   --quick    1 repetition of >= 0.02 s, grids 100^2 and 200^2 only (under a minute)
+#              100^2, 200^2, 400^2, 1000^2 grids, 5 repetitions of >= 0.2 s (about 7 min here);
+#              crack solves (bench/solve_bench.py) with every linear-solver path at delta/h 3.5
+#              on 100^2-1000^2 and 1.5 on 100^2-1000^2, points projected past 15 min skipped
+#              (about an hour here)
+#   --quick    1 repetition of >= 0.02 s, grids 100^2 and 200^2 only, solves on 100^2 (a few minutes)
 #   --profile  first re-run bench/profile.sh (perf + cachegrind; rewrites bench/profile.md)
 # Results (JSON) go to build/bench/; docs/performance.md embeds bench/profile.md (measured) and
 # bench/profile_notes.md (conclusions, by hand).
@@ -18,12 +21,12 @@ for arg in "$@"; do
   esac
 done
 if [ "$quick" = 1 ]; then
-  kreps=1 kmin=0.02 areps=1 amin=0.02 grids="100 200"
+  kreps=1 kmin=0.02 areps=1 amin=0.02 grids="100 200" solve_grids="100"
 else
-  kreps=7 kmin=0.1 areps=5 amin=0.2 grids="100 200 400 1000"
+  kreps=7 kmin=0.1 areps=5 amin=0.2 grids="100 200 400 1000" solve_grids="100 200 400 1000"
 fi
 start=$(date +%s)
-./scripts/build.sh --target kernel_bench --target assembly_bench
+./scripts/build.sh --target kernel_bench --target assembly_bench --target pd
 if [ "$profile" = 1 ]; then bench/profile.sh; fi
 out=build/bench
 mkdir -p "$out"
@@ -43,8 +46,16 @@ for n in $grids; do
     assembly+=("$out/assembly_${n}_${r}.json")
   done
 done
+solves=()
+for r in 3.5 1.5; do
+  echo "crack solves, delta/h = $r ..."
+  python3 bench/solve_bench.py --pd build/bin/pd --scene scenes/crack.yaml --grids $solve_grids --ratio "$r" \
+    --solvers "cholmod" "cg+ic (assembled)" "matrix-free + short horizon" "matrix-free + jacobi" "auto" \
+    --max-seconds 900 --out "$out/solves_${r/./}.jsonl"
+  solves+=("$out/solves_${r/./}.jsonl")
+done
 command="bench/run.sh${*:+ $*}"
-python3 bench/report.py --command "$command" --kernels "$out/kernels.json" --assembly "${assembly[@]}" \
+python3 bench/report.py --command "$command" --kernels "$out/kernels.json" --assembly "${assembly[@]}" --solves "${solves[@]}" \
   --profile bench/profile.md bench/profile_notes.md --build build --seconds "$(( $(date +%s) - start ))" > docs/performance.md.tmp
 mv docs/performance.md.tmp docs/performance.md
 echo "wrote docs/performance.md ($(( $(date +%s) - start )) s)"
