@@ -13,15 +13,15 @@ void bond_based_constant_2d_damaged_moments(const pd::abi::Family& fam, double* 
   static_cast<void>(moments);
 }
 
-// bond_based_constant_2d_damaged_residual: per bond 4 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_2d_damaged_residual: per bond 4 add, 12 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 1.909859317102744 * P_kappa2 * V0;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -32,7 +32,7 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p0 * (b3 - b4) * V * alpha / (p1 * b3 * b4);
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * V * alpha;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -42,16 +42,16 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
   }
 }
 
-// bond_based_constant_2d_damaged_tangent: per bond 9 add, 29 mul, 6 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_2d_damaged_tangent: per bond 9 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 1.909859317102744 * P_kappa2;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
+  const double p2 = p1 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -66,39 +66,37 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b7 = std::sqrt(b6);
     const double b8 = std::sqrt(b3);
     const double b9 = b7 - b8;
-    const double b10 = p2 * b7 * b8;
-    const double b11 = p1 * b9 * V * alpha / b10;
-    const double b12 = b11 * Y_0;
-    const double b13 = b11 * Y_1;
-    const double b14 = p0 * b9;
-    const double b15 = b14 / b10 * alpha;
-    const double b16 = p0 * alpha;
-    const double b17 = p2 * b6 * b8;
-    const double b18 = b16 / b17;
-    const double b19 = b14 * alpha;
-    const double b20 = p2 * b6 * b7 * b8;
-    const double b21 = b19 / b20;
-    const double b22 = b16 * Y_1 / b17 * Y_0 - b19 * Y_1 / b20 * Y_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    if (forces != nullptr) forces[0] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    if (forces != nullptr) forces[1] += b13;
-    factors.direct[k * 4 + 0] = b15 + b18 * b4 - b21 * b4;
-    factors.direct[k * 4 + 1] = b22;
-    factors.direct[k * 4 + 2] = b22;
-    factors.direct[k * 4 + 3] = b15 + b18 * b5 - b21 * b5;
+    const double b10 = 1.0 / b7;
+    const double b11 = 1.0 / b8;
+    const double b12 = p2 * b9 * b10 * b11 * V * alpha;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    const double b15 = p1 * b9;
+    const double b16 = b15 * b10 * b11 * alpha;
+    const double b17 = 1.0 / b6;
+    const double b18 = p1 * b17 * b11 * alpha;
+    const double b19 = b15 * (b17 * b10) * b11 * alpha;
+    const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
+    if (forces != nullptr) forces[0] += b13;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
+    if (forces != nullptr) forces[1] += b14;
+    factors.direct[k * 4 + 0] = b16 + b18 * b4 - b19 * b4;
+    factors.direct[k * 4 + 1] = b20;
+    factors.direct[k * 4 + 2] = b20;
+    factors.direct[k * 4 + 3] = b16 + b18 * b5 - b19 * b5;
   }
 }
 
-// bond_based_constant_2d_damaged_jvp: per bond 11 add, 32 mul, 5 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_2d_damaged_jvp: per bond 11 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 1.909859317102744 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -114,32 +112,31 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b5 = 1e-16 * b2 + b3 + b4;
     const double b6 = std::sqrt(b5);
     const double b7 = std::sqrt(b2);
-    const double b8 = p0 * (b6 - b7);
-    const double b9 = b8 / (p1 * b6 * b7) * alpha;
-    const double b10 = p0 * alpha;
-    const double b11 = p1 * b5 * b7;
-    const double b12 = b10 / b11;
-    const double b13 = b8 * alpha;
-    const double b14 = p1 * b5 * b6 * b7;
-    const double b15 = b13 / b14;
-    const double b16 = b10 * Y_1 / b11 * Y_0 - b13 * Y_1 / b14 * Y_0;
-    const double b17 = V0 * (dY_0 * (b9 + b12 * b3 - b15 * b3) + dY_1 * b16) * V;
-    const double b18 = V0 * (dY_0 * b16 + dY_1 * (b9 + b12 * b4 - b15 * b4)) * V;
-    df[(k + 1) * 2 + 0] = -b17;
-    df[0] += b17;
-    df[(k + 1) * 2 + 1] = -b18;
-    df[1] += b18;
+    const double b8 = p1 * (b6 - b7);
+    const double b9 = 1.0 / b6;
+    const double b10 = 1.0 / b7;
+    const double b11 = b8 * b9 * b10 * alpha;
+    const double b12 = 1.0 / b5;
+    const double b13 = p1 * b12 * b10 * alpha;
+    const double b14 = b8 * (b12 * b9) * b10 * alpha;
+    const double b15 = b13 * Y_1 * Y_0 - b14 * Y_1 * Y_0;
+    const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
+    const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
+    df[(k + 1) * 2 + 0] = -b16;
+    df[0] += b16;
+    df[(k + 1) * 2 + 1] = -b17;
+    df[1] += b17;
   }
 }
 
-// bond_based_constant_2d_damaged_energy: per bond 4 add, 10 mul, 1 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_2d_damaged_energy: per bond 4 add, 10 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_2d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 0.954929658551372 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -151,7 +148,7 @@ double bond_based_constant_2d_damaged_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p0 * b5 * b5 * V / (p1 * b4) * alpha;
+    s_bond_energy += p1 * (b5 * b5) * (1.0 / b4) * V * alpha;
   }
   const double W = s_bond_energy;
   return W;
@@ -163,15 +160,15 @@ void bond_based_constant_2d_intact_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_constant_2d_intact_residual: per bond 4 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_2d_intact_residual: per bond 4 add, 11 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 1.909859317102744 * P_kappa2 * V0;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -181,7 +178,7 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p0 * (b3 - b4) * V / (p1 * b3 * b4);
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * V;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -191,16 +188,16 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
   }
 }
 
-// bond_based_constant_2d_intact_tangent: per bond 9 add, 26 mul, 6 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_2d_intact_tangent: per bond 9 add, 27 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 1.909859317102744 * P_kappa2;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
+  const double p2 = p1 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -214,37 +211,37 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b7 = std::sqrt(b6);
     const double b8 = std::sqrt(b3);
     const double b9 = b7 - b8;
-    const double b10 = p2 * b7 * b8;
-    const double b11 = p1 * b9 * V / b10;
-    const double b12 = b11 * Y_0;
-    const double b13 = b11 * Y_1;
-    const double b14 = p0 / b10 * b9;
-    const double b15 = p2 * b6 * b8;
-    const double b16 = p0 / b15;
-    const double b17 = p0 * b9;
-    const double b18 = p2 * b6 * b7 * b8;
-    const double b19 = b17 / b18;
-    const double b20 = p0 * Y_1 / b15 * Y_0 - b17 * Y_1 / b18 * Y_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    if (forces != nullptr) forces[0] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    if (forces != nullptr) forces[1] += b13;
-    factors.direct[k * 4 + 0] = b14 + b16 * b4 - b19 * b4;
+    const double b10 = 1.0 / b7;
+    const double b11 = 1.0 / b8;
+    const double b12 = p2 * b9 * b10 * b11 * V;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    const double b15 = p1 * b9;
+    const double b16 = b15 * b10 * b11;
+    const double b17 = 1.0 / b6;
+    const double b18 = p1 * b17 * b11;
+    const double b19 = b15 * (b17 * b10) * b11;
+    const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
+    if (forces != nullptr) forces[0] += b13;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
+    if (forces != nullptr) forces[1] += b14;
+    factors.direct[k * 4 + 0] = b16 + b18 * b4 - b19 * b4;
     factors.direct[k * 4 + 1] = b20;
     factors.direct[k * 4 + 2] = b20;
-    factors.direct[k * 4 + 3] = b14 + b16 * b5 - b19 * b5;
+    factors.direct[k * 4 + 3] = b16 + b18 * b5 - b19 * b5;
   }
 }
 
-// bond_based_constant_2d_intact_jvp: per bond 11 add, 30 mul, 5 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_2d_intact_jvp: per bond 11 add, 29 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 1.909859317102744 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -259,16 +256,16 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b5 = 1e-16 * b2 + b3 + b4;
     const double b6 = std::sqrt(b5);
     const double b7 = std::sqrt(b2);
-    const double b8 = b6 - b7;
-    const double b9 = p0 / (p1 * b6 * b7) * b8;
-    const double b10 = p1 * b5 * b7;
-    const double b11 = p0 / b10;
-    const double b12 = p0 * b8;
-    const double b13 = p1 * b5 * b6 * b7;
-    const double b14 = b12 / b13;
-    const double b15 = p0 * Y_1 / b10 * Y_0 - b12 * Y_1 / b13 * Y_0;
-    const double b16 = V0 * (dY_0 * (b9 + b11 * b3 - b14 * b3) + dY_1 * b15) * V;
-    const double b17 = V0 * (dY_0 * b15 + dY_1 * (b9 + b11 * b4 - b14 * b4)) * V;
+    const double b8 = p1 * (b6 - b7);
+    const double b9 = 1.0 / b6;
+    const double b10 = 1.0 / b7;
+    const double b11 = b8 * b9 * b10;
+    const double b12 = 1.0 / b5;
+    const double b13 = p1 * b12 * b10;
+    const double b14 = b8 * (b12 * b9) * b10;
+    const double b15 = b13 * Y_1 * Y_0 - b14 * Y_1 * Y_0;
+    const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
+    const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
     df[(k + 1) * 2 + 0] = -b16;
     df[0] += b16;
     df[(k + 1) * 2 + 1] = -b17;
@@ -276,14 +273,14 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
   }
 }
 
-// bond_based_constant_2d_intact_energy: per bond 4 add, 9 mul, 1 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_2d_intact_energy: per bond 4 add, 9 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 0.954929658551372 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -294,7 +291,7 @@ double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p0 * b5 * b5 / (p1 * b4) * V;
+    s_bond_energy += p1 * (b5 * b5) * (1.0 / b4) * V;
   }
   const double W = s_bond_energy;
   return W;
@@ -315,19 +312,19 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_2d_damaged_moments;
   d.damaged.residual = &bond_based_constant_2d_damaged_residual;
-  d.damaged.residual_ops = {4, 12, 1, 2};
+  d.damaged.residual_ops = {4, 12, 2, 2};
   d.damaged.tangent = &bond_based_constant_2d_damaged_tangent;
-  d.damaged.tangent_ops = {9, 29, 6, 2};
+  d.damaged.tangent_ops = {9, 31, 3, 2};
   d.damaged.jvp = &bond_based_constant_2d_damaged_jvp;
-  d.damaged.jvp_ops = {11, 32, 5, 2};
+  d.damaged.jvp_ops = {11, 32, 3, 2};
   d.damaged.energy = &bond_based_constant_2d_damaged_energy;
   d.intact.moments = &bond_based_constant_2d_intact_moments;
   d.intact.residual = &bond_based_constant_2d_intact_residual;
-  d.intact.residual_ops = {4, 11, 1, 2};
+  d.intact.residual_ops = {4, 11, 2, 2};
   d.intact.tangent = &bond_based_constant_2d_intact_tangent;
-  d.intact.tangent_ops = {9, 26, 6, 2};
+  d.intact.tangent_ops = {9, 27, 3, 2};
   d.intact.jvp = &bond_based_constant_2d_intact_jvp;
-  d.intact.jvp_ops = {11, 30, 5, 2};
+  d.intact.jvp_ops = {11, 29, 3, 2};
   d.intact.energy = &bond_based_constant_2d_intact_energy;
   return d;
 }
@@ -338,15 +335,15 @@ void bond_based_conical_2d_damaged_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_conical_2d_damaged_residual: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_2d_damaged_residual: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 7.639437268410976 * P_kappa2 * V0;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -357,7 +354,7 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p0 * (b3 - b4) * (1.0 - b4 / delta) * V * alpha / (p1 * b3 * b4);
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * V * alpha;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -367,16 +364,16 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
   }
 }
 
-// bond_based_conical_2d_damaged_tangent: per bond 10 add, 32 mul, 7 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_2d_damaged_tangent: per bond 10 add, 35 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 7.639437268410976 * P_kappa2;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
+  const double p2 = p1 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -391,40 +388,38 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b7 = std::sqrt(b6);
     const double b8 = std::sqrt(b3);
     const double b9 = b7 - b8;
-    const double b10 = 1.0 - b8 / delta;
-    const double b11 = p2 * b7 * b8;
-    const double b12 = p1 * b9 * b10 * V * alpha / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = p0 * b9 * b10;
-    const double b16 = b15 / b11 * alpha;
-    const double b17 = p0 * b10 * alpha;
-    const double b18 = p2 * b6 * b8;
-    const double b19 = b17 / b18;
-    const double b20 = b15 * alpha;
-    const double b21 = p2 * b6 * b7 * b8;
-    const double b22 = b20 / b21;
-    const double b23 = b17 * Y_1 / b18 * Y_0 - b20 * Y_1 / b21 * Y_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    factors.direct[k * 4 + 0] = b16 + b19 * b4 - b22 * b4;
-    factors.direct[k * 4 + 1] = b23;
-    factors.direct[k * 4 + 2] = b23;
-    factors.direct[k * 4 + 3] = b16 + b19 * b5 - b22 * b5;
+    const double b10 = 1.0 - p0 * b8;
+    const double b11 = 1.0 / b7;
+    const double b12 = 1.0 / b8;
+    const double b13 = p2 * b9 * b10 * b11 * b12 * V * alpha;
+    const double b14 = b13 * Y_0;
+    const double b15 = b13 * Y_1;
+    const double b16 = p1 * b9 * b10;
+    const double b17 = b16 * b11 * b12 * alpha;
+    const double b18 = 1.0 / b6;
+    const double b19 = p1 * b10 * b18 * b12 * alpha;
+    const double b20 = b16 * (b18 * b11) * b12 * alpha;
+    const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
+    if (forces != nullptr) forces[0] += b14;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b15;
+    if (forces != nullptr) forces[1] += b15;
+    factors.direct[k * 4 + 0] = b17 + b19 * b4 - b20 * b4;
+    factors.direct[k * 4 + 1] = b21;
+    factors.direct[k * 4 + 2] = b21;
+    factors.direct[k * 4 + 3] = b17 + b19 * b5 - b20 * b5;
   }
 }
 
-// bond_based_conical_2d_damaged_jvp: per bond 12 add, 34 mul, 6 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_2d_damaged_jvp: per bond 12 add, 35 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 7.639437268410976 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -440,33 +435,32 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b5 = 1e-16 * b2 + b3 + b4;
     const double b6 = std::sqrt(b5);
     const double b7 = std::sqrt(b2);
-    const double b8 = 1.0 - b7 / delta;
-    const double b9 = p0 * (b6 - b7) * b8;
-    const double b10 = b9 / (p1 * b6 * b7) * alpha;
-    const double b11 = p0 * b8 * alpha;
-    const double b12 = p1 * b5 * b7;
-    const double b13 = b11 / b12;
-    const double b14 = b9 * alpha;
-    const double b15 = p1 * b5 * b6 * b7;
-    const double b16 = b14 / b15;
-    const double b17 = b11 * Y_1 / b12 * Y_0 - b14 * Y_1 / b15 * Y_0;
-    const double b18 = V0 * (dY_0 * (b10 + b13 * b3 - b16 * b3) + dY_1 * b17) * V;
-    const double b19 = V0 * (dY_0 * b17 + dY_1 * (b10 + b13 * b4 - b16 * b4)) * V;
-    df[(k + 1) * 2 + 0] = -b18;
-    df[0] += b18;
-    df[(k + 1) * 2 + 1] = -b19;
-    df[1] += b19;
+    const double b8 = 1.0 - p0 * b7;
+    const double b9 = p1 * (b6 - b7) * b8;
+    const double b10 = 1.0 / b6;
+    const double b11 = 1.0 / b7;
+    const double b12 = b9 * b10 * b11 * alpha;
+    const double b13 = 1.0 / b5;
+    const double b14 = p1 * b8 * b13 * b11 * alpha;
+    const double b15 = b9 * (b13 * b10) * b11 * alpha;
+    const double b16 = b14 * Y_1 * Y_0 - b15 * Y_1 * Y_0;
+    const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
+    const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
+    df[(k + 1) * 2 + 0] = -b17;
+    df[0] += b17;
+    df[(k + 1) * 2 + 1] = -b18;
+    df[1] += b18;
   }
 }
 
-// bond_based_conical_2d_damaged_energy: per bond 5 add, 11 mul, 2 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_2d_damaged_energy: per bond 5 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_2d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 3.819718634205488 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 3.819718634205488 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -478,7 +472,7 @@ double bond_based_conical_2d_damaged_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p0 * b5 * b5 * (1.0 - b4 / delta) * V / (p1 * b4) * alpha;
+    s_bond_energy += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V * alpha;
   }
   const double W = s_bond_energy;
   return W;
@@ -490,15 +484,15 @@ void bond_based_conical_2d_intact_moments(const pd::abi::Family& fam, double* mo
   static_cast<void>(moments);
 }
 
-// bond_based_conical_2d_intact_residual: per bond 5 add, 12 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_2d_intact_residual: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 7.639437268410976 * P_kappa2 * V0;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -508,7 +502,7 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p0 * (b3 - b4) * (1.0 - b4 / delta) * V / (p1 * b3 * b4);
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * V;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -518,16 +512,16 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
   }
 }
 
-// bond_based_conical_2d_intact_tangent: per bond 10 add, 29 mul, 7 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_2d_intact_tangent: per bond 10 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 7.639437268410976 * P_kappa2;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
+  const double p2 = p1 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -541,40 +535,38 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b7 = std::sqrt(b6);
     const double b8 = std::sqrt(b3);
     const double b9 = b7 - b8;
-    const double b10 = 1.0 - b8 / delta;
-    const double b11 = p2 * b7 * b8;
-    const double b12 = p1 * b9 * b10 * V / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = p0 * b9;
-    const double b16 = b15 / b11 * b10;
-    const double b17 = p0 * b10;
-    const double b18 = p2 * b6 * b8;
-    const double b19 = b17 / b18;
-    const double b20 = b15 * b10;
-    const double b21 = p2 * b6 * b7 * b8;
-    const double b22 = b20 / b21;
-    const double b23 = b17 * Y_1 / b18 * Y_0 - b20 * Y_1 / b21 * Y_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    factors.direct[k * 4 + 0] = b16 + b19 * b4 - b22 * b4;
-    factors.direct[k * 4 + 1] = b23;
-    factors.direct[k * 4 + 2] = b23;
-    factors.direct[k * 4 + 3] = b16 + b19 * b5 - b22 * b5;
+    const double b10 = 1.0 - p0 * b8;
+    const double b11 = 1.0 / b7;
+    const double b12 = 1.0 / b8;
+    const double b13 = p2 * b9 * b10 * b11 * b12 * V;
+    const double b14 = b13 * Y_0;
+    const double b15 = b13 * Y_1;
+    const double b16 = p1 * b9 * b10;
+    const double b17 = b16 * b11 * b12;
+    const double b18 = 1.0 / b6;
+    const double b19 = p1 * b10 * b18 * b12;
+    const double b20 = b16 * (b18 * b11) * b12;
+    const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
+    if (forces != nullptr) forces[0] += b14;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b15;
+    if (forces != nullptr) forces[1] += b15;
+    factors.direct[k * 4 + 0] = b17 + b19 * b4 - b20 * b4;
+    factors.direct[k * 4 + 1] = b21;
+    factors.direct[k * 4 + 2] = b21;
+    factors.direct[k * 4 + 3] = b17 + b19 * b5 - b20 * b5;
   }
 }
 
-// bond_based_conical_2d_intact_jvp: per bond 12 add, 32 mul, 6 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_2d_intact_jvp: per bond 12 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 7.639437268410976 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -589,33 +581,32 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b5 = 1e-16 * b2 + b3 + b4;
     const double b6 = std::sqrt(b5);
     const double b7 = std::sqrt(b2);
-    const double b8 = p0 * (b6 - b7);
-    const double b9 = 1.0 - b7 / delta;
-    const double b10 = b8 / (p1 * b6 * b7) * b9;
-    const double b11 = p0 * b9;
-    const double b12 = p1 * b5 * b7;
-    const double b13 = b11 / b12;
-    const double b14 = b8 * b9;
-    const double b15 = p1 * b5 * b6 * b7;
-    const double b16 = b14 / b15;
-    const double b17 = b11 * Y_1 / b12 * Y_0 - b14 * Y_1 / b15 * Y_0;
-    const double b18 = V0 * (dY_0 * (b10 + b13 * b3 - b16 * b3) + dY_1 * b17) * V;
-    const double b19 = V0 * (dY_0 * b17 + dY_1 * (b10 + b13 * b4 - b16 * b4)) * V;
-    df[(k + 1) * 2 + 0] = -b18;
-    df[0] += b18;
-    df[(k + 1) * 2 + 1] = -b19;
-    df[1] += b19;
+    const double b8 = 1.0 - p0 * b7;
+    const double b9 = p1 * (b6 - b7) * b8;
+    const double b10 = 1.0 / b6;
+    const double b11 = 1.0 / b7;
+    const double b12 = b9 * b10 * b11;
+    const double b13 = 1.0 / b5;
+    const double b14 = p1 * b8 * b13 * b11;
+    const double b15 = b9 * (b13 * b10) * b11;
+    const double b16 = b14 * Y_1 * Y_0 - b15 * Y_1 * Y_0;
+    const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
+    const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
+    df[(k + 1) * 2 + 0] = -b17;
+    df[0] += b17;
+    df[(k + 1) * 2 + 1] = -b18;
+    df[1] += b18;
   }
 }
 
-// bond_based_conical_2d_intact_energy: per bond 5 add, 10 mul, 2 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_2d_intact_energy: per bond 5 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 3.819718634205488 * P_kappa2;
-  const double p1 = delta * delta * delta;
+  const double p0 = 1.0 / delta;
+  const double p1 = 3.819718634205488 * P_kappa2 * (p0 * p0 * p0);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -626,7 +617,7 @@ double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p0 * b5 * b5 * (1.0 - b4 / delta) / (p1 * b4) * V;
+    s_bond_energy += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V;
   }
   const double W = s_bond_energy;
   return W;
@@ -647,19 +638,19 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_2d_damaged_moments;
   d.damaged.residual = &bond_based_conical_2d_damaged_residual;
-  d.damaged.residual_ops = {5, 13, 2, 2};
+  d.damaged.residual_ops = {5, 14, 2, 2};
   d.damaged.tangent = &bond_based_conical_2d_damaged_tangent;
-  d.damaged.tangent_ops = {10, 32, 7, 2};
+  d.damaged.tangent_ops = {10, 35, 3, 2};
   d.damaged.jvp = &bond_based_conical_2d_damaged_jvp;
-  d.damaged.jvp_ops = {12, 34, 6, 2};
+  d.damaged.jvp_ops = {12, 35, 3, 2};
   d.damaged.energy = &bond_based_conical_2d_damaged_energy;
   d.intact.moments = &bond_based_conical_2d_intact_moments;
   d.intact.residual = &bond_based_conical_2d_intact_residual;
-  d.intact.residual_ops = {5, 12, 2, 2};
+  d.intact.residual_ops = {5, 13, 2, 2};
   d.intact.tangent = &bond_based_conical_2d_intact_tangent;
-  d.intact.tangent_ops = {10, 29, 7, 2};
+  d.intact.tangent_ops = {10, 31, 3, 2};
   d.intact.jvp = &bond_based_conical_2d_intact_jvp;
-  d.intact.jvp_ops = {12, 32, 6, 2};
+  d.intact.jvp_ops = {12, 32, 3, 2};
   d.intact.energy = &bond_based_conical_2d_intact_energy;
   return d;
 }
@@ -670,16 +661,16 @@ void bond_based_constant_3d_damaged_moments(const pd::abi::Family& fam, double* 
   static_cast<void>(moments);
 }
 
-// bond_based_constant_3d_damaged_residual: per bond 6 add, 15 mul, 1 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_3d_damaged_residual: per bond 6 add, 15 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 2.864788975654116 * P_K * V0;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -692,7 +683,7 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p0 * (b4 - b5) * V * alpha / (p2 * b4 * b5);
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * V * alpha;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -705,17 +696,17 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
   }
 }
 
-// bond_based_constant_3d_damaged_tangent: per bond 15 add, 40 mul, 8 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_3d_damaged_tangent: per bond 15 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 2.864788975654116 * P_K;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta;
-  const double p3 = p2 * p2;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1);
+  const double p3 = p2 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -733,52 +724,50 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b9 = std::sqrt(b8);
     const double b10 = std::sqrt(b4);
     const double b11 = b9 - b10;
-    const double b12 = p3 * b9 * b10;
-    const double b13 = p1 * b11 * V * alpha / b12;
-    const double b14 = b13 * Y_0;
-    const double b15 = b13 * Y_1;
-    const double b16 = b13 * Y_2;
-    const double b17 = p0 * b11;
-    const double b18 = b17 / b12 * alpha;
-    const double b19 = p0 * alpha;
-    const double b20 = p3 * b8 * b10;
-    const double b21 = b19 / b20;
-    const double b22 = b17 * alpha;
-    const double b23 = p3 * b8 * b9 * b10;
-    const double b24 = b22 / b23;
-    const double b25 = b19 * Y_1 / b20 * Y_0 - b22 * Y_1 / b23 * Y_0;
-    const double b26 = b19 * Y_2 / b20;
-    const double b27 = b22 * Y_2 / b23;
-    const double b28 = b26 * Y_0 - b27 * Y_0;
-    const double b29 = b26 * Y_1 - b27 * Y_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b14;
-    if (forces != nullptr) forces[0] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b15;
-    if (forces != nullptr) forces[1] += b15;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b16;
-    if (forces != nullptr) forces[2] += b16;
-    factors.direct[k * 9 + 0] = b18 + b21 * b5 - b24 * b5;
-    factors.direct[k * 9 + 1] = b25;
-    factors.direct[k * 9 + 2] = b28;
-    factors.direct[k * 9 + 3] = b25;
-    factors.direct[k * 9 + 4] = b18 + b21 * b6 - b24 * b6;
-    factors.direct[k * 9 + 5] = b29;
-    factors.direct[k * 9 + 6] = b28;
-    factors.direct[k * 9 + 7] = b29;
-    factors.direct[k * 9 + 8] = b18 + b21 * b7 - b24 * b7;
+    const double b12 = 1.0 / b9;
+    const double b13 = 1.0 / b10;
+    const double b14 = p3 * b11 * b12 * b13 * V * alpha;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = b14 * Y_2;
+    const double b18 = p2 * b11;
+    const double b19 = b18 * b12 * b13 * alpha;
+    const double b20 = 1.0 / b8;
+    const double b21 = p2 * b20 * b13 * alpha;
+    const double b22 = b18 * (b20 * b12) * b13 * alpha;
+    const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
+    const double b24 = b21 * Y_2;
+    const double b25 = b22 * Y_2;
+    const double b26 = b24 * Y_0 - b25 * Y_0;
+    const double b27 = b24 * Y_1 - b25 * Y_1;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
+    if (forces != nullptr) forces[0] += b15;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
+    if (forces != nullptr) forces[1] += b16;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
+    if (forces != nullptr) forces[2] += b17;
+    factors.direct[k * 9 + 0] = b19 + b21 * b5 - b22 * b5;
+    factors.direct[k * 9 + 1] = b23;
+    factors.direct[k * 9 + 2] = b26;
+    factors.direct[k * 9 + 3] = b23;
+    factors.direct[k * 9 + 4] = b19 + b21 * b6 - b22 * b6;
+    factors.direct[k * 9 + 5] = b27;
+    factors.direct[k * 9 + 6] = b26;
+    factors.direct[k * 9 + 7] = b27;
+    factors.direct[k * 9 + 8] = b19 + b21 * b7 - b22 * b7;
   }
 }
 
-// bond_based_constant_3d_damaged_jvp: per bond 21 add, 49 mul, 7 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_3d_damaged_jvp: per bond 21 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 2.864788975654116 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -798,40 +787,39 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b7 = 1e-16 * b3 + b4 + b5 + b6;
     const double b8 = std::sqrt(b7);
     const double b9 = std::sqrt(b3);
-    const double b10 = p0 * (b8 - b9);
-    const double b11 = b10 / (p2 * b8 * b9) * alpha;
-    const double b12 = p0 * alpha;
-    const double b13 = p2 * b7 * b9;
-    const double b14 = b12 / b13;
-    const double b15 = b10 * alpha;
-    const double b16 = p2 * b7 * b8 * b9;
-    const double b17 = b15 / b16;
-    const double b18 = b12 * Y_1 / b13 * Y_0 - b15 * Y_1 / b16 * Y_0;
-    const double b19 = b12 * Y_2 / b13;
-    const double b20 = b15 * Y_2 / b16;
-    const double b21 = b19 * Y_0 - b20 * Y_0;
-    const double b22 = V0 * (dY_0 * (b11 + b14 * b4 - b17 * b4) + dY_1 * b18 + dY_2 * b21) * V;
-    const double b23 = b19 * Y_1 - b20 * Y_1;
-    const double b24 = V0 * (dY_0 * b18 + dY_1 * (b11 + b14 * b5 - b17 * b5) + dY_2 * b23) * V;
-    const double b25 = V0 * (dY_0 * b21 + dY_1 * b23 + dY_2 * (b11 + b14 * b6 - b17 * b6)) * V;
-    df[(k + 1) * 3 + 0] = -b22;
-    df[0] += b22;
-    df[(k + 1) * 3 + 1] = -b24;
-    df[1] += b24;
-    df[(k + 1) * 3 + 2] = -b25;
-    df[2] += b25;
+    const double b10 = p2 * (b8 - b9);
+    const double b11 = 1.0 / b8;
+    const double b12 = 1.0 / b9;
+    const double b13 = b10 * b11 * b12 * alpha;
+    const double b14 = 1.0 / b7;
+    const double b15 = p2 * b14 * b12 * alpha;
+    const double b16 = b10 * (b14 * b11) * b12 * alpha;
+    const double b17 = b15 * Y_1 * Y_0 - b16 * Y_1 * Y_0;
+    const double b18 = b15 * Y_2;
+    const double b19 = b16 * Y_2;
+    const double b20 = b18 * Y_0 - b19 * Y_0;
+    const double b21 = V0 * (dY_0 * (b13 + b15 * b4 - b16 * b4) + dY_1 * b17 + dY_2 * b20) * V;
+    const double b22 = b18 * Y_1 - b19 * Y_1;
+    const double b23 = V0 * (dY_0 * b17 + dY_1 * (b13 + b15 * b5 - b16 * b5) + dY_2 * b22) * V;
+    const double b24 = V0 * (dY_0 * b20 + dY_1 * b22 + dY_2 * (b13 + b15 * b6 - b16 * b6)) * V;
+    df[(k + 1) * 3 + 0] = -b21;
+    df[0] += b21;
+    df[(k + 1) * 3 + 1] = -b23;
+    df[1] += b23;
+    df[(k + 1) * 3 + 2] = -b24;
+    df[2] += b24;
   }
 }
 
-// bond_based_constant_3d_damaged_energy: per bond 6 add, 12 mul, 1 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_3d_damaged_energy: per bond 6 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 1.432394487827058 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 1.432394487827058 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -845,7 +833,7 @@ double bond_based_constant_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p0 * b6 * b6 * V / (p2 * b5) * alpha;
+    s_bond_energy += p2 * (b6 * b6) * (1.0 / b5) * V * alpha;
   }
   const double W = s_bond_energy;
   return W;
@@ -857,16 +845,16 @@ void bond_based_constant_3d_intact_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_constant_3d_intact_residual: per bond 6 add, 14 mul, 1 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_3d_intact_residual: per bond 6 add, 14 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 2.864788975654116 * P_K * V0;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -878,7 +866,7 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p0 * (b4 - b5) * V / (p2 * b4 * b5);
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * V;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -891,17 +879,17 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
   }
 }
 
-// bond_based_constant_3d_intact_tangent: per bond 15 add, 37 mul, 8 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_constant_3d_intact_tangent: per bond 15 add, 38 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 2.864788975654116 * P_K;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta;
-  const double p3 = p2 * p2;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1);
+  const double p3 = p2 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -918,50 +906,50 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b9 = std::sqrt(b8);
     const double b10 = std::sqrt(b4);
     const double b11 = b9 - b10;
-    const double b12 = p3 * b9 * b10;
-    const double b13 = p1 * b11 * V / b12;
-    const double b14 = b13 * Y_0;
-    const double b15 = b13 * Y_1;
-    const double b16 = b13 * Y_2;
-    const double b17 = p0 / b12 * b11;
-    const double b18 = p3 * b8 * b10;
-    const double b19 = p0 / b18;
-    const double b20 = p0 * b11;
-    const double b21 = p3 * b8 * b9 * b10;
-    const double b22 = b20 / b21;
-    const double b23 = p0 * Y_1 / b18 * Y_0 - b20 * Y_1 / b21 * Y_0;
-    const double b24 = p0 * Y_2 / b18;
-    const double b25 = b20 * Y_2 / b21;
+    const double b12 = 1.0 / b9;
+    const double b13 = 1.0 / b10;
+    const double b14 = p3 * b11 * b12 * b13 * V;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = b14 * Y_2;
+    const double b18 = p2 * b11;
+    const double b19 = b18 * b12 * b13;
+    const double b20 = 1.0 / b8;
+    const double b21 = p2 * b20 * b13;
+    const double b22 = b18 * (b20 * b12) * b13;
+    const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
+    const double b24 = b21 * Y_2;
+    const double b25 = b22 * Y_2;
     const double b26 = b24 * Y_0 - b25 * Y_0;
     const double b27 = b24 * Y_1 - b25 * Y_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b14;
-    if (forces != nullptr) forces[0] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b15;
-    if (forces != nullptr) forces[1] += b15;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b16;
-    if (forces != nullptr) forces[2] += b16;
-    factors.direct[k * 9 + 0] = b17 + b19 * b5 - b22 * b5;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
+    if (forces != nullptr) forces[0] += b15;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
+    if (forces != nullptr) forces[1] += b16;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
+    if (forces != nullptr) forces[2] += b17;
+    factors.direct[k * 9 + 0] = b19 + b21 * b5 - b22 * b5;
     factors.direct[k * 9 + 1] = b23;
     factors.direct[k * 9 + 2] = b26;
     factors.direct[k * 9 + 3] = b23;
-    factors.direct[k * 9 + 4] = b17 + b19 * b6 - b22 * b6;
+    factors.direct[k * 9 + 4] = b19 + b21 * b6 - b22 * b6;
     factors.direct[k * 9 + 5] = b27;
     factors.direct[k * 9 + 6] = b26;
     factors.direct[k * 9 + 7] = b27;
-    factors.direct[k * 9 + 8] = b17 + b19 * b7 - b22 * b7;
+    factors.direct[k * 9 + 8] = b19 + b21 * b7 - b22 * b7;
   }
 }
 
-// bond_based_constant_3d_intact_jvp: per bond 21 add, 47 mul, 7 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_3d_intact_jvp: per bond 21 add, 46 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 2.864788975654116 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -980,21 +968,21 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b7 = 1e-16 * b3 + b4 + b5 + b6;
     const double b8 = std::sqrt(b7);
     const double b9 = std::sqrt(b3);
-    const double b10 = b8 - b9;
-    const double b11 = p0 / (p2 * b8 * b9) * b10;
-    const double b12 = p2 * b7 * b9;
-    const double b13 = p0 / b12;
-    const double b14 = p0 * b10;
-    const double b15 = p2 * b7 * b8 * b9;
-    const double b16 = b14 / b15;
-    const double b17 = p0 * Y_1 / b12 * Y_0 - b14 * Y_1 / b15 * Y_0;
-    const double b18 = p0 * Y_2 / b12;
-    const double b19 = b14 * Y_2 / b15;
+    const double b10 = p2 * (b8 - b9);
+    const double b11 = 1.0 / b8;
+    const double b12 = 1.0 / b9;
+    const double b13 = b10 * b11 * b12;
+    const double b14 = 1.0 / b7;
+    const double b15 = p2 * b14 * b12;
+    const double b16 = b10 * (b14 * b11) * b12;
+    const double b17 = b15 * Y_1 * Y_0 - b16 * Y_1 * Y_0;
+    const double b18 = b15 * Y_2;
+    const double b19 = b16 * Y_2;
     const double b20 = b18 * Y_0 - b19 * Y_0;
-    const double b21 = V0 * (dY_0 * (b11 + b13 * b4 - b16 * b4) + dY_1 * b17 + dY_2 * b20) * V;
+    const double b21 = V0 * (dY_0 * (b13 + b15 * b4 - b16 * b4) + dY_1 * b17 + dY_2 * b20) * V;
     const double b22 = b18 * Y_1 - b19 * Y_1;
-    const double b23 = V0 * (dY_0 * b17 + dY_1 * (b11 + b13 * b5 - b16 * b5) + dY_2 * b22) * V;
-    const double b24 = V0 * (dY_0 * b20 + dY_1 * b22 + dY_2 * (b11 + b13 * b6 - b16 * b6)) * V;
+    const double b23 = V0 * (dY_0 * b17 + dY_1 * (b13 + b15 * b5 - b16 * b5) + dY_2 * b22) * V;
+    const double b24 = V0 * (dY_0 * b20 + dY_1 * b22 + dY_2 * (b13 + b15 * b6 - b16 * b6)) * V;
     df[(k + 1) * 3 + 0] = -b21;
     df[0] += b21;
     df[(k + 1) * 3 + 1] = -b23;
@@ -1004,15 +992,15 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
   }
 }
 
-// bond_based_constant_3d_intact_energy: per bond 6 add, 11 mul, 1 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_constant_3d_intact_energy: per bond 6 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 1.432394487827058 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 1.432394487827058 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1025,7 +1013,7 @@ double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p0 * b6 * b6 / (p2 * b5) * V;
+    s_bond_energy += p2 * (b6 * b6) * (1.0 / b5) * V;
   }
   const double W = s_bond_energy;
   return W;
@@ -1046,19 +1034,19 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_3d_damaged_moments;
   d.damaged.residual = &bond_based_constant_3d_damaged_residual;
-  d.damaged.residual_ops = {6, 15, 1, 2};
+  d.damaged.residual_ops = {6, 15, 2, 2};
   d.damaged.tangent = &bond_based_constant_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 40, 8, 2};
+  d.damaged.tangent_ops = {15, 42, 3, 2};
   d.damaged.jvp = &bond_based_constant_3d_damaged_jvp;
-  d.damaged.jvp_ops = {21, 49, 7, 2};
+  d.damaged.jvp_ops = {21, 49, 3, 2};
   d.damaged.energy = &bond_based_constant_3d_damaged_energy;
   d.intact.moments = &bond_based_constant_3d_intact_moments;
   d.intact.residual = &bond_based_constant_3d_intact_residual;
-  d.intact.residual_ops = {6, 14, 1, 2};
+  d.intact.residual_ops = {6, 14, 2, 2};
   d.intact.tangent = &bond_based_constant_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 37, 8, 2};
+  d.intact.tangent_ops = {15, 38, 3, 2};
   d.intact.jvp = &bond_based_constant_3d_intact_jvp;
-  d.intact.jvp_ops = {21, 47, 7, 2};
+  d.intact.jvp_ops = {21, 46, 3, 2};
   d.intact.energy = &bond_based_constant_3d_intact_energy;
   return d;
 }
@@ -1069,16 +1057,16 @@ void bond_based_conical_3d_damaged_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_conical_3d_damaged_residual: per bond 7 add, 16 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_3d_damaged_residual: per bond 7 add, 17 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 14.32394487827058 * P_K * V0;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1091,7 +1079,7 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p0 * (b4 - b5) * (1.0 - b5 / delta) * V * alpha / (p2 * b4 * b5);
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * V * alpha;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -1104,17 +1092,17 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
   }
 }
 
-// bond_based_conical_3d_damaged_tangent: per bond 16 add, 43 mul, 9 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_3d_damaged_tangent: per bond 16 add, 46 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 14.32394487827058 * P_K;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta;
-  const double p3 = p2 * p2;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1);
+  const double p3 = p2 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1132,53 +1120,51 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b9 = std::sqrt(b8);
     const double b10 = std::sqrt(b4);
     const double b11 = b9 - b10;
-    const double b12 = 1.0 - b10 / delta;
-    const double b13 = p3 * b9 * b10;
-    const double b14 = p1 * b11 * b12 * V * alpha / b13;
-    const double b15 = b14 * Y_0;
-    const double b16 = b14 * Y_1;
-    const double b17 = b14 * Y_2;
-    const double b18 = p0 * b11 * b12;
-    const double b19 = b18 / b13 * alpha;
-    const double b20 = p0 * b12 * alpha;
-    const double b21 = p3 * b8 * b10;
-    const double b22 = b20 / b21;
-    const double b23 = b18 * alpha;
-    const double b24 = p3 * b8 * b9 * b10;
-    const double b25 = b23 / b24;
-    const double b26 = b20 * Y_1 / b21 * Y_0 - b23 * Y_1 / b24 * Y_0;
-    const double b27 = b20 * Y_2 / b21;
-    const double b28 = b23 * Y_2 / b24;
-    const double b29 = b27 * Y_0 - b28 * Y_0;
-    const double b30 = b27 * Y_1 - b28 * Y_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
-    if (forces != nullptr) forces[0] += b15;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
-    if (forces != nullptr) forces[1] += b16;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
-    if (forces != nullptr) forces[2] += b17;
-    factors.direct[k * 9 + 0] = b19 + b22 * b5 - b25 * b5;
-    factors.direct[k * 9 + 1] = b26;
-    factors.direct[k * 9 + 2] = b29;
-    factors.direct[k * 9 + 3] = b26;
-    factors.direct[k * 9 + 4] = b19 + b22 * b6 - b25 * b6;
-    factors.direct[k * 9 + 5] = b30;
-    factors.direct[k * 9 + 6] = b29;
-    factors.direct[k * 9 + 7] = b30;
-    factors.direct[k * 9 + 8] = b19 + b22 * b7 - b25 * b7;
+    const double b12 = 1.0 - p0 * b10;
+    const double b13 = 1.0 / b9;
+    const double b14 = 1.0 / b10;
+    const double b15 = p3 * b11 * b12 * b13 * b14 * V * alpha;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    const double b18 = b15 * Y_2;
+    const double b19 = p2 * b11 * b12;
+    const double b20 = b19 * b13 * b14 * alpha;
+    const double b21 = 1.0 / b8;
+    const double b22 = p2 * b12 * b21 * b14 * alpha;
+    const double b23 = b19 * (b21 * b13) * b14 * alpha;
+    const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
+    const double b25 = b22 * Y_2;
+    const double b26 = b23 * Y_2;
+    const double b27 = b25 * Y_0 - b26 * Y_0;
+    const double b28 = b25 * Y_1 - b26 * Y_1;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b16;
+    if (forces != nullptr) forces[0] += b16;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b17;
+    if (forces != nullptr) forces[1] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b18;
+    if (forces != nullptr) forces[2] += b18;
+    factors.direct[k * 9 + 0] = b20 + b22 * b5 - b23 * b5;
+    factors.direct[k * 9 + 1] = b24;
+    factors.direct[k * 9 + 2] = b27;
+    factors.direct[k * 9 + 3] = b24;
+    factors.direct[k * 9 + 4] = b20 + b22 * b6 - b23 * b6;
+    factors.direct[k * 9 + 5] = b28;
+    factors.direct[k * 9 + 6] = b27;
+    factors.direct[k * 9 + 7] = b28;
+    factors.direct[k * 9 + 8] = b20 + b22 * b7 - b23 * b7;
   }
 }
 
-// bond_based_conical_3d_damaged_jvp: per bond 22 add, 51 mul, 8 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_3d_damaged_jvp: per bond 22 add, 52 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 14.32394487827058 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1198,41 +1184,40 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b7 = 1e-16 * b3 + b4 + b5 + b6;
     const double b8 = std::sqrt(b7);
     const double b9 = std::sqrt(b3);
-    const double b10 = 1.0 - b9 / delta;
-    const double b11 = p0 * (b8 - b9) * b10;
-    const double b12 = b11 / (p2 * b8 * b9) * alpha;
-    const double b13 = p0 * b10 * alpha;
-    const double b14 = p2 * b7 * b9;
-    const double b15 = b13 / b14;
-    const double b16 = b11 * alpha;
-    const double b17 = p2 * b7 * b8 * b9;
-    const double b18 = b16 / b17;
-    const double b19 = b13 * Y_1 / b14 * Y_0 - b16 * Y_1 / b17 * Y_0;
-    const double b20 = b13 * Y_2 / b14;
-    const double b21 = b16 * Y_2 / b17;
-    const double b22 = b20 * Y_0 - b21 * Y_0;
-    const double b23 = V0 * (dY_0 * (b12 + b15 * b4 - b18 * b4) + dY_1 * b19 + dY_2 * b22) * V;
-    const double b24 = b20 * Y_1 - b21 * Y_1;
-    const double b25 = V0 * (dY_0 * b19 + dY_1 * (b12 + b15 * b5 - b18 * b5) + dY_2 * b24) * V;
-    const double b26 = V0 * (dY_0 * b22 + dY_1 * b24 + dY_2 * (b12 + b15 * b6 - b18 * b6)) * V;
-    df[(k + 1) * 3 + 0] = -b23;
-    df[0] += b23;
-    df[(k + 1) * 3 + 1] = -b25;
-    df[1] += b25;
-    df[(k + 1) * 3 + 2] = -b26;
-    df[2] += b26;
+    const double b10 = 1.0 - p0 * b9;
+    const double b11 = p2 * (b8 - b9) * b10;
+    const double b12 = 1.0 / b8;
+    const double b13 = 1.0 / b9;
+    const double b14 = b11 * b12 * b13 * alpha;
+    const double b15 = 1.0 / b7;
+    const double b16 = p2 * b10 * b15 * b13 * alpha;
+    const double b17 = b11 * (b15 * b12) * b13 * alpha;
+    const double b18 = b16 * Y_1 * Y_0 - b17 * Y_1 * Y_0;
+    const double b19 = b16 * Y_2;
+    const double b20 = b17 * Y_2;
+    const double b21 = b19 * Y_0 - b20 * Y_0;
+    const double b22 = V0 * (dY_0 * (b14 + b16 * b4 - b17 * b4) + dY_1 * b18 + dY_2 * b21) * V;
+    const double b23 = b19 * Y_1 - b20 * Y_1;
+    const double b24 = V0 * (dY_0 * b18 + dY_1 * (b14 + b16 * b5 - b17 * b5) + dY_2 * b23) * V;
+    const double b25 = V0 * (dY_0 * b21 + dY_1 * b23 + dY_2 * (b14 + b16 * b6 - b17 * b6)) * V;
+    df[(k + 1) * 3 + 0] = -b22;
+    df[0] += b22;
+    df[(k + 1) * 3 + 1] = -b24;
+    df[1] += b24;
+    df[(k + 1) * 3 + 2] = -b25;
+    df[2] += b25;
   }
 }
 
-// bond_based_conical_3d_damaged_energy: per bond 7 add, 13 mul, 2 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_3d_damaged_energy: per bond 7 add, 14 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 7.16197243913529 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 7.16197243913529 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1246,7 +1231,7 @@ double bond_based_conical_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p0 * b6 * b6 * (1.0 - b5 / delta) * V / (p2 * b5) * alpha;
+    s_bond_energy += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V * alpha;
   }
   const double W = s_bond_energy;
   return W;
@@ -1258,16 +1243,16 @@ void bond_based_conical_3d_intact_moments(const pd::abi::Family& fam, double* mo
   static_cast<void>(moments);
 }
 
-// bond_based_conical_3d_intact_residual: per bond 7 add, 15 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_3d_intact_residual: per bond 7 add, 16 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 14.32394487827058 * P_K * V0;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1) * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1279,7 +1264,7 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p0 * (b4 - b5) * (1.0 - b5 / delta) * V / (p2 * b4 * b5);
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * V;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -1292,17 +1277,17 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
   }
 }
 
-// bond_based_conical_3d_intact_tangent: per bond 16 add, 40 mul, 9 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// bond_based_conical_3d_intact_tangent: per bond 16 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
-  const double V0 = fam.V0;
   const double delta = fam.delta;
+  const double V0 = fam.V0;
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 14.32394487827058 * P_K;
-  const double p1 = p0 * V0;
-  const double p2 = delta * delta;
-  const double p3 = p2 * p2;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1);
+  const double p3 = p2 * V0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1319,53 +1304,51 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b9 = std::sqrt(b8);
     const double b10 = std::sqrt(b4);
     const double b11 = b9 - b10;
-    const double b12 = 1.0 - b10 / delta;
-    const double b13 = p3 * b9 * b10;
-    const double b14 = p1 * b11 * b12 * V / b13;
-    const double b15 = b14 * Y_0;
-    const double b16 = b14 * Y_1;
-    const double b17 = b14 * Y_2;
-    const double b18 = p0 * b11;
-    const double b19 = b18 / b13 * b12;
-    const double b20 = p0 * b12;
-    const double b21 = p3 * b8 * b10;
-    const double b22 = b20 / b21;
-    const double b23 = b18 * b12;
-    const double b24 = p3 * b8 * b9 * b10;
-    const double b25 = b23 / b24;
-    const double b26 = b20 * Y_1 / b21 * Y_0 - b23 * Y_1 / b24 * Y_0;
-    const double b27 = b20 * Y_2 / b21;
-    const double b28 = b23 * Y_2 / b24;
-    const double b29 = b27 * Y_0 - b28 * Y_0;
-    const double b30 = b27 * Y_1 - b28 * Y_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
-    if (forces != nullptr) forces[0] += b15;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
-    if (forces != nullptr) forces[1] += b16;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
-    if (forces != nullptr) forces[2] += b17;
-    factors.direct[k * 9 + 0] = b19 + b22 * b5 - b25 * b5;
-    factors.direct[k * 9 + 1] = b26;
-    factors.direct[k * 9 + 2] = b29;
-    factors.direct[k * 9 + 3] = b26;
-    factors.direct[k * 9 + 4] = b19 + b22 * b6 - b25 * b6;
-    factors.direct[k * 9 + 5] = b30;
-    factors.direct[k * 9 + 6] = b29;
-    factors.direct[k * 9 + 7] = b30;
-    factors.direct[k * 9 + 8] = b19 + b22 * b7 - b25 * b7;
+    const double b12 = 1.0 - p0 * b10;
+    const double b13 = 1.0 / b9;
+    const double b14 = 1.0 / b10;
+    const double b15 = p3 * b11 * b12 * b13 * b14 * V;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    const double b18 = b15 * Y_2;
+    const double b19 = p2 * b11 * b12;
+    const double b20 = b19 * b13 * b14;
+    const double b21 = 1.0 / b8;
+    const double b22 = p2 * b12 * b21 * b14;
+    const double b23 = b19 * (b21 * b13) * b14;
+    const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
+    const double b25 = b22 * Y_2;
+    const double b26 = b23 * Y_2;
+    const double b27 = b25 * Y_0 - b26 * Y_0;
+    const double b28 = b25 * Y_1 - b26 * Y_1;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b16;
+    if (forces != nullptr) forces[0] += b16;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b17;
+    if (forces != nullptr) forces[1] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b18;
+    if (forces != nullptr) forces[2] += b18;
+    factors.direct[k * 9 + 0] = b20 + b22 * b5 - b23 * b5;
+    factors.direct[k * 9 + 1] = b24;
+    factors.direct[k * 9 + 2] = b27;
+    factors.direct[k * 9 + 3] = b24;
+    factors.direct[k * 9 + 4] = b20 + b22 * b6 - b23 * b6;
+    factors.direct[k * 9 + 5] = b28;
+    factors.direct[k * 9 + 6] = b27;
+    factors.direct[k * 9 + 7] = b28;
+    factors.direct[k * 9 + 8] = b20 + b22 * b7 - b23 * b7;
   }
 }
 
-// bond_based_conical_3d_intact_jvp: per bond 22 add, 49 mul, 8 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_3d_intact_jvp: per bond 22 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 14.32394487827058 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1384,41 +1367,40 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b7 = 1e-16 * b3 + b4 + b5 + b6;
     const double b8 = std::sqrt(b7);
     const double b9 = std::sqrt(b3);
-    const double b10 = p0 * (b8 - b9);
-    const double b11 = 1.0 - b9 / delta;
-    const double b12 = b10 / (p2 * b8 * b9) * b11;
-    const double b13 = p0 * b11;
-    const double b14 = p2 * b7 * b9;
-    const double b15 = b13 / b14;
-    const double b16 = b10 * b11;
-    const double b17 = p2 * b7 * b8 * b9;
-    const double b18 = b16 / b17;
-    const double b19 = b13 * Y_1 / b14 * Y_0 - b16 * Y_1 / b17 * Y_0;
-    const double b20 = b13 * Y_2 / b14;
-    const double b21 = b16 * Y_2 / b17;
-    const double b22 = b20 * Y_0 - b21 * Y_0;
-    const double b23 = V0 * (dY_0 * (b12 + b15 * b4 - b18 * b4) + dY_1 * b19 + dY_2 * b22) * V;
-    const double b24 = b20 * Y_1 - b21 * Y_1;
-    const double b25 = V0 * (dY_0 * b19 + dY_1 * (b12 + b15 * b5 - b18 * b5) + dY_2 * b24) * V;
-    const double b26 = V0 * (dY_0 * b22 + dY_1 * b24 + dY_2 * (b12 + b15 * b6 - b18 * b6)) * V;
-    df[(k + 1) * 3 + 0] = -b23;
-    df[0] += b23;
-    df[(k + 1) * 3 + 1] = -b25;
-    df[1] += b25;
-    df[(k + 1) * 3 + 2] = -b26;
-    df[2] += b26;
+    const double b10 = 1.0 - p0 * b9;
+    const double b11 = p2 * (b8 - b9) * b10;
+    const double b12 = 1.0 / b8;
+    const double b13 = 1.0 / b9;
+    const double b14 = b11 * b12 * b13;
+    const double b15 = 1.0 / b7;
+    const double b16 = p2 * b10 * b15 * b13;
+    const double b17 = b11 * (b15 * b12) * b13;
+    const double b18 = b16 * Y_1 * Y_0 - b17 * Y_1 * Y_0;
+    const double b19 = b16 * Y_2;
+    const double b20 = b17 * Y_2;
+    const double b21 = b19 * Y_0 - b20 * Y_0;
+    const double b22 = V0 * (dY_0 * (b14 + b16 * b4 - b17 * b4) + dY_1 * b18 + dY_2 * b21) * V;
+    const double b23 = b19 * Y_1 - b20 * Y_1;
+    const double b24 = V0 * (dY_0 * b18 + dY_1 * (b14 + b16 * b5 - b17 * b5) + dY_2 * b23) * V;
+    const double b25 = V0 * (dY_0 * b21 + dY_1 * b23 + dY_2 * (b14 + b16 * b6 - b17 * b6)) * V;
+    df[(k + 1) * 3 + 0] = -b22;
+    df[0] += b22;
+    df[(k + 1) * 3 + 1] = -b24;
+    df[1] += b24;
+    df[(k + 1) * 3 + 2] = -b25;
+    df[2] += b25;
   }
 }
 
-// bond_based_conical_3d_intact_energy: per bond 7 add, 12 mul, 2 div, 2 call; per family 0 add, 3 mul, 0 div, 0 call
+// bond_based_conical_3d_intact_energy: per bond 7 add, 13 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
   const double delta = fam.delta;
   double s_bond_energy = 0.0;
-  const double p0 = 7.16197243913529 * P_K;
-  const double p1 = delta * delta;
-  const double p2 = p1 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 7.16197243913529 * P_K * (p1 * p1);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1431,7 +1413,7 @@ double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p0 * b6 * b6 * (1.0 - b5 / delta) / (p2 * b5) * V;
+    s_bond_energy += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V;
   }
   const double W = s_bond_energy;
   return W;
@@ -1452,19 +1434,19 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_3d_damaged_moments;
   d.damaged.residual = &bond_based_conical_3d_damaged_residual;
-  d.damaged.residual_ops = {7, 16, 2, 2};
+  d.damaged.residual_ops = {7, 17, 2, 2};
   d.damaged.tangent = &bond_based_conical_3d_damaged_tangent;
-  d.damaged.tangent_ops = {16, 43, 9, 2};
+  d.damaged.tangent_ops = {16, 46, 3, 2};
   d.damaged.jvp = &bond_based_conical_3d_damaged_jvp;
-  d.damaged.jvp_ops = {22, 51, 8, 2};
+  d.damaged.jvp_ops = {22, 52, 3, 2};
   d.damaged.energy = &bond_based_conical_3d_damaged_energy;
   d.intact.moments = &bond_based_conical_3d_intact_moments;
   d.intact.residual = &bond_based_conical_3d_intact_residual;
-  d.intact.residual_ops = {7, 15, 2, 2};
+  d.intact.residual_ops = {7, 16, 2, 2};
   d.intact.tangent = &bond_based_conical_3d_intact_tangent;
-  d.intact.tangent_ops = {16, 40, 9, 2};
+  d.intact.tangent_ops = {16, 42, 3, 2};
   d.intact.jvp = &bond_based_conical_3d_intact_jvp;
-  d.intact.jvp_ops = {22, 49, 8, 2};
+  d.intact.jvp_ops = {22, 49, 3, 2};
   d.intact.energy = &bond_based_conical_3d_intact_energy;
   return d;
 }

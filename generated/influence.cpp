@@ -17,41 +17,42 @@ double influence_const(double r, double delta) {
 }
 
 // inv: delta / r
-// influence_inv: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 1 div, 0 call
+// influence_inv: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 double influence_inv(double r, double delta) {
-  const double w = delta / r;
+  const double w = delta * (1.0 / r);
   return w;
 }
 
 // linear: 1 - r/delta
-// influence_linear: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 0 mul, 1 div, 0 call
+// influence_linear: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 1 div, 0 call
 double influence_linear(double r, double delta) {
-  const double w = 1.0 - r / delta;
+  const double w = 1.0 - 1.0 / delta * r;
   return w;
 }
 
 // quadr: (1 - r/delta)^2
-// influence_quadr: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 1 div, 0 call
+// influence_quadr: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 2 mul, 1 div, 0 call
 double influence_quadr(double r, double delta) {
-  const double p0 = 1.0 - r / delta;
+  const double p0 = 1.0 - 1.0 / delta * r;
   const double w = p0 * p0;
   return w;
 }
 
 // cubic: (1 - r/delta)^3
-// influence_cubic: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 2 mul, 1 div, 0 call
+// influence_cubic: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 3 mul, 1 div, 0 call
 double influence_cubic(double r, double delta) {
-  const double p0 = 1.0 - r / delta;
+  const double p0 = 1.0 - 1.0 / delta * r;
   const double w = p0 * p0 * p0;
   return w;
 }
 
 // quarticA: 1 - 6 rho^2 + 8 rho^3 - 3 rho^4, rho = r/delta
-// influence_quarticA: per bond 0 add, 0 mul, 0 div, 0 call; per family 3 add, 9 mul, 3 div, 0 call
+// influence_quarticA: per bond 0 add, 0 mul, 0 div, 0 call; per family 3 add, 12 mul, 1 div, 0 call
 double influence_quarticA(double r, double delta) {
-  const double p0 = delta * delta;
-  const double p1 = r * r;
-  const double w = 1.0 + 8.0 / (p0 * delta) * p1 * r - 3.0 / (p0 * p0) * p1 * p1 - 6.0 / p0 * p1;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = r * r;
+  const double w = 1.0 + 8.0 * (p1 * p0) * (p2 * r) - 3.0 * (p1 * p1) * (p2 * p2) - 6.0 * p1 * p2;
   return w;
 }
 
@@ -76,52 +77,55 @@ double influence_rational_a0_n1(double r, double delta) {
 // influence_rational_a0_n2: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 double influence_rational_a0_n2(double r, double delta) {
   static_cast<void>(delta);
-  const double w = 1.0 / (r * r);
+  const double p0 = 1.0 / r;
+  const double w = p0 * p0;
   return w;
 }
 
 // rational_a1_n0: (1 - r/delta)^1 / r^0
-// influence_rational_a1_n0: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 0 mul, 1 div, 0 call
+// influence_rational_a1_n0: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 1 div, 0 call
 double influence_rational_a1_n0(double r, double delta) {
-  const double w = 1.0 - r / delta;
+  const double w = 1.0 - 1.0 / delta * r;
   return w;
 }
 
 // rational_a1_n1: (1 - r/delta)^1 / r^1
-// influence_rational_a1_n1: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 0 mul, 2 div, 0 call
+// influence_rational_a1_n1: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 2 mul, 2 div, 0 call
 double influence_rational_a1_n1(double r, double delta) {
-  const double w = (1.0 - r / delta) / r;
+  const double w = (1.0 - 1.0 / delta * r) * (1.0 / r);
   return w;
 }
 
 // rational_a1_n2: (1 - r/delta)^1 / r^2
-// influence_rational_a1_n2: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 2 div, 0 call
+// influence_rational_a1_n2: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 3 mul, 2 div, 0 call
 double influence_rational_a1_n2(double r, double delta) {
-  const double w = (1.0 - r / delta) / (r * r);
+  const double p0 = 1.0 / r;
+  const double w = (1.0 - 1.0 / delta * r) * (p0 * p0);
   return w;
 }
 
 // rational_a2_n0: (1 - r/delta)^2 / r^0
-// influence_rational_a2_n0: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 1 div, 0 call
+// influence_rational_a2_n0: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 2 mul, 1 div, 0 call
 double influence_rational_a2_n0(double r, double delta) {
-  const double p0 = 1.0 - r / delta;
+  const double p0 = 1.0 - 1.0 / delta * r;
   const double w = p0 * p0;
   return w;
 }
 
 // rational_a2_n1: (1 - r/delta)^2 / r^1
-// influence_rational_a2_n1: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 2 div, 0 call
+// influence_rational_a2_n1: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 3 mul, 2 div, 0 call
 double influence_rational_a2_n1(double r, double delta) {
-  const double p0 = 1.0 - r / delta;
-  const double w = p0 * p0 / r;
+  const double p0 = 1.0 - 1.0 / delta * r;
+  const double w = p0 * p0 * (1.0 / r);
   return w;
 }
 
 // rational_a2_n2: (1 - r/delta)^2 / r^2
-// influence_rational_a2_n2: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 2 mul, 2 div, 0 call
+// influence_rational_a2_n2: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 4 mul, 2 div, 0 call
 double influence_rational_a2_n2(double r, double delta) {
-  const double p0 = 1.0 - r / delta;
-  const double w = p0 * p0 / (r * r);
+  const double p0 = 1.0 - 1.0 / delta * r;
+  const double p1 = 1.0 / r;
+  const double w = p0 * p0 * (p1 * p1);
   return w;
 }
 

@@ -22,7 +22,7 @@ void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[0] = s_m;
 }
 
-// lps_plane_strain_damaged_residual: per bond 9 add, 23 mul, 4 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_damaged_residual: per bond 9 add, 24 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -30,6 +30,7 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -38,11 +39,12 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p1 = 8.0 * P_mu;
+  const double p1 = 1.0 / s_m * V0;
+  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
+  const double p3 = 8.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -51,17 +53,17 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b2 = p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / (xi_0 * xi_0 + xi_1 * xi_1);
-    const double b3 = V0 * (p0 * xi_0 + b2 * xi_0) * V * alpha / s_m * w;
-    const double b4 = V0 * (p0 * xi_1 + b2 * xi_1) * V * alpha / s_m * w;
-    forces[(k + 1) * 2 + 0] = -b3;
-    forces[0] += b3;
-    forces[(k + 1) * 2 + 1] = -b4;
-    forces[1] += b4;
+    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
+    forces[(k + 1) * 2 + 0] = -b5;
+    forces[0] += b5;
+    forces[(k + 1) * 2 + 1] = -b6;
+    forces[1] += b6;
   }
 }
 
-// lps_plane_strain_damaged_tangent: per bond 9 add, 39 mul, 8 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_damaged_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -69,6 +71,7 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -77,12 +80,16 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 2.0 * (P_lambda - P_mu);
-  const double p1 = p0 * s_theta;
-  const double p2 = 8.0 * P_mu;
+  const double p1 = 1.0 / s_m;
+  const double p2 = p1 * V0;
+  const double p3 = 2.0 * (P_lambda - P_mu);
+  const double p4 = p3 * s_theta;
+  const double p5 = 8.0 * P_mu;
+  const double p6 = 8.0 * p1 * P_mu;
+  const double p7 = p3 * p1;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -91,34 +98,32 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = b3 + b4;
-    const double b6 = p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / b5;
-    const double b7 = V0 * (p1 * xi_0 + b6 * xi_0) * V * alpha / s_m * w;
-    const double b8 = V0 * (p1 * xi_1 + b6 * xi_1) * V * alpha / s_m * w;
-    const double b9 = p2 * alpha * w;
-    const double b10 = s_m * b5;
-    const double b11 = b9 / b10;
-    const double b12 = b9 * xi_1 / b10 * xi_0;
-    const double b13 = 2.0 * V * alpha * w / s_m;
-    const double b14 = p0 * alpha * w / s_m;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b7;
-    if (forces != nullptr) forces[0] += b7;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b8;
-    if (forces != nullptr) forces[1] += b8;
-    factors.direct[k * 4 + 0] = b11 * b3;
-    factors.direct[k * 4 + 1] = b12;
-    factors.direct[k * 4 + 2] = b12;
-    factors.direct[k * 4 + 3] = b11 * b4;
-    factors.right[(k * 1 + 0) * 2 + 0] = b13 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b13 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b14 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b14 * xi_1;
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = 1.0 / (b8 + b9);
+    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
+    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * alpha * w;
+    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * alpha * w;
+    const double b14 = p6 * b10 * alpha * w;
+    const double b15 = b14 * xi_1 * xi_0;
+    const double b16 = p0 * V * alpha * w;
+    const double b17 = p7 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
+    if (forces != nullptr) forces[0] += b12;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
+    if (forces != nullptr) forces[1] += b13;
+    factors.direct[k * 4 + 0] = b14 * b8;
+    factors.direct[k * 4 + 1] = b15;
+    factors.direct[k * 4 + 2] = b15;
+    factors.direct[k * 4 + 3] = b14 * b9;
+    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
   }
 }
 
-// lps_plane_strain_damaged_jvp: per bond 6 add, 33 mul, 7 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -126,6 +131,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
@@ -134,35 +140,36 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    ds_theta += 2.0 * dY_0 * V * alpha * w / s_m * xi_0 + 2.0 * dY_1 * V * alpha * w / s_m * xi_1;
+    ds_theta += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 8.0 * P_mu;
-  const double p1 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p1 = 1.0 / s_m;
+  const double p2 = 8.0 * p1 * P_mu;
+  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b2 = p0 * dY_0 * alpha * w;
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = s_m * (b3 + b4);
-    const double b6 = p0 * dY_1 * alpha * w;
-    const double b7 = p1 * alpha * w / s_m;
-    const double b8 = V0 * (b2 / b5 * b3 + b6 * xi_1 / b5 * xi_0 + b7 * xi_0) * V;
-    const double b9 = V0 * (b2 * xi_1 / b5 * xi_0 + b6 / b5 * b4 + b7 * xi_1) * V;
-    df[(k + 1) * 2 + 0] = -b8;
-    df[0] += b8;
-    df[(k + 1) * 2 + 1] = -b9;
-    df[1] += b9;
+    const double b4 = xi_0 * xi_0;
+    const double b5 = xi_1 * xi_1;
+    const double b6 = 1.0 / (b4 + b5);
+    const double b7 = p2 * dY_0 * b6 * alpha * w;
+    const double b8 = p2 * dY_1 * b6 * alpha * w;
+    const double b9 = p3 * alpha * w;
+    const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
+    const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b10;
+    df[0] += b10;
+    df[(k + 1) * 2 + 1] = -b11;
+    df[1] += b11;
   }
 }
 
-// lps_plane_strain_damaged_energy: per bond 7 add, 14 mul, 2 div, 0 call; per family 2 add, 5 mul, 1 div, 0 call
+// lps_plane_strain_damaged_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -178,9 +185,10 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * V * alpha / (xi_0 * xi_0 + xi_1 * xi_1) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
   }
   double s_theta = 0.0;
+  const double p1 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -189,17 +197,18 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha / s_m * w;
+    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 4.0 * s_bond_energy / s_m * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
 
-// lps_plane_strain_damaged_outputs: per bond 3 add, 6 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_plane_strain_damaged_outputs: per bond 3 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -208,7 +217,7 @@ void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* output
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
@@ -227,7 +236,7 @@ void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments
   moments[0] = s_m;
 }
 
-// lps_plane_strain_intact_residual: per bond 9 add, 20 mul, 4 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_intact_residual: per bond 9 add, 21 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -235,6 +244,7 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -242,11 +252,12 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p0 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p1 = 8.0 * P_mu;
+  const double p1 = 1.0 / s_m * V0;
+  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
+  const double p3 = 8.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -254,17 +265,17 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b2 = p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / (xi_0 * xi_0 + xi_1 * xi_1);
-    const double b3 = V0 * (p0 * xi_0 + b2 * xi_0) * V / s_m * w;
-    const double b4 = V0 * (p0 * xi_1 + b2 * xi_1) * V / s_m * w;
-    forces[(k + 1) * 2 + 0] = -b3;
-    forces[0] += b3;
-    forces[(k + 1) * 2 + 1] = -b4;
-    forces[1] += b4;
+    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
+    forces[(k + 1) * 2 + 0] = -b5;
+    forces[0] += b5;
+    forces[(k + 1) * 2 + 1] = -b6;
+    forces[1] += b6;
   }
 }
 
-// lps_plane_strain_intact_tangent: per bond 9 add, 33 mul, 8 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_intact_tangent: per bond 9 add, 34 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -272,6 +283,7 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -279,12 +291,16 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p0 = 2.0 * (P_lambda - P_mu);
-  const double p1 = p0 * s_theta;
-  const double p2 = 8.0 * P_mu;
+  const double p1 = 1.0 / s_m;
+  const double p2 = p1 * V0;
+  const double p3 = 2.0 * (P_lambda - P_mu);
+  const double p4 = p3 * s_theta;
+  const double p5 = 8.0 * P_mu;
+  const double p6 = 8.0 * p1 * P_mu;
+  const double p7 = p3 * p1;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -292,34 +308,32 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = b3 + b4;
-    const double b6 = p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / b5;
-    const double b7 = V0 * (p1 * xi_0 + b6 * xi_0) * V / s_m * w;
-    const double b8 = V0 * (p1 * xi_1 + b6 * xi_1) * V / s_m * w;
-    const double b9 = p2 * w;
-    const double b10 = s_m * b5;
-    const double b11 = b9 / b10;
-    const double b12 = b9 * xi_1 / b10 * xi_0;
-    const double b13 = 2.0 * V * w / s_m;
-    const double b14 = p0 * w / s_m;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b7;
-    if (forces != nullptr) forces[0] += b7;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b8;
-    if (forces != nullptr) forces[1] += b8;
-    factors.direct[k * 4 + 0] = b11 * b3;
-    factors.direct[k * 4 + 1] = b12;
-    factors.direct[k * 4 + 2] = b12;
-    factors.direct[k * 4 + 3] = b11 * b4;
-    factors.right[(k * 1 + 0) * 2 + 0] = b13 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b13 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b14 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b14 * xi_1;
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = 1.0 / (b8 + b9);
+    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
+    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * w;
+    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * w;
+    const double b14 = p6 * b10 * w;
+    const double b15 = b14 * xi_1 * xi_0;
+    const double b16 = p0 * V * w;
+    const double b17 = p7 * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
+    if (forces != nullptr) forces[0] += b12;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
+    if (forces != nullptr) forces[1] += b13;
+    factors.direct[k * 4 + 0] = b14 * b8;
+    factors.direct[k * 4 + 1] = b15;
+    factors.direct[k * 4 + 2] = b15;
+    factors.direct[k * 4 + 3] = b14 * b9;
+    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
   }
 }
 
-// lps_plane_strain_intact_jvp: per bond 6 add, 28 mul, 7 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 6 add, 29 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -327,6 +341,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
@@ -334,34 +349,35 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    ds_theta += 2.0 * dY_0 * V * w / s_m * xi_0 + 2.0 * dY_1 * V * w / s_m * xi_1;
+    ds_theta += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p0 = 8.0 * P_mu;
-  const double p1 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p1 = 1.0 / s_m;
+  const double p2 = 8.0 * p1 * P_mu;
+  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b2 = p0 * dY_0 * w;
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = s_m * (b3 + b4);
-    const double b6 = p0 * dY_1 * w;
-    const double b7 = p1 * w / s_m;
-    const double b8 = V0 * (b2 / b5 * b3 + b6 * xi_1 / b5 * xi_0 + b7 * xi_0) * V;
-    const double b9 = V0 * (b2 * xi_1 / b5 * xi_0 + b6 / b5 * b4 + b7 * xi_1) * V;
-    df[(k + 1) * 2 + 0] = -b8;
-    df[0] += b8;
-    df[(k + 1) * 2 + 1] = -b9;
-    df[1] += b9;
+    const double b4 = xi_0 * xi_0;
+    const double b5 = xi_1 * xi_1;
+    const double b6 = 1.0 / (b4 + b5);
+    const double b7 = p2 * dY_0 * b6 * w;
+    const double b8 = p2 * dY_1 * b6 * w;
+    const double b9 = p3 * w;
+    const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
+    const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b10;
+    df[0] += b10;
+    df[(k + 1) * 2 + 1] = -b11;
+    df[1] += b11;
   }
 }
 
-// lps_plane_strain_intact_energy: per bond 7 add, 12 mul, 2 div, 0 call; per family 2 add, 5 mul, 1 div, 0 call
+// lps_plane_strain_intact_energy: per bond 7 add, 13 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -376,9 +392,10 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * V / (xi_0 * xi_0 + xi_1 * xi_1) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
   }
   double s_theta = 0.0;
+  const double p1 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -386,17 +403,18 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V / s_m * w;
+    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 4.0 * s_bond_energy / s_m * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
 
-// lps_plane_strain_intact_outputs: per bond 3 add, 5 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_plane_strain_intact_outputs: per bond 3 add, 5 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -404,7 +422,7 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -424,20 +442,20 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
   d.damaged.residual = &lps_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {9, 23, 4, 0};
+  d.damaged.residual_ops = {9, 24, 1, 0};
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {9, 39, 8, 0};
+  d.damaged.tangent_ops = {9, 40, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {6, 33, 7, 0};
+  d.damaged.jvp_ops = {6, 34, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
-  d.intact.residual_ops = {9, 20, 4, 0};
+  d.intact.residual_ops = {9, 21, 1, 0};
   d.intact.tangent = &lps_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {9, 33, 8, 0};
+  d.intact.tangent_ops = {9, 34, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {6, 28, 7, 0};
+  d.intact.jvp_ops = {6, 29, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   return d;
@@ -459,7 +477,7 @@ void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_damaged_residual: per bond 15 add, 32 mul, 5 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_damaged_residual: per bond 15 add, 33 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -467,6 +485,7 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -477,11 +496,12 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p1 = 15.0 * P_mu;
+  const double p1 = 1.0 / s_m * V0;
+  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
+  const double p3 = 15.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -492,20 +512,20 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b2 = p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
-    const double b3 = V0 * (p0 * xi_0 + b2 * xi_0) * V * alpha / s_m * w;
-    const double b4 = V0 * (p0 * xi_1 + b2 * xi_1) * V * alpha / s_m * w;
-    const double b5 = V0 * (p0 * xi_2 + b2 * xi_2) * V * alpha / s_m * w;
-    forces[(k + 1) * 3 + 0] = -b3;
-    forces[0] += b3;
-    forces[(k + 1) * 3 + 1] = -b4;
-    forces[1] += b4;
-    forces[(k + 1) * 3 + 2] = -b5;
-    forces[2] += b5;
+    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
+    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * alpha * w;
+    forces[(k + 1) * 3 + 0] = -b5;
+    forces[0] += b5;
+    forces[(k + 1) * 3 + 1] = -b6;
+    forces[1] += b6;
+    forces[(k + 1) * 3 + 2] = -b7;
+    forces[2] += b7;
   }
 }
 
-// lps_3d_damaged_tangent: per bond 15 add, 54 mul, 10 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_damaged_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -513,6 +533,7 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -523,12 +544,16 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 3.0 * (P_lambda - P_mu);
-  const double p1 = p0 * s_theta;
-  const double p2 = 15.0 * P_mu;
+  const double p1 = 1.0 / s_m;
+  const double p2 = p1 * V0;
+  const double p3 = 3.0 * (P_lambda - P_mu);
+  const double p4 = p3 * s_theta;
+  const double p5 = 15.0 * P_mu;
+  const double p6 = 15.0 * p1 * P_mu;
+  const double p7 = p3 * p1;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -539,48 +564,46 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = xi_2 * xi_2;
-    const double b6 = b3 + b4 + b5;
-    const double b7 = p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / b6;
-    const double b8 = V0 * (p1 * xi_0 + b7 * xi_0) * V * alpha / s_m * w;
-    const double b9 = V0 * (p1 * xi_1 + b7 * xi_1) * V * alpha / s_m * w;
-    const double b10 = V0 * (p1 * xi_2 + b7 * xi_2) * V * alpha / s_m * w;
-    const double b11 = p2 * alpha * w;
-    const double b12 = s_m * b6;
-    const double b13 = b11 / b12;
-    const double b14 = b11 * xi_1 / b12 * xi_0;
-    const double b15 = b11 * xi_2 / b12;
-    const double b16 = b15 * xi_0;
-    const double b17 = b15 * xi_1;
-    const double b18 = 3.0 * V * alpha * w / s_m;
-    const double b19 = p0 * alpha * w / s_m;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b8;
-    if (forces != nullptr) forces[0] += b8;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b9;
-    if (forces != nullptr) forces[1] += b9;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b10;
-    if (forces != nullptr) forces[2] += b10;
-    factors.direct[k * 9 + 0] = b13 * b3;
-    factors.direct[k * 9 + 1] = b14;
-    factors.direct[k * 9 + 2] = b16;
-    factors.direct[k * 9 + 3] = b14;
-    factors.direct[k * 9 + 4] = b13 * b4;
-    factors.direct[k * 9 + 5] = b17;
-    factors.direct[k * 9 + 6] = b16;
-    factors.direct[k * 9 + 7] = b17;
-    factors.direct[k * 9 + 8] = b13 * b5;
-    factors.right[(k * 1 + 0) * 3 + 0] = b18 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b18 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b18 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b19 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b19 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b19 * xi_2;
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = xi_2 * xi_2;
+    const double b11 = 1.0 / (b8 + b9 + b10);
+    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
+    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * alpha * w;
+    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * alpha * w;
+    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * alpha * w;
+    const double b16 = p6 * b11 * alpha * w;
+    const double b17 = b16 * xi_1 * xi_0;
+    const double b18 = b16 * xi_2;
+    const double b19 = b18 * xi_0;
+    const double b20 = b18 * xi_1;
+    const double b21 = p0 * V * alpha * w;
+    const double b22 = p7 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
+    if (forces != nullptr) forces[0] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
+    if (forces != nullptr) forces[1] += b14;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
+    if (forces != nullptr) forces[2] += b15;
+    factors.direct[k * 9 + 0] = b16 * b8;
+    factors.direct[k * 9 + 1] = b17;
+    factors.direct[k * 9 + 2] = b19;
+    factors.direct[k * 9 + 3] = b17;
+    factors.direct[k * 9 + 4] = b16 * b9;
+    factors.direct[k * 9 + 5] = b20;
+    factors.direct[k * 9 + 6] = b19;
+    factors.direct[k * 9 + 7] = b20;
+    factors.direct[k * 9 + 8] = b16 * b10;
+    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
   }
 }
 
-// lps_3d_damaged_jvp: per bond 13 add, 53 mul, 12 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_damaged_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -588,6 +611,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
@@ -598,43 +622,44 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    ds_theta += 3.0 * dY_0 * V * alpha * w / s_m * xi_0 + 3.0 * dY_1 * V * alpha * w / s_m * xi_1 + 3.0 * dY_2 * V * alpha * w / s_m * xi_2;
+    ds_theta += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1 + p0 * dY_2 * V * alpha * w * xi_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 15.0 * P_mu;
-  const double p1 = 3.0 * ds_theta * (P_lambda - P_mu);
+  const double p1 = 1.0 / s_m;
+  const double p2 = 15.0 * p1 * P_mu;
+  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b2 = p0 * dY_0 * alpha * w;
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = xi_2 * xi_2;
-    const double b6 = s_m * (b3 + b4 + b5);
-    const double b7 = p0 * dY_1 * alpha * w;
-    const double b8 = p0 * dY_2 * alpha * w;
-    const double b9 = b8 * xi_2 / b6;
-    const double b10 = p1 * alpha * w / s_m;
-    const double b11 = V0 * (b2 / b6 * b3 + b7 * xi_1 / b6 * xi_0 + b9 * xi_0 + b10 * xi_0) * V;
-    const double b12 = V0 * (b2 * xi_1 / b6 * xi_0 + b7 / b6 * b4 + b9 * xi_1 + b10 * xi_1) * V;
-    const double b13 = V0 * (b2 * xi_2 / b6 * xi_0 + b7 * xi_2 / b6 * xi_1 + b8 / b6 * b5 + b10 * xi_2) * V;
-    df[(k + 1) * 3 + 0] = -b11;
-    df[0] += b11;
-    df[(k + 1) * 3 + 1] = -b12;
-    df[1] += b12;
-    df[(k + 1) * 3 + 2] = -b13;
-    df[2] += b13;
+    const double b4 = xi_0 * xi_0;
+    const double b5 = xi_1 * xi_1;
+    const double b6 = xi_2 * xi_2;
+    const double b7 = 1.0 / (b4 + b5 + b6);
+    const double b8 = p2 * dY_0 * b7 * alpha * w;
+    const double b9 = p2 * dY_1 * b7 * alpha * w;
+    const double b10 = p2 * dY_2 * b7 * alpha * w;
+    const double b11 = b10 * xi_2;
+    const double b12 = p3 * alpha * w;
+    const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
+    const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
+    const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b13;
+    df[0] += b13;
+    df[(k + 1) * 3 + 1] = -b14;
+    df[1] += b14;
+    df[(k + 1) * 3 + 2] = -b15;
+    df[2] += b15;
   }
 }
 
-// lps_3d_damaged_energy: per bond 12 add, 17 mul, 2 div, 0 call; per family 2 add, 5 mul, 1 div, 0 call
+// lps_3d_damaged_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -652,9 +677,10 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * V * alpha / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
   }
   double s_theta = 0.0;
+  const double p1 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -665,17 +691,18 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha / s_m * w;
+    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 7.5 * s_bond_energy / s_m * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
 
-// lps_3d_damaged_outputs: per bond 5 add, 7 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_3d_damaged_outputs: per bond 5 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -686,7 +713,7 @@ void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
@@ -706,7 +733,7 @@ void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_intact_residual: per bond 15 add, 28 mul, 5 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_intact_residual: per bond 15 add, 29 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -714,6 +741,7 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -723,11 +751,12 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p0 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p1 = 15.0 * P_mu;
+  const double p1 = 1.0 / s_m * V0;
+  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
+  const double p3 = 15.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -737,20 +766,20 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b2 = p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
-    const double b3 = V0 * (p0 * xi_0 + b2 * xi_0) * V / s_m * w;
-    const double b4 = V0 * (p0 * xi_1 + b2 * xi_1) * V / s_m * w;
-    const double b5 = V0 * (p0 * xi_2 + b2 * xi_2) * V / s_m * w;
-    forces[(k + 1) * 3 + 0] = -b3;
-    forces[0] += b3;
-    forces[(k + 1) * 3 + 1] = -b4;
-    forces[1] += b4;
-    forces[(k + 1) * 3 + 2] = -b5;
-    forces[2] += b5;
+    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
+    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * w;
+    forces[(k + 1) * 3 + 0] = -b5;
+    forces[0] += b5;
+    forces[(k + 1) * 3 + 1] = -b6;
+    forces[1] += b6;
+    forces[(k + 1) * 3 + 2] = -b7;
+    forces[2] += b7;
   }
 }
 
-// lps_3d_intact_tangent: per bond 15 add, 47 mul, 10 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_intact_tangent: per bond 15 add, 48 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -758,6 +787,7 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -767,12 +797,16 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p0 = 3.0 * (P_lambda - P_mu);
-  const double p1 = p0 * s_theta;
-  const double p2 = 15.0 * P_mu;
+  const double p1 = 1.0 / s_m;
+  const double p2 = p1 * V0;
+  const double p3 = 3.0 * (P_lambda - P_mu);
+  const double p4 = p3 * s_theta;
+  const double p5 = 15.0 * P_mu;
+  const double p6 = 15.0 * p1 * P_mu;
+  const double p7 = p3 * p1;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -782,48 +816,46 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = xi_2 * xi_2;
-    const double b6 = b3 + b4 + b5;
-    const double b7 = p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / b6;
-    const double b8 = V0 * (p1 * xi_0 + b7 * xi_0) * V / s_m * w;
-    const double b9 = V0 * (p1 * xi_1 + b7 * xi_1) * V / s_m * w;
-    const double b10 = V0 * (p1 * xi_2 + b7 * xi_2) * V / s_m * w;
-    const double b11 = p2 * w;
-    const double b12 = s_m * b6;
-    const double b13 = b11 / b12;
-    const double b14 = b11 * xi_1 / b12 * xi_0;
-    const double b15 = b11 * xi_2 / b12;
-    const double b16 = b15 * xi_0;
-    const double b17 = b15 * xi_1;
-    const double b18 = 3.0 * V * w / s_m;
-    const double b19 = p0 * w / s_m;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b8;
-    if (forces != nullptr) forces[0] += b8;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b9;
-    if (forces != nullptr) forces[1] += b9;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b10;
-    if (forces != nullptr) forces[2] += b10;
-    factors.direct[k * 9 + 0] = b13 * b3;
-    factors.direct[k * 9 + 1] = b14;
-    factors.direct[k * 9 + 2] = b16;
-    factors.direct[k * 9 + 3] = b14;
-    factors.direct[k * 9 + 4] = b13 * b4;
-    factors.direct[k * 9 + 5] = b17;
-    factors.direct[k * 9 + 6] = b16;
-    factors.direct[k * 9 + 7] = b17;
-    factors.direct[k * 9 + 8] = b13 * b5;
-    factors.right[(k * 1 + 0) * 3 + 0] = b18 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b18 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b18 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b19 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b19 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b19 * xi_2;
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = xi_2 * xi_2;
+    const double b11 = 1.0 / (b8 + b9 + b10);
+    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
+    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * w;
+    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * w;
+    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * w;
+    const double b16 = p6 * b11 * w;
+    const double b17 = b16 * xi_1 * xi_0;
+    const double b18 = b16 * xi_2;
+    const double b19 = b18 * xi_0;
+    const double b20 = b18 * xi_1;
+    const double b21 = p0 * V * w;
+    const double b22 = p7 * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
+    if (forces != nullptr) forces[0] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
+    if (forces != nullptr) forces[1] += b14;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
+    if (forces != nullptr) forces[2] += b15;
+    factors.direct[k * 9 + 0] = b16 * b8;
+    factors.direct[k * 9 + 1] = b17;
+    factors.direct[k * 9 + 2] = b19;
+    factors.direct[k * 9 + 3] = b17;
+    factors.direct[k * 9 + 4] = b16 * b9;
+    factors.direct[k * 9 + 5] = b20;
+    factors.direct[k * 9 + 6] = b19;
+    factors.direct[k * 9 + 7] = b20;
+    factors.direct[k * 9 + 8] = b16 * b10;
+    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
   }
 }
 
-// lps_3d_intact_jvp: per bond 13 add, 46 mul, 12 div, 0 call; per family 1 add, 3 mul, 0 div, 0 call
+// lps_3d_intact_jvp: per bond 13 add, 48 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -831,6 +863,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
@@ -840,42 +873,43 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    ds_theta += 3.0 * dY_0 * V * w / s_m * xi_0 + 3.0 * dY_1 * V * w / s_m * xi_1 + 3.0 * dY_2 * V * w / s_m * xi_2;
+    ds_theta += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1 + p0 * dY_2 * V * w * xi_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p0 = 15.0 * P_mu;
-  const double p1 = 3.0 * ds_theta * (P_lambda - P_mu);
+  const double p1 = 1.0 / s_m;
+  const double p2 = 15.0 * p1 * P_mu;
+  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b2 = p0 * dY_0 * w;
-    const double b3 = xi_0 * xi_0;
-    const double b4 = xi_1 * xi_1;
-    const double b5 = xi_2 * xi_2;
-    const double b6 = s_m * (b3 + b4 + b5);
-    const double b7 = p0 * dY_1 * w;
-    const double b8 = p0 * dY_2 * w;
-    const double b9 = b8 * xi_2 / b6;
-    const double b10 = p1 * w / s_m;
-    const double b11 = V0 * (b2 / b6 * b3 + b7 * xi_1 / b6 * xi_0 + b9 * xi_0 + b10 * xi_0) * V;
-    const double b12 = V0 * (b2 * xi_1 / b6 * xi_0 + b7 / b6 * b4 + b9 * xi_1 + b10 * xi_1) * V;
-    const double b13 = V0 * (b2 * xi_2 / b6 * xi_0 + b7 * xi_2 / b6 * xi_1 + b8 / b6 * b5 + b10 * xi_2) * V;
-    df[(k + 1) * 3 + 0] = -b11;
-    df[0] += b11;
-    df[(k + 1) * 3 + 1] = -b12;
-    df[1] += b12;
-    df[(k + 1) * 3 + 2] = -b13;
-    df[2] += b13;
+    const double b4 = xi_0 * xi_0;
+    const double b5 = xi_1 * xi_1;
+    const double b6 = xi_2 * xi_2;
+    const double b7 = 1.0 / (b4 + b5 + b6);
+    const double b8 = p2 * dY_0 * b7 * w;
+    const double b9 = p2 * dY_1 * b7 * w;
+    const double b10 = p2 * dY_2 * b7 * w;
+    const double b11 = b10 * xi_2;
+    const double b12 = p3 * w;
+    const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
+    const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
+    const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b13;
+    df[0] += b13;
+    df[(k + 1) * 3 + 1] = -b14;
+    df[1] += b14;
+    df[(k + 1) * 3 + 2] = -b15;
+    df[2] += b15;
   }
 }
 
-// lps_3d_intact_energy: per bond 12 add, 15 mul, 2 div, 0 call; per family 2 add, 5 mul, 1 div, 0 call
+// lps_3d_intact_energy: per bond 12 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -892,9 +926,10 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * V / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
   }
   double s_theta = 0.0;
+  const double p1 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -904,17 +939,18 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V / s_m * w;
+    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 7.5 * s_bond_energy / s_m * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
 
-// lps_3d_intact_outputs: per bond 5 add, 6 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_3d_intact_outputs: per bond 5 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -924,7 +960,7 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V / s_m * w;
+    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -944,26 +980,26 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
   d.damaged.residual = &lps_3d_damaged_residual;
-  d.damaged.residual_ops = {15, 32, 5, 0};
+  d.damaged.residual_ops = {15, 33, 1, 0};
   d.damaged.tangent = &lps_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 54, 10, 0};
+  d.damaged.tangent_ops = {15, 55, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {13, 53, 12, 0};
+  d.damaged.jvp_ops = {13, 55, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
-  d.intact.residual_ops = {15, 28, 5, 0};
+  d.intact.residual_ops = {15, 29, 1, 0};
   d.intact.tangent = &lps_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 47, 10, 0};
+  d.intact.tangent_ops = {15, 48, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {13, 46, 12, 0};
+  d.intact.jvp_ops = {13, 48, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   return d;
 }
 
-// lps_corrected_plane_strain_damaged_moments: per bond 1 add, 14 mul, 2 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_corrected_plane_strain_damaged_moments: per bond 1 add, 14 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
@@ -979,19 +1015,19 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_1_0 = 0.0;
   double s_dilatation_moment_1_1 = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double b0 = 2.0 * V * alpha * w;
-    const double b1 = b0 / s_m;
-    const double b2 = b0 * xi_1 / s_m * xi_0;
-    s_dilatation_moment_0_0 += b1 * xi_0 * xi_0;
+    const double b1 = p0 * V * alpha * w;
+    const double b2 = b1 * xi_1 * xi_0;
+    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
     s_dilatation_moment_0_1 += b2;
     s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * xi_1 * xi_1;
+    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
   }
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
@@ -1000,34 +1036,35 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 31 mul, 4 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 32 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1036,11 +1073,12 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V * alpha / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p16 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p17 = 8.0 * P_mu;
+  const double p17 = 1.0 / s_m * V0;
+  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
+  const double p19 = 8.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1049,44 +1087,45 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b18 = p17 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / (xi_0 * xi_0 + xi_1 * xi_1);
-    const double b19 = V0 * (p16 * (p10 * xi_0 + p13 * xi_1) + b18 * xi_0) * V * alpha / s_m * w;
-    const double b20 = V0 * (p16 * (p14 * xi_0 + p15 * xi_1) + b18 * xi_1) * V * alpha / s_m * w;
-    forces[(k + 1) * 2 + 0] = -b19;
-    forces[0] += b19;
-    forces[(k + 1) * 2 + 1] = -b20;
-    forces[1] += b20;
+    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
+    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
+    forces[(k + 1) * 2 + 0] = -b21;
+    forces[0] += b21;
+    forces[(k + 1) * 2 + 1] = -b22;
+    forces[1] += b22;
   }
 }
 
-// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 52 mul, 10 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1095,12 +1134,16 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V * alpha / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p16 = 2.0 * (P_lambda - P_mu);
-  const double p17 = p16 * s_theta;
-  const double p18 = 8.0 * P_mu;
+  const double p17 = 1.0 / s_m;
+  const double p18 = p17 * V0;
+  const double p19 = 2.0 * (P_lambda - P_mu);
+  const double p20 = p19 * s_theta;
+  const double p21 = 8.0 * P_mu;
+  const double p22 = 8.0 * p17 * P_mu;
+  const double p23 = p19 * p17;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1109,61 +1152,60 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b19 = p10 * xi_0 + p13 * xi_1;
-    const double b20 = xi_0 * xi_0;
-    const double b21 = xi_1 * xi_1;
-    const double b22 = b20 + b21;
-    const double b23 = p18 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / b22;
-    const double b24 = V0 * (p17 * b19 + b23 * xi_0) * V * alpha / s_m * w;
-    const double b25 = p14 * xi_0 + p15 * xi_1;
-    const double b26 = V0 * (p17 * b25 + b23 * xi_1) * V * alpha / s_m * w;
-    const double b27 = p18 * alpha * w;
-    const double b28 = s_m * b22;
-    const double b29 = b27 / b28;
-    const double b30 = b27 * xi_1 / b28 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b24;
-    if (forces != nullptr) forces[0] += b24;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b26;
-    if (forces != nullptr) forces[1] += b26;
-    factors.direct[k * 4 + 0] = b29 * b20;
-    factors.direct[k * 4 + 1] = b30;
-    factors.direct[k * 4 + 2] = b30;
-    factors.direct[k * 4 + 3] = b29 * b21;
-    factors.right[(k * 1 + 0) * 2 + 0] = 2.0 * b19 * V * alpha / s_m * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = 2.0 * b25 * V * alpha / s_m * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p16 * b19 * alpha / s_m * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p16 * b25 * alpha / s_m * w;
+    const double b24 = p11 * xi_0 + p14 * xi_1;
+    const double b25 = xi_0 * xi_0;
+    const double b26 = xi_1 * xi_1;
+    const double b27 = 1.0 / (b25 + b26);
+    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
+    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * alpha * w;
+    const double b30 = p15 * xi_0 + p16 * xi_1;
+    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * alpha * w;
+    const double b32 = p22 * b27 * alpha * w;
+    const double b33 = b32 * xi_1 * xi_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
+    if (forces != nullptr) forces[0] += b29;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
+    if (forces != nullptr) forces[1] += b31;
+    factors.direct[k * 4 + 0] = b32 * b25;
+    factors.direct[k * 4 + 1] = b33;
+    factors.direct[k * 4 + 2] = b33;
+    factors.direct[k * 4 + 3] = b32 * b26;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * alpha * w;
   }
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 43 mul, 8 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -1172,41 +1214,42 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    ds_theta += 2.0 * dY_0 * (p10 * xi_0 + p13 * xi_1) * V * alpha / s_m * w + 2.0 * dY_1 * (p14 * xi_0 + p15 * xi_1) * V * alpha / s_m * w;
+    ds_theta += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * alpha * w;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p16 = 8.0 * P_mu;
-  const double p17 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p17 = 1.0 / s_m;
+  const double p18 = 8.0 * p17 * P_mu;
+  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b18 = p16 * dY_0 * alpha * w;
-    const double b19 = xi_0 * xi_0;
-    const double b20 = xi_1 * xi_1;
-    const double b21 = s_m * (b19 + b20);
-    const double b22 = p16 * dY_1 * alpha * w;
-    const double b23 = V0 * (b18 / b21 * b19 + b22 * xi_1 / b21 * xi_0 + p17 * (p10 * xi_0 + p13 * xi_1) * alpha / s_m * w) * V;
-    const double b24 = V0 * (b18 * xi_1 / b21 * xi_0 + b22 / b21 * b20 + p17 * (p14 * xi_0 + p15 * xi_1) * alpha / s_m * w) * V;
-    df[(k + 1) * 2 + 0] = -b23;
-    df[0] += b23;
-    df[(k + 1) * 2 + 1] = -b24;
-    df[1] += b24;
+    const double b20 = xi_0 * xi_0;
+    const double b21 = xi_1 * xi_1;
+    const double b22 = 1.0 / (b20 + b21);
+    const double b23 = p18 * dY_0 * b22 * alpha * w;
+    const double b24 = p18 * dY_1 * b22 * alpha * w;
+    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
+    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
+    df[(k + 1) * 2 + 0] = -b25;
+    df[0] += b25;
+    df[(k + 1) * 2 + 1] = -b26;
+    df[1] += b26;
   }
 }
 
-// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 18 mul, 2 div, 0 call; per family 14 add, 24 mul, 5 div, 0 call
+// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
@@ -1219,22 +1262,63 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * V * alpha / (xi_0 * xi_0 + xi_1 * xi_1) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
   }
   double s_theta = 0.0;
+  const double p1 = 2.0 * (1.0 / s_m);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    s_theta += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+  }
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  return W;
+}
+
+// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 10 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p2 = 1.0000000000000001e-16 * p1 * p1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
   const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
   const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
   const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
   const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
   const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p8 = p4 * p5 - p6 * p7;
-  const double p9 = p4 / p8;
-  const double p10 = p6 / p8;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
   const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
-  const double p12 = p5 / p8;
-  const double p13 = p7 / p8;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
@@ -1246,51 +1330,12 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha / s_m * w;
-  }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 4.0 * s_bond_energy / s_m * P_mu;
-  return W;
-}
-
-// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 10 mul, 1 div, 0 call; per family 12 add, 19 mul, 4 div, 0 call
-void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[4];
-  const double s_dilatation_moment_1_0 = fam.moments[3];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double xi_1 = fam.xi[k * 2 + 1];
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V * alpha / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
 
-// lps_corrected_plane_strain_intact_moments: per bond 1 add, 12 mul, 2 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_corrected_plane_strain_intact_moments: per bond 1 add, 12 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
@@ -1305,18 +1350,18 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_1_0 = 0.0;
   double s_dilatation_moment_1_1 = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double b0 = 2.0 * V * w;
-    const double b1 = b0 / s_m;
-    const double b2 = b0 * xi_1 / s_m * xi_0;
-    s_dilatation_moment_0_0 += b1 * xi_0 * xi_0;
+    const double b1 = p0 * V * w;
+    const double b2 = b1 * xi_1 * xi_0;
+    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
     s_dilatation_moment_0_1 += b2;
     s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * xi_1 * xi_1;
+    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
   }
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
@@ -1325,34 +1370,35 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_intact_residual: per bond 13 add, 28 mul, 4 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_intact_residual: per bond 13 add, 29 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1360,11 +1406,12 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p16 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p17 = 8.0 * P_mu;
+  const double p17 = 1.0 / s_m * V0;
+  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
+  const double p19 = 8.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1372,44 +1419,45 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b18 = p17 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / (xi_0 * xi_0 + xi_1 * xi_1);
-    const double b19 = V0 * (p16 * (p10 * xi_0 + p13 * xi_1) + b18 * xi_0) * V / s_m * w;
-    const double b20 = V0 * (p16 * (p14 * xi_0 + p15 * xi_1) + b18 * xi_1) * V / s_m * w;
-    forces[(k + 1) * 2 + 0] = -b19;
-    forces[0] += b19;
-    forces[(k + 1) * 2 + 1] = -b20;
-    forces[1] += b20;
+    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
+    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
+    forces[(k + 1) * 2 + 0] = -b21;
+    forces[0] += b21;
+    forces[(k + 1) * 2 + 1] = -b22;
+    forces[1] += b22;
   }
 }
 
-// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 44 mul, 10 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 45 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1417,12 +1465,16 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p16 = 2.0 * (P_lambda - P_mu);
-  const double p17 = p16 * s_theta;
-  const double p18 = 8.0 * P_mu;
+  const double p17 = 1.0 / s_m;
+  const double p18 = p17 * V0;
+  const double p19 = 2.0 * (P_lambda - P_mu);
+  const double p20 = p19 * s_theta;
+  const double p21 = 8.0 * P_mu;
+  const double p22 = 8.0 * p17 * P_mu;
+  const double p23 = p19 * p17;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1430,61 +1482,60 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b19 = p10 * xi_0 + p13 * xi_1;
-    const double b20 = xi_0 * xi_0;
-    const double b21 = xi_1 * xi_1;
-    const double b22 = b20 + b21;
-    const double b23 = p18 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) / b22;
-    const double b24 = V0 * (p17 * b19 + b23 * xi_0) * V / s_m * w;
-    const double b25 = p14 * xi_0 + p15 * xi_1;
-    const double b26 = V0 * (p17 * b25 + b23 * xi_1) * V / s_m * w;
-    const double b27 = p18 * w;
-    const double b28 = s_m * b22;
-    const double b29 = b27 / b28;
-    const double b30 = b27 * xi_1 / b28 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b24;
-    if (forces != nullptr) forces[0] += b24;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b26;
-    if (forces != nullptr) forces[1] += b26;
-    factors.direct[k * 4 + 0] = b29 * b20;
-    factors.direct[k * 4 + 1] = b30;
-    factors.direct[k * 4 + 2] = b30;
-    factors.direct[k * 4 + 3] = b29 * b21;
-    factors.right[(k * 1 + 0) * 2 + 0] = 2.0 * b19 * V / s_m * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = 2.0 * b25 * V / s_m * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p16 * b19 / s_m * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p16 * b25 / s_m * w;
+    const double b24 = p11 * xi_0 + p14 * xi_1;
+    const double b25 = xi_0 * xi_0;
+    const double b26 = xi_1 * xi_1;
+    const double b27 = 1.0 / (b25 + b26);
+    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
+    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * w;
+    const double b30 = p15 * xi_0 + p16 * xi_1;
+    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * w;
+    const double b32 = p22 * b27 * w;
+    const double b33 = b32 * xi_1 * xi_0;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
+    if (forces != nullptr) forces[0] += b29;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
+    if (forces != nullptr) forces[1] += b31;
+    factors.direct[k * 4 + 0] = b32 * b25;
+    factors.direct[k * 4 + 1] = b33;
+    factors.direct[k * 4 + 2] = b33;
+    factors.direct[k * 4 + 3] = b32 * b26;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * w;
   }
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 37 mul, 8 div, 0 call; per family 13 add, 22 mul, 4 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 38 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double V0 = fam.V0;
   const double P_mu = fam.params[1];
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -1492,40 +1543,41 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    ds_theta += 2.0 * dY_0 * (p10 * xi_0 + p13 * xi_1) * V / s_m * w + 2.0 * dY_1 * (p14 * xi_0 + p15 * xi_1) * V / s_m * w;
+    ds_theta += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * w;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p16 = 8.0 * P_mu;
-  const double p17 = 2.0 * ds_theta * (P_lambda - P_mu);
+  const double p17 = 1.0 / s_m;
+  const double p18 = 8.0 * p17 * P_mu;
+  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
   for (int k = 0; k < L; ++k) {
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
-    const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b18 = p16 * dY_0 * w;
-    const double b19 = xi_0 * xi_0;
-    const double b20 = xi_1 * xi_1;
-    const double b21 = s_m * (b19 + b20);
-    const double b22 = p16 * dY_1 * w;
-    const double b23 = V0 * (b18 / b21 * b19 + b22 * xi_1 / b21 * xi_0 + p17 * (p10 * xi_0 + p13 * xi_1) / s_m * w) * V;
-    const double b24 = V0 * (b18 * xi_1 / b21 * xi_0 + b22 / b21 * b20 + p17 * (p14 * xi_0 + p15 * xi_1) / s_m * w) * V;
-    df[(k + 1) * 2 + 0] = -b23;
-    df[0] += b23;
-    df[(k + 1) * 2 + 1] = -b24;
-    df[1] += b24;
+    const double b20 = xi_0 * xi_0;
+    const double b21 = xi_1 * xi_1;
+    const double b22 = 1.0 / (b20 + b21);
+    const double b23 = p18 * dY_0 * b22 * w;
+    const double b24 = p18 * dY_1 * b22 * w;
+    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * w) * V;
+    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * w) * V;
+    df[(k + 1) * 2 + 0] = -b25;
+    df[0] += b25;
+    df[(k + 1) * 2 + 1] = -b26;
+    df[1] += b26;
   }
 }
 
-// lps_corrected_plane_strain_intact_energy: per bond 9 add, 16 mul, 2 div, 0 call; per family 14 add, 24 mul, 5 div, 0 call
+// lps_corrected_plane_strain_intact_energy: per bond 9 add, 17 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
   const double s_dilatation_moment_0_0 = fam.moments[1];
   const double s_dilatation_moment_1_1 = fam.moments[4];
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
@@ -1537,22 +1589,62 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * V / (xi_0 * xi_0 + xi_1 * xi_1) * w;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
   }
   double s_theta = 0.0;
+  const double p1 = 2.0 * (1.0 / s_m);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    s_theta += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * w;
+  }
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  return W;
+}
+
+// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 9 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p2 = 1.0000000000000001e-16 * p1 * p1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
   const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
   const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
   const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
   const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
   const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p8 = p4 * p5 - p6 * p7;
-  const double p9 = p4 / p8;
-  const double p10 = p6 / p8;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
   const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
-  const double p12 = p5 / p8;
-  const double p13 = p7 / p8;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
@@ -1563,45 +1655,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 2.0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V / s_m * w;
-  }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 4.0 * s_bond_energy / s_m * P_mu;
-  return W;
-}
-
-// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 9 mul, 1 div, 0 call; per family 12 add, 19 mul, 4 div, 0 call
-void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[4];
-  const double s_dilatation_moment_1_0 = fam.moments[3];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p3 = p1 + p2 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
-  const double p4 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
-  const double p6 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
-  const double p7 = p3 * p4 - p5 * p6;
-  const double p8 = p3 / p7;
-  const double p9 = p5 / p7;
-  const double p10 = p8 * s_dilatation_moment_0_0 - p9 * s_dilatation_moment_0_1;
-  const double p11 = p4 / p7;
-  const double p12 = p6 / p7;
-  const double p13 = p11 * s_dilatation_moment_0_1 - p12 * s_dilatation_moment_0_0;
-  const double p14 = p8 * s_dilatation_moment_1_0 - p9 * s_dilatation_moment_1_1;
-  const double p15 = p11 * s_dilatation_moment_1_1 - p12 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double xi_1 = fam.xi[k * 2 + 1];
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    s_theta += 2.0 * ((p10 * xi_0 + p13 * xi_1) * (Y_0 - xi_0) + (p14 * xi_0 + p15 * xi_1) * (Y_1 - xi_1)) * V / s_m * w;
+    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -1621,26 +1675,26 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
   d.damaged.residual = &lps_corrected_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {13, 31, 4, 0};
+  d.damaged.residual_ops = {13, 32, 1, 0};
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {13, 52, 10, 0};
+  d.damaged.tangent_ops = {13, 53, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {10, 43, 8, 0};
+  d.damaged.jvp_ops = {10, 44, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
-  d.intact.residual_ops = {13, 28, 4, 0};
+  d.intact.residual_ops = {13, 29, 1, 0};
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {13, 44, 10, 0};
+  d.intact.tangent_ops = {13, 45, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {10, 37, 8, 0};
+  d.intact.jvp_ops = {10, 38, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   return d;
 }
 
-// lps_corrected_3d_damaged_moments: per bond 2 add, 20 mul, 3 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_corrected_3d_damaged_moments: per bond 2 add, 20 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
@@ -1662,6 +1716,7 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   double s_dilatation_moment_2_0 = 0.0;
   double s_dilatation_moment_2_1 = 0.0;
   double s_dilatation_moment_2_2 = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -1669,21 +1724,20 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double b0 = 3.0 * V * alpha * w;
-    const double b1 = b0 / s_m;
-    const double b2 = b0 * xi_1 / s_m * xi_0;
-    const double b3 = b0 * xi_2 / s_m;
+    const double b1 = p0 * V * alpha * w;
+    const double b2 = b1 * xi_1 * xi_0;
+    const double b3 = b1 * xi_2;
     const double b4 = b3 * xi_0;
     const double b5 = b3 * xi_1;
-    s_dilatation_moment_0_0 += b1 * xi_0 * xi_0;
+    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
     s_dilatation_moment_0_1 += b2;
     s_dilatation_moment_0_2 += b4;
     s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * xi_1 * xi_1;
+    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
     s_dilatation_moment_1_2 += b5;
     s_dilatation_moment_2_0 += b4;
     s_dilatation_moment_2_1 += b5;
-    s_dilatation_moment_2_2 += b1 * xi_2 * xi_2;
+    s_dilatation_moment_2_2 += b1 * (xi_2 * xi_2);
   }
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
@@ -1697,379 +1751,54 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_damaged_residual: per bond 27 add, 50 mul, 5 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
+// lps_corrected_3d_damaged_residual: per bond 27 add, 51 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
   const double s_dilatation_moment_1_1 = fam.moments[5];
   const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
   const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V * alpha / s_m * w;
-  }
-  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p37 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p38 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b39 = p38 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
-    const double b40 = V0 * (p37 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) + b39 * xi_0) * V * alpha / s_m * w;
-    const double b41 = V0 * (p37 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) + b39 * xi_1) * V * alpha / s_m * w;
-    const double b42 = V0 * (p37 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) + b39 * xi_2) * V * alpha / s_m * w;
-    forces[(k + 1) * 3 + 0] = -b40;
-    forces[0] += b40;
-    forces[(k + 1) * 3 + 1] = -b41;
-    forces[1] += b41;
-    forces[(k + 1) * 3 + 2] = -b42;
-    forces[2] += b42;
-  }
-}
-
-// lps_corrected_3d_damaged_tangent: per bond 27 add, 82 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
-void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V * alpha / s_m * w;
-  }
-  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p37 = 3.0 * (P_lambda - P_mu);
-  const double p38 = p37 * s_theta;
-  const double p39 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b40 = p22 * xi_0 + p26 * xi_1 + p30 * xi_2;
-    const double b41 = xi_0 * xi_0;
-    const double b42 = xi_1 * xi_1;
-    const double b43 = xi_2 * xi_2;
-    const double b44 = b41 + b42 + b43;
-    const double b45 = p39 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / b44;
-    const double b46 = V0 * (p38 * b40 + b45 * xi_0) * V * alpha / s_m * w;
-    const double b47 = p31 * xi_0 + p32 * xi_1 + p33 * xi_2;
-    const double b48 = V0 * (p38 * b47 + b45 * xi_1) * V * alpha / s_m * w;
-    const double b49 = p34 * xi_0 + p35 * xi_1 + p36 * xi_2;
-    const double b50 = V0 * (p38 * b49 + b45 * xi_2) * V * alpha / s_m * w;
-    const double b51 = p39 * alpha * w;
-    const double b52 = s_m * b44;
-    const double b53 = b51 / b52;
-    const double b54 = b51 * xi_1 / b52 * xi_0;
-    const double b55 = b51 * xi_2 / b52;
-    const double b56 = b55 * xi_0;
-    const double b57 = b55 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b46;
-    if (forces != nullptr) forces[0] += b46;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b48;
-    if (forces != nullptr) forces[1] += b48;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b50;
-    if (forces != nullptr) forces[2] += b50;
-    factors.direct[k * 9 + 0] = b53 * b41;
-    factors.direct[k * 9 + 1] = b54;
-    factors.direct[k * 9 + 2] = b56;
-    factors.direct[k * 9 + 3] = b54;
-    factors.direct[k * 9 + 4] = b53 * b42;
-    factors.direct[k * 9 + 5] = b57;
-    factors.direct[k * 9 + 6] = b56;
-    factors.direct[k * 9 + 7] = b57;
-    factors.direct[k * 9 + 8] = b53 * b43;
-    factors.right[(k * 1 + 0) * 3 + 0] = 3.0 * b40 * V * alpha / s_m * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = 3.0 * b47 * V * alpha / s_m * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = 3.0 * b49 * V * alpha / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p37 * b40 * alpha / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p37 * b47 * alpha / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p37 * b49 * alpha / s_m * w;
-  }
-}
-
-// lps_corrected_3d_damaged_jvp: per bond 25 add, 75 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
-void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
-  double ds_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
-    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    ds_theta += 3.0 * dY_0 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * V * alpha / s_m * w + 3.0 * dY_1 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * V * alpha / s_m * w + 3.0 * dY_2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * V * alpha / s_m * w;
-  }
-  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p37 = 15.0 * P_mu;
-  const double p38 = 3.0 * ds_theta * (P_lambda - P_mu);
-  for (int k = 0; k < L; ++k) {
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
-    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double V = fam.V[k];
-    const double b39 = p37 * dY_0 * alpha * w;
-    const double b40 = xi_0 * xi_0;
-    const double b41 = xi_1 * xi_1;
-    const double b42 = xi_2 * xi_2;
-    const double b43 = s_m * (b40 + b41 + b42);
-    const double b44 = p37 * dY_1 * alpha * w;
-    const double b45 = p37 * dY_2 * alpha * w;
-    const double b46 = b45 * xi_2 / b43;
-    const double b47 = V0 * (b39 / b43 * b40 + b44 * xi_1 / b43 * xi_0 + b46 * xi_0 + p38 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * alpha / s_m * w) * V;
-    const double b48 = V0 * (b39 * xi_1 / b43 * xi_0 + b44 / b43 * b41 + b46 * xi_1 + p38 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * alpha / s_m * w) * V;
-    const double b49 = V0 * (b39 * xi_2 / b43 * xi_0 + b44 * xi_2 / b43 * xi_1 + b45 / b43 * b42 + p38 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * alpha / s_m * w) * V;
-    df[(k + 1) * 3 + 0] = -b47;
-    df[0] += b47;
-    df[(k + 1) * 3 + 1] = -b48;
-    df[1] += b48;
-    df[(k + 1) * 3 + 2] = -b49;
-    df[2] += b49;
-  }
-}
-
-// lps_corrected_3d_damaged_energy: per bond 18 add, 26 mul, 2 div, 0 call; per family 55 add, 79 mul, 10 div, 0 call
-double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
-  double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * V * alpha / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * w;
-  }
-  double s_theta = 0.0;
-  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p2 = 1.0000000000000001e-16 * p1 * p1;
-  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p4 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p5 = p2 + p3 + p4 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p7 = p2 + p6 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p4;
-  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p9 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p10 = p5 * p7 - p8 * p9;
-  const double p11 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p12 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p13 = p8 * p11 - p7 * p12;
-  const double p14 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p15 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p6 + p3;
-  const double p16 = p5 * p11;
-  const double p17 = p12 * p9;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
   const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p19 = p13 * p14 + p10 * p15 - (p16 - p17) * p18;
-  const double p20 = p10 / p19;
-  const double p21 = (p17 - p16) / p19;
-  const double p22 = p13 / p19;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
   const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
-  const double p24 = (p8 * p14 - p5 * p18) / p19;
-  const double p25 = (p5 * p15 - p12 * p14) / p19;
-  const double p26 = (p12 * p18 - p15 * p8) / p19;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
   const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
-  const double p28 = (p9 * p18 - p7 * p14) / p19;
-  const double p29 = (p11 * p14 - p15 * p9) / p19;
-  const double p30 = (p7 * p15 - p11 * p18) / p19;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
   const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
   const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
   const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
@@ -2087,63 +1816,12 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha / s_m * w;
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 7.5 * s_bond_energy / s_m * P_mu;
-  return W;
-}
-
-// lps_corrected_3d_damaged_outputs: per bond 11 add, 16 mul, 1 div, 0 call; per family 53 add, 74 mul, 9 div, 0 call
-void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p38 = 1.0 / s_m * V0;
+  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
+  const double p40 = 15.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2154,12 +1832,397 @@ void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* output
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V * alpha / s_m * w;
+    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * alpha * w;
+    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
+    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
+    forces[(k + 1) * 3 + 0] = -b42;
+    forces[0] += b42;
+    forces[(k + 1) * 3 + 1] = -b43;
+    forces[1] += b43;
+    forces[(k + 1) * 3 + 2] = -b44;
+    forces[2] += b44;
+  }
+}
+
+// lps_corrected_3d_damaged_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p38 = 1.0 / s_m;
+  const double p39 = p38 * V0;
+  const double p40 = 3.0 * (P_lambda - P_mu);
+  const double p41 = p40 * s_theta;
+  const double p42 = 15.0 * P_mu;
+  const double p43 = 15.0 * p38 * P_mu;
+  const double p44 = p40 * p38;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b46 = xi_0 * xi_0;
+    const double b47 = xi_1 * xi_1;
+    const double b48 = xi_2 * xi_2;
+    const double b49 = 1.0 / (b46 + b47 + b48);
+    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
+    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * alpha * w;
+    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * alpha * w;
+    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * alpha * w;
+    const double b56 = p43 * b49 * alpha * w;
+    const double b57 = b56 * xi_1 * xi_0;
+    const double b58 = b56 * xi_2;
+    const double b59 = b58 * xi_0;
+    const double b60 = b58 * xi_1;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
+    if (forces != nullptr) forces[0] += b51;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
+    if (forces != nullptr) forces[1] += b53;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
+    if (forces != nullptr) forces[2] += b55;
+    factors.direct[k * 9 + 0] = b56 * b46;
+    factors.direct[k * 9 + 1] = b57;
+    factors.direct[k * 9 + 2] = b59;
+    factors.direct[k * 9 + 3] = b57;
+    factors.direct[k * 9 + 4] = b56 * b47;
+    factors.direct[k * 9 + 5] = b60;
+    factors.direct[k * 9 + 6] = b59;
+    factors.direct[k * 9 + 7] = b60;
+    factors.direct[k * 9 + 8] = b56 * b48;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * alpha * w;
+  }
+}
+
+// lps_corrected_3d_damaged_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  const double P_mu = fam.params[1];
+  const double P_lambda = fam.params[0];
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    ds_theta += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * alpha * w;
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p38 = 1.0 / s_m;
+  const double p39 = 15.0 * p38 * P_mu;
+  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b41 = xi_0 * xi_0;
+    const double b42 = xi_1 * xi_1;
+    const double b43 = xi_2 * xi_2;
+    const double b44 = 1.0 / (b41 + b42 + b43);
+    const double b45 = p39 * dY_0 * b44 * alpha * w;
+    const double b46 = p39 * dY_1 * b44 * alpha * w;
+    const double b47 = p39 * dY_2 * b44 * alpha * w;
+    const double b48 = b47 * xi_2;
+    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * alpha * w) * V;
+    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
+    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
+    df[(k + 1) * 3 + 0] = -b49;
+    df[0] += b49;
+    df[(k + 1) * 3 + 1] = -b50;
+    df[1] += b50;
+    df[(k + 1) * 3 + 2] = -b51;
+    df[2] += b51;
+  }
+}
+
+// lps_corrected_3d_damaged_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_bond_energy = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+  }
+  double s_theta = 0.0;
+  const double p1 = 3.0 * (1.0 / s_m);
+  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p4 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p5 = 1.0000000000000001e-16 * (p4 * p4);
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p7 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p8 = p5 + p6 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p7;
+  const double p9 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p10 = p2 * p3 - p8 * p9;
+  const double p11 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p12 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p13 = p5 + p12 + p7 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p14 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p15 = p13 * p8 - p2 * p14;
+  const double p16 = p5 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p6 + p12;
+  const double p17 = p13 * p3;
+  const double p18 = p9 * p14;
+  const double p19 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p20 = 1.0 / (p10 * p11 + p15 * p16 - (p17 - p18) * p19);
+  const double p21 = p20 * p15;
+  const double p22 = (p18 - p17) * p20;
+  const double p23 = p20 * p10;
+  const double p24 = p21 * s_dilatation_moment_0_0 + p22 * s_dilatation_moment_0_1 + p23 * s_dilatation_moment_0_2;
+  const double p25 = (p2 * p11 - p13 * p19) * p20;
+  const double p26 = (p13 * p16 - p9 * p11) * p20;
+  const double p27 = (p9 * p19 - p16 * p2) * p20;
+  const double p28 = p25 * s_dilatation_moment_0_0 + p26 * s_dilatation_moment_0_1 + p27 * s_dilatation_moment_0_2;
+  const double p29 = (p14 * p19 - p8 * p11) * p20;
+  const double p30 = (p3 * p11 - p16 * p14) * p20;
+  const double p31 = (p8 * p16 - p3 * p19) * p20;
+  const double p32 = p29 * s_dilatation_moment_0_0 + p30 * s_dilatation_moment_0_1 + p31 * s_dilatation_moment_0_2;
+  const double p33 = p21 * s_dilatation_moment_1_0 + p22 * s_dilatation_moment_1_1 + p23 * s_dilatation_moment_1_2;
+  const double p34 = p25 * s_dilatation_moment_1_0 + p26 * s_dilatation_moment_1_1 + p27 * s_dilatation_moment_1_2;
+  const double p35 = p29 * s_dilatation_moment_1_0 + p30 * s_dilatation_moment_1_1 + p31 * s_dilatation_moment_1_2;
+  const double p36 = p21 * s_dilatation_moment_2_0 + p22 * s_dilatation_moment_2_1 + p23 * s_dilatation_moment_2_2;
+  const double p37 = p25 * s_dilatation_moment_2_0 + p26 * s_dilatation_moment_2_1 + p27 * s_dilatation_moment_2_2;
+  const double p38 = p29 * s_dilatation_moment_2_0 + p30 * s_dilatation_moment_2_1 + p31 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    s_theta += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+  }
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  return W;
+}
+
+// lps_corrected_3d_damaged_outputs: per bond 11 add, 16 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
 
-// lps_corrected_3d_intact_moments: per bond 2 add, 18 mul, 3 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// lps_corrected_3d_intact_moments: per bond 2 add, 18 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
@@ -2180,27 +2243,27 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   double s_dilatation_moment_2_0 = 0.0;
   double s_dilatation_moment_2_1 = 0.0;
   double s_dilatation_moment_2_2 = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double b0 = 3.0 * V * w;
-    const double b1 = b0 / s_m;
-    const double b2 = b0 * xi_1 / s_m * xi_0;
-    const double b3 = b0 * xi_2 / s_m;
+    const double b1 = p0 * V * w;
+    const double b2 = b1 * xi_1 * xi_0;
+    const double b3 = b1 * xi_2;
     const double b4 = b3 * xi_0;
     const double b5 = b3 * xi_1;
-    s_dilatation_moment_0_0 += b1 * xi_0 * xi_0;
+    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
     s_dilatation_moment_0_1 += b2;
     s_dilatation_moment_0_2 += b4;
     s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * xi_1 * xi_1;
+    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
     s_dilatation_moment_1_2 += b5;
     s_dilatation_moment_2_0 += b4;
     s_dilatation_moment_2_1 += b5;
-    s_dilatation_moment_2_2 += b1 * xi_2 * xi_2;
+    s_dilatation_moment_2_2 += b1 * (xi_2 * xi_2);
   }
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
@@ -2214,372 +2277,54 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_intact_residual: per bond 27 add, 46 mul, 5 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
+// lps_corrected_3d_intact_residual: per bond 27 add, 47 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
   const double s_dilatation_moment_1_1 = fam.moments[5];
   const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
   const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V / s_m * w;
-  }
-  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p37 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p38 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    const double b39 = p38 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
-    const double b40 = V0 * (p37 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) + b39 * xi_0) * V / s_m * w;
-    const double b41 = V0 * (p37 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) + b39 * xi_1) * V / s_m * w;
-    const double b42 = V0 * (p37 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) + b39 * xi_2) * V / s_m * w;
-    forces[(k + 1) * 3 + 0] = -b40;
-    forces[0] += b40;
-    forces[(k + 1) * 3 + 1] = -b41;
-    forces[1] += b41;
-    forces[(k + 1) * 3 + 2] = -b42;
-    forces[2] += b42;
-  }
-}
-
-// lps_corrected_3d_intact_tangent: per bond 27 add, 71 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
-void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V / s_m * w;
-  }
-  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p37 = 3.0 * (P_lambda - P_mu);
-  const double p38 = p37 * s_theta;
-  const double p39 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    const double b40 = p22 * xi_0 + p26 * xi_1 + p30 * xi_2;
-    const double b41 = xi_0 * xi_0;
-    const double b42 = xi_1 * xi_1;
-    const double b43 = xi_2 * xi_2;
-    const double b44 = b41 + b42 + b43;
-    const double b45 = p39 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) / b44;
-    const double b46 = V0 * (p38 * b40 + b45 * xi_0) * V / s_m * w;
-    const double b47 = p31 * xi_0 + p32 * xi_1 + p33 * xi_2;
-    const double b48 = V0 * (p38 * b47 + b45 * xi_1) * V / s_m * w;
-    const double b49 = p34 * xi_0 + p35 * xi_1 + p36 * xi_2;
-    const double b50 = V0 * (p38 * b49 + b45 * xi_2) * V / s_m * w;
-    const double b51 = p39 * w;
-    const double b52 = s_m * b44;
-    const double b53 = b51 / b52;
-    const double b54 = b51 * xi_1 / b52 * xi_0;
-    const double b55 = b51 * xi_2 / b52;
-    const double b56 = b55 * xi_0;
-    const double b57 = b55 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b46;
-    if (forces != nullptr) forces[0] += b46;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b48;
-    if (forces != nullptr) forces[1] += b48;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b50;
-    if (forces != nullptr) forces[2] += b50;
-    factors.direct[k * 9 + 0] = b53 * b41;
-    factors.direct[k * 9 + 1] = b54;
-    factors.direct[k * 9 + 2] = b56;
-    factors.direct[k * 9 + 3] = b54;
-    factors.direct[k * 9 + 4] = b53 * b42;
-    factors.direct[k * 9 + 5] = b57;
-    factors.direct[k * 9 + 6] = b56;
-    factors.direct[k * 9 + 7] = b57;
-    factors.direct[k * 9 + 8] = b53 * b43;
-    factors.right[(k * 1 + 0) * 3 + 0] = 3.0 * b40 * V / s_m * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = 3.0 * b47 * V / s_m * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = 3.0 * b49 * V / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p37 * b40 / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p37 * b47 / s_m * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p37 * b49 / s_m * w;
-  }
-}
-
-// lps_corrected_3d_intact_jvp: per bond 25 add, 66 mul, 14 div, 0 call; per family 54 add, 77 mul, 9 div, 0 call
-void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
-  double ds_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
-    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    ds_theta += 3.0 * dY_0 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * V / s_m * w + 3.0 * dY_1 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * V / s_m * w + 3.0 * dY_2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * V / s_m * w;
-  }
-  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p37 = 15.0 * P_mu;
-  const double p38 = 3.0 * ds_theta * (P_lambda - P_mu);
-  for (int k = 0; k < L; ++k) {
-    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
-    const double w = fam.w[k];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
-    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double V = fam.V[k];
-    const double b39 = p37 * dY_0 * w;
-    const double b40 = xi_0 * xi_0;
-    const double b41 = xi_1 * xi_1;
-    const double b42 = xi_2 * xi_2;
-    const double b43 = s_m * (b40 + b41 + b42);
-    const double b44 = p37 * dY_1 * w;
-    const double b45 = p37 * dY_2 * w;
-    const double b46 = b45 * xi_2 / b43;
-    const double b47 = V0 * (b39 / b43 * b40 + b44 * xi_1 / b43 * xi_0 + b46 * xi_0 + p38 * (p22 * xi_0 + p26 * xi_1 + p30 * xi_2) / s_m * w) * V;
-    const double b48 = V0 * (b39 * xi_1 / b43 * xi_0 + b44 / b43 * b41 + b46 * xi_1 + p38 * (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) / s_m * w) * V;
-    const double b49 = V0 * (b39 * xi_2 / b43 * xi_0 + b44 * xi_2 / b43 * xi_1 + b45 / b43 * b42 + p38 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) / s_m * w) * V;
-    df[(k + 1) * 3 + 0] = -b47;
-    df[0] += b47;
-    df[(k + 1) * 3 + 1] = -b48;
-    df[1] += b48;
-    df[(k + 1) * 3 + 2] = -b49;
-    df[2] += b49;
-  }
-}
-
-// lps_corrected_3d_intact_energy: per bond 18 add, 24 mul, 2 div, 0 call; per family 55 add, 79 mul, 10 div, 0 call
-double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
-  double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double V = fam.V[k];
-    const double w = fam.w[k];
-    const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * V / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * w;
-  }
-  double s_theta = 0.0;
-  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p2 = 1.0000000000000001e-16 * p1 * p1;
-  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p4 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p5 = p2 + p3 + p4 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p7 = p2 + p6 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p4;
-  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p9 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p10 = p5 * p7 - p8 * p9;
-  const double p11 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p12 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p13 = p8 * p11 - p7 * p12;
-  const double p14 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p15 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p6 + p3;
-  const double p16 = p5 * p11;
-  const double p17 = p12 * p9;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
   const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p19 = p13 * p14 + p10 * p15 - (p16 - p17) * p18;
-  const double p20 = p10 / p19;
-  const double p21 = (p17 - p16) / p19;
-  const double p22 = p13 / p19;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
   const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
-  const double p24 = (p8 * p14 - p5 * p18) / p19;
-  const double p25 = (p5 * p15 - p12 * p14) / p19;
-  const double p26 = (p12 * p18 - p15 * p8) / p19;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
   const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
-  const double p28 = (p9 * p18 - p7 * p14) / p19;
-  const double p29 = (p11 * p14 - p15 * p9) / p19;
-  const double p30 = (p7 * p15 - p11 * p18) / p19;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
   const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
   const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
   const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
@@ -2596,63 +2341,12 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V / s_m * w;
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
   }
-  const double W = 0.5 * (P_lambda - P_mu) * s_theta * s_theta + 7.5 * s_bond_energy / s_m * P_mu;
-  return W;
-}
-
-// lps_corrected_3d_intact_outputs: per bond 11 add, 15 mul, 1 div, 0 call; per family 53 add, 74 mul, 9 div, 0 call
-void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
-  const int L = fam.n_bonds;
-  const double s_dilatation_moment_0_0 = fam.moments[1];
-  const double s_dilatation_moment_1_1 = fam.moments[5];
-  const double s_dilatation_moment_2_2 = fam.moments[9];
-  const double s_dilatation_moment_2_0 = fam.moments[7];
-  const double s_dilatation_moment_0_2 = fam.moments[3];
-  const double s_dilatation_moment_2_1 = fam.moments[8];
-  const double s_dilatation_moment_1_2 = fam.moments[6];
-  const double s_dilatation_moment_1_0 = fam.moments[4];
-  const double s_dilatation_moment_0_1 = fam.moments[2];
-  const double s_m = fam.moments[0];
-  double s_theta = 0.0;
-  const double p0 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
-  const double p1 = 1.0000000000000001e-16 * p0 * p0;
-  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
-  const double p3 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
-  const double p4 = p1 + p2 + p3 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
-  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
-  const double p6 = p1 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p3;
-  const double p7 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
-  const double p8 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
-  const double p9 = p4 * p6 - p7 * p8;
-  const double p10 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
-  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
-  const double p12 = p7 * p10 - p6 * p11;
-  const double p13 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
-  const double p14 = p1 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p2;
-  const double p15 = p4 * p10;
-  const double p16 = p11 * p8;
-  const double p17 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
-  const double p18 = p12 * p13 + p9 * p14 - (p15 - p16) * p17;
-  const double p19 = p9 / p18;
-  const double p20 = (p16 - p15) / p18;
-  const double p21 = p12 / p18;
-  const double p22 = p19 * s_dilatation_moment_0_0 + p20 * s_dilatation_moment_0_1 + p21 * s_dilatation_moment_0_2;
-  const double p23 = (p7 * p13 - p4 * p17) / p18;
-  const double p24 = (p4 * p14 - p11 * p13) / p18;
-  const double p25 = (p11 * p17 - p14 * p7) / p18;
-  const double p26 = p23 * s_dilatation_moment_0_0 + p24 * s_dilatation_moment_0_1 + p25 * s_dilatation_moment_0_2;
-  const double p27 = (p8 * p17 - p6 * p13) / p18;
-  const double p28 = (p10 * p13 - p14 * p8) / p18;
-  const double p29 = (p6 * p14 - p10 * p17) / p18;
-  const double p30 = p27 * s_dilatation_moment_0_0 + p28 * s_dilatation_moment_0_1 + p29 * s_dilatation_moment_0_2;
-  const double p31 = p19 * s_dilatation_moment_1_0 + p20 * s_dilatation_moment_1_1 + p21 * s_dilatation_moment_1_2;
-  const double p32 = p23 * s_dilatation_moment_1_0 + p24 * s_dilatation_moment_1_1 + p25 * s_dilatation_moment_1_2;
-  const double p33 = p27 * s_dilatation_moment_1_0 + p28 * s_dilatation_moment_1_1 + p29 * s_dilatation_moment_1_2;
-  const double p34 = p19 * s_dilatation_moment_2_0 + p20 * s_dilatation_moment_2_1 + p21 * s_dilatation_moment_2_2;
-  const double p35 = p23 * s_dilatation_moment_2_0 + p24 * s_dilatation_moment_2_1 + p25 * s_dilatation_moment_2_2;
-  const double p36 = p27 * s_dilatation_moment_2_0 + p28 * s_dilatation_moment_2_1 + p29 * s_dilatation_moment_2_2;
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p38 = 1.0 / s_m * V0;
+  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
+  const double p40 = 15.0 * P_mu;
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2662,7 +2356,385 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += 3.0 * ((p22 * xi_0 + p26 * xi_1 + p30 * xi_2) * (Y_0 - xi_0) + (p31 * xi_0 + p32 * xi_1 + p33 * xi_2) * (Y_1 - xi_1) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_2 - xi_2)) * V / s_m * w;
+    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * w;
+    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
+    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
+    forces[(k + 1) * 3 + 0] = -b42;
+    forces[0] += b42;
+    forces[(k + 1) * 3 + 1] = -b43;
+    forces[1] += b43;
+    forces[(k + 1) * 3 + 2] = -b44;
+    forces[2] += b44;
+  }
+}
+
+// lps_corrected_3d_intact_tangent: per bond 27 add, 72 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p38 = 1.0 / s_m;
+  const double p39 = p38 * V0;
+  const double p40 = 3.0 * (P_lambda - P_mu);
+  const double p41 = p40 * s_theta;
+  const double p42 = 15.0 * P_mu;
+  const double p43 = 15.0 * p38 * P_mu;
+  const double p44 = p40 * p38;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b46 = xi_0 * xi_0;
+    const double b47 = xi_1 * xi_1;
+    const double b48 = xi_2 * xi_2;
+    const double b49 = 1.0 / (b46 + b47 + b48);
+    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
+    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * w;
+    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * w;
+    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * w;
+    const double b56 = p43 * b49 * w;
+    const double b57 = b56 * xi_1 * xi_0;
+    const double b58 = b56 * xi_2;
+    const double b59 = b58 * xi_0;
+    const double b60 = b58 * xi_1;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
+    if (forces != nullptr) forces[0] += b51;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
+    if (forces != nullptr) forces[1] += b53;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
+    if (forces != nullptr) forces[2] += b55;
+    factors.direct[k * 9 + 0] = b56 * b46;
+    factors.direct[k * 9 + 1] = b57;
+    factors.direct[k * 9 + 2] = b59;
+    factors.direct[k * 9 + 3] = b57;
+    factors.direct[k * 9 + 4] = b56 * b47;
+    factors.direct[k * 9 + 5] = b60;
+    factors.direct[k * 9 + 6] = b59;
+    factors.direct[k * 9 + 7] = b60;
+    factors.direct[k * 9 + 8] = b56 * b48;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * w;
+  }
+}
+
+// lps_corrected_3d_intact_jvp: per bond 25 add, 68 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  const double P_mu = fam.params[1];
+  const double P_lambda = fam.params[0];
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    ds_theta += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * w;
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p38 = 1.0 / s_m;
+  const double p39 = 15.0 * p38 * P_mu;
+  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  for (int k = 0; k < L; ++k) {
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b41 = xi_0 * xi_0;
+    const double b42 = xi_1 * xi_1;
+    const double b43 = xi_2 * xi_2;
+    const double b44 = 1.0 / (b41 + b42 + b43);
+    const double b45 = p39 * dY_0 * b44 * w;
+    const double b46 = p39 * dY_1 * b44 * w;
+    const double b47 = p39 * dY_2 * b44 * w;
+    const double b48 = b47 * xi_2;
+    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * w) * V;
+    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
+    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
+    df[(k + 1) * 3 + 0] = -b49;
+    df[0] += b49;
+    df[(k + 1) * 3 + 1] = -b50;
+    df[1] += b50;
+    df[(k + 1) * 3 + 2] = -b51;
+    df[2] += b51;
+  }
+}
+
+// lps_corrected_3d_intact_energy: per bond 18 add, 25 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_bond_energy = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
+    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+  }
+  double s_theta = 0.0;
+  const double p1 = 3.0 * (1.0 / s_m);
+  const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p4 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p5 = 1.0000000000000001e-16 * (p4 * p4);
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p7 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p8 = p5 + p6 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p7;
+  const double p9 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p10 = p2 * p3 - p8 * p9;
+  const double p11 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p12 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p13 = p5 + p12 + p7 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p14 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p15 = p13 * p8 - p2 * p14;
+  const double p16 = p5 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p6 + p12;
+  const double p17 = p13 * p3;
+  const double p18 = p9 * p14;
+  const double p19 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p20 = 1.0 / (p10 * p11 + p15 * p16 - (p17 - p18) * p19);
+  const double p21 = p20 * p15;
+  const double p22 = (p18 - p17) * p20;
+  const double p23 = p20 * p10;
+  const double p24 = p21 * s_dilatation_moment_0_0 + p22 * s_dilatation_moment_0_1 + p23 * s_dilatation_moment_0_2;
+  const double p25 = (p2 * p11 - p13 * p19) * p20;
+  const double p26 = (p13 * p16 - p9 * p11) * p20;
+  const double p27 = (p9 * p19 - p16 * p2) * p20;
+  const double p28 = p25 * s_dilatation_moment_0_0 + p26 * s_dilatation_moment_0_1 + p27 * s_dilatation_moment_0_2;
+  const double p29 = (p14 * p19 - p8 * p11) * p20;
+  const double p30 = (p3 * p11 - p16 * p14) * p20;
+  const double p31 = (p8 * p16 - p3 * p19) * p20;
+  const double p32 = p29 * s_dilatation_moment_0_0 + p30 * s_dilatation_moment_0_1 + p31 * s_dilatation_moment_0_2;
+  const double p33 = p21 * s_dilatation_moment_1_0 + p22 * s_dilatation_moment_1_1 + p23 * s_dilatation_moment_1_2;
+  const double p34 = p25 * s_dilatation_moment_1_0 + p26 * s_dilatation_moment_1_1 + p27 * s_dilatation_moment_1_2;
+  const double p35 = p29 * s_dilatation_moment_1_0 + p30 * s_dilatation_moment_1_1 + p31 * s_dilatation_moment_1_2;
+  const double p36 = p21 * s_dilatation_moment_2_0 + p22 * s_dilatation_moment_2_1 + p23 * s_dilatation_moment_2_2;
+  const double p37 = p25 * s_dilatation_moment_2_0 + p26 * s_dilatation_moment_2_1 + p27 * s_dilatation_moment_2_2;
+  const double p38 = p29 * s_dilatation_moment_2_0 + p30 * s_dilatation_moment_2_1 + p31 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    s_theta += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * w;
+  }
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  return W;
+}
+
+// lps_corrected_3d_intact_outputs: per bond 11 add, 15 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -2682,20 +2754,20 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;
   d.damaged.residual = &lps_corrected_3d_damaged_residual;
-  d.damaged.residual_ops = {27, 50, 5, 0};
+  d.damaged.residual_ops = {27, 51, 1, 0};
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
-  d.damaged.tangent_ops = {27, 82, 14, 0};
+  d.damaged.tangent_ops = {27, 83, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {25, 75, 14, 0};
+  d.damaged.jvp_ops = {25, 77, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
-  d.intact.residual_ops = {27, 46, 5, 0};
+  d.intact.residual_ops = {27, 47, 1, 0};
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
-  d.intact.tangent_ops = {27, 71, 14, 0};
+  d.intact.tangent_ops = {27, 72, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {25, 66, 14, 0};
+  d.intact.jvp_ops = {25, 68, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   return d;

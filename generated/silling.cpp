@@ -22,7 +22,7 @@ void silling_plane_strain_damaged_moments(const pd::abi::Family& fam, double* mo
   moments[0] = s_m;
 }
 
-// silling_plane_strain_damaged_residual: per bond 7 add, 20 mul, 2 div, 2 call; per family 1 add, 5 mul, 0 div, 0 call
+// silling_plane_strain_damaged_residual: per bond 7 add, 20 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
 void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -32,6 +32,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -40,36 +41,37 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p3 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
-  const double p4 = 8.0 * P_G;
-  const double p5 = 0.5 * s_theta;
+  const double p4 = 1.0 / s_m * V0;
+  const double p5 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
+  const double p6 = 8.0 * P_G;
+  const double p7 = 0.5 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
-    const double b8 = V0 * (p3 * b6 + p4 * (b7 - b6 - p5 * b6)) * V * alpha * w / (s_m * b7);
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    forces[(k + 1) * 2 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 2 + 1] = -b10;
-    forces[1] += b10;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * alpha * w;
+    const double b11 = b10 * Y_0;
+    const double b12 = b10 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b11;
+    forces[0] += b11;
+    forces[(k + 1) * 2 + 1] = -b12;
+    forces[1] += b12;
   }
 }
 
-// silling_plane_strain_damaged_tangent: per bond 16 add, 53 mul, 9 div, 2 call; per family 1 add, 6 mul, 0 div, 0 call
+// silling_plane_strain_damaged_tangent: per bond 16 add, 59 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -79,6 +81,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -87,22 +90,25 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p3 = 2.0 * (P_K + 0.3333333333333333 * P_G);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_G;
-  const double p6 = 0.5 * s_theta;
-  const double p7 = 4.0 * P_G;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * V0;
+  const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
+  const double p7 = p6 * s_theta;
+  const double p8 = 8.0 * P_G;
+  const double p9 = 0.5 * s_theta;
+  const double p10 = 8.0 * p4 * P_G;
+  const double p11 = 4.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -110,33 +116,29 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double b10 = p4 * b8 + p5 * (b9 - b8 - p6 * b8);
-    const double b11 = s_m * b9;
-    const double b12 = V0 * b10 * V * alpha * w / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = b10 * alpha;
-    const double b16 = b15 / b11 * w;
-    const double b17 = p5 * alpha * w;
-    const double b18 = Y_0 * Y_0;
-    const double b19 = Y_1 * Y_1;
-    const double b20 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b18 + b19;
-    const double b21 = s_m * b20;
-    const double b22 = b17 / b21;
-    const double b23 = b15 * w;
-    const double b24 = s_m * b20 * b9;
-    const double b25 = b23 / b24;
-    const double b26 = b17 * Y_1 / b21 * Y_0 - b23 * Y_1 / b24 * Y_0;
-    const double b27 = 2.0 * b8 * V * alpha * w / b11;
-    const double b28 = (p3 * b8 - p7 * b8) * alpha * w / b11;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    factors.direct[k * 4 + 0] = b16 + b22 * b18 - b25 * b18;
+    const double b14 = p7 * b12 + p8 * (b13 - b12 - p9 * b12);
+    const double b15 = 1.0 / b13;
+    const double b16 = p5 * b14 * b15 * V * alpha * w;
+    const double b17 = b16 * Y_0;
+    const double b18 = b16 * Y_1;
+    const double b19 = p4 * b14;
+    const double b20 = b19 * b15 * alpha * w;
+    const double b21 = Y_0 * Y_0;
+    const double b22 = Y_1 * Y_1;
+    const double b23 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22);
+    const double b24 = p10 * b23 * alpha * w;
+    const double b25 = b19 * (b23 * b15) * alpha * w;
+    const double b26 = b24 * Y_1 * Y_0 - b25 * Y_1 * Y_0;
+    const double b27 = p0 * b15 * b12 * V * alpha * w;
+    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
+    if (forces != nullptr) forces[0] += b17;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
+    if (forces != nullptr) forces[1] += b18;
+    factors.direct[k * 4 + 0] = b20 + b24 * b21 - b25 * b21;
     factors.direct[k * 4 + 1] = b26;
     factors.direct[k * 4 + 2] = b26;
-    factors.direct[k * 4 + 3] = b16 + b22 * b19 - b25 * b19;
+    factors.direct[k * 4 + 3] = b20 + b24 * b22 - b25 * b22;
     factors.right[(k * 1 + 0) * 2 + 0] = b27 * Y_0;
     factors.right[(k * 1 + 0) * 2 + 1] = b27 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b28 * Y_0;
@@ -144,7 +146,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   }
 }
 
-// silling_plane_strain_damaged_jvp: per bond 21 add, 63 mul, 9 div, 2 call; per family 1 add, 6 mul, 0 div, 0 call
+// silling_plane_strain_damaged_jvp: per bond 21 add, 67 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -155,6 +157,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -165,24 +168,27 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    const double b3 = s_m * b1;
-    s_theta += 2.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
-    ds_theta += 2.0 * dY_0 * b2 * V * alpha * w / b3 * Y_0 + 2.0 * dY_1 * b2 * V * alpha * w / b3 * Y_1;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    const double b4 = 1.0 / b2;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    ds_theta += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p4 = 2.0 * (P_K + 0.3333333333333333 * P_G);
-  const double p5 = p4 * s_theta;
-  const double p6 = 8.0 * P_G;
-  const double p7 = 0.5 * s_theta;
-  const double p8 = 4.0 * P_G;
+  const double p5 = 1.0 / s_m;
+  const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
+  const double p7 = p6 * s_theta;
+  const double p8 = 8.0 * P_G;
+  const double p9 = 0.5 * s_theta;
+  const double p10 = 8.0 * p5 * P_G;
+  const double p11 = ds_theta * p5;
+  const double p12 = 4.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -192,22 +198,18 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double Y_1 = fam.Y[k * 2 + 1];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b11 = (p5 * b9 + p6 * (b10 - b9 - p7 * b9)) * alpha;
-    const double b12 = s_m * b10;
-    const double b13 = b11 / b12 * w;
-    const double b14 = p6 * alpha * w;
-    const double b15 = Y_0 * Y_0;
-    const double b16 = Y_1 * Y_1;
-    const double b17 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b15 + b16;
-    const double b18 = s_m * b17;
-    const double b19 = b14 / b18;
-    const double b20 = b11 * w;
-    const double b21 = s_m * b17 * b10;
-    const double b22 = b20 / b21;
-    const double b23 = b14 * Y_1 / b18 * Y_0 - b20 * Y_1 / b21 * Y_0;
-    const double b24 = ds_theta * (p4 * b9 - p8 * b9) * alpha * w / b12;
-    const double b25 = V0 * (dY_0 * (b13 + b19 * b15 - b22 * b15) + dY_1 * b23 + b24 * Y_0) * V;
-    const double b26 = V0 * (dY_0 * b23 + dY_1 * (b13 + b19 * b16 - b22 * b16) + b24 * Y_1) * V;
+    const double b15 = p5 * (p7 * b13 + p8 * (b14 - b13 - p9 * b13));
+    const double b16 = 1.0 / b14;
+    const double b17 = b15 * b16 * alpha * w;
+    const double b18 = Y_0 * Y_0;
+    const double b19 = Y_1 * Y_1;
+    const double b20 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b18 + b19);
+    const double b21 = p10 * b20 * alpha * w;
+    const double b22 = b15 * (b20 * b16) * alpha * w;
+    const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
+    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * alpha * w;
+    const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
+    const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
     df[0] += b25;
     df[(k + 1) * 2 + 1] = -b26;
@@ -215,7 +217,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   }
 }
 
-// silling_plane_strain_damaged_energy: per bond 6 add, 15 mul, 1 div, 2 call; per family 2 add, 7 mul, 1 div, 0 call
+// silling_plane_strain_damaged_energy: per bond 6 add, 15 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -224,6 +226,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -232,33 +235,34 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   double s_deviatoric_energy = 0.0;
-  const double p3 = 0.5 * s_theta;
+  const double p4 = 0.5 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b4 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b6 = b5 - b4 - p3 * b4;
-    s_deviatoric_energy += b6 * b6 * V * alpha * w;
+    const double b7 = b6 - b5 - p4 * b5;
+    s_deviatoric_energy += b7 * b7 * V * alpha * w;
   }
-  const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * s_theta * s_theta + 4.0 * s_deviatoric_energy / s_m * P_G;
+  const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * (s_theta * s_theta) + 4.0 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
 
-// silling_plane_strain_damaged_outputs: per bond 4 add, 10 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// silling_plane_strain_damaged_outputs: per bond 4 add, 10 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -267,10 +271,10 @@ void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    const double b2 = std::sqrt(b0);
-    s_theta += 2.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
@@ -289,7 +293,7 @@ void silling_plane_strain_intact_moments(const pd::abi::Family& fam, double* mom
   moments[0] = s_m;
 }
 
-// silling_plane_strain_intact_residual: per bond 7 add, 18 mul, 2 div, 2 call; per family 1 add, 5 mul, 0 div, 0 call
+// silling_plane_strain_intact_residual: per bond 7 add, 18 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
 void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -299,6 +303,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -306,35 +311,36 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p3 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
-  const double p4 = 8.0 * P_G;
-  const double p5 = 0.5 * s_theta;
+  const double p4 = 1.0 / s_m * V0;
+  const double p5 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
+  const double p6 = 8.0 * P_G;
+  const double p7 = 0.5 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
-    const double b8 = V0 * (p3 * b6 + p4 * (b7 - b6 - p5 * b6)) * V * w / (s_m * b7);
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    forces[(k + 1) * 2 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 2 + 1] = -b10;
-    forces[1] += b10;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * w;
+    const double b11 = b10 * Y_0;
+    const double b12 = b10 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b11;
+    forces[0] += b11;
+    forces[(k + 1) * 2 + 1] = -b12;
+    forces[1] += b12;
   }
 }
 
-// silling_plane_strain_intact_tangent: per bond 16 add, 47 mul, 9 div, 2 call; per family 1 add, 6 mul, 0 div, 0 call
+// silling_plane_strain_intact_tangent: per bond 16 add, 52 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -344,6 +350,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -351,62 +358,62 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p3 = 2.0 * (P_K + 0.3333333333333333 * P_G);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_G;
-  const double p6 = 0.5 * s_theta;
-  const double p7 = 4.0 * P_G;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * V0;
+  const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
+  const double p7 = p6 * s_theta;
+  const double p8 = 8.0 * P_G;
+  const double p9 = 0.5 * s_theta;
+  const double p10 = 8.0 * p4 * P_G;
+  const double p11 = 4.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
-    const double b10 = p4 * b8 + p5 * (b9 - b8 - p6 * b8);
-    const double b11 = s_m * b9;
-    const double b12 = V0 * b10 * V * w / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = b10 / b11 * w;
-    const double b16 = p5 * w;
-    const double b17 = Y_0 * Y_0;
-    const double b18 = Y_1 * Y_1;
-    const double b19 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b17 + b18;
-    const double b20 = s_m * b19;
-    const double b21 = b16 / b20;
-    const double b22 = b10 * w;
-    const double b23 = s_m * b19 * b9;
-    const double b24 = b22 / b23;
-    const double b25 = b16 * Y_1 / b20 * Y_0 - b22 * Y_1 / b23 * Y_0;
-    const double b26 = 2.0 * b8 * V * w / b11;
-    const double b27 = (p3 * b8 - p7 * b8) * w / b11;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    factors.direct[k * 4 + 0] = b15 + b21 * b17 - b24 * b17;
-    factors.direct[k * 4 + 1] = b25;
-    factors.direct[k * 4 + 2] = b25;
-    factors.direct[k * 4 + 3] = b15 + b21 * b18 - b24 * b18;
-    factors.right[(k * 1 + 0) * 2 + 0] = b26 * Y_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b26 * Y_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b27 * Y_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b27 * Y_1;
+    const double b14 = p7 * b12 + p8 * (b13 - b12 - p9 * b12);
+    const double b15 = 1.0 / b13;
+    const double b16 = p5 * b14 * b15 * V * w;
+    const double b17 = b16 * Y_0;
+    const double b18 = b16 * Y_1;
+    const double b19 = p4 * b14;
+    const double b20 = b19 * b15 * w;
+    const double b21 = Y_0 * Y_0;
+    const double b22 = Y_1 * Y_1;
+    const double b23 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22);
+    const double b24 = p10 * b23 * w;
+    const double b25 = b19 * (b23 * b15) * w;
+    const double b26 = b24 * Y_1 * Y_0 - b25 * Y_1 * Y_0;
+    const double b27 = p0 * b15 * b12 * V * w;
+    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
+    if (forces != nullptr) forces[0] += b17;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
+    if (forces != nullptr) forces[1] += b18;
+    factors.direct[k * 4 + 0] = b20 + b24 * b21 - b25 * b21;
+    factors.direct[k * 4 + 1] = b26;
+    factors.direct[k * 4 + 2] = b26;
+    factors.direct[k * 4 + 3] = b20 + b24 * b22 - b25 * b22;
+    factors.right[(k * 1 + 0) * 2 + 0] = b27 * Y_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b27 * Y_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b28 * Y_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b28 * Y_1;
   }
 }
 
-// silling_plane_strain_intact_jvp: per bond 21 add, 57 mul, 9 div, 2 call; per family 1 add, 6 mul, 0 div, 0 call
+// silling_plane_strain_intact_jvp: per bond 21 add, 60 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -417,6 +424,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -426,24 +434,27 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    const double b3 = s_m * b1;
-    s_theta += 2.0 * (b1 - b2) * b2 * V / s_m * w;
-    ds_theta += 2.0 * dY_0 * b2 * V * w / b3 * Y_0 + 2.0 * dY_1 * b2 * V * w / b3 * Y_1;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    const double b4 = 1.0 / b2;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    ds_theta += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1;
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p4 = 2.0 * (P_K + 0.3333333333333333 * P_G);
-  const double p5 = p4 * s_theta;
-  const double p6 = 8.0 * P_G;
-  const double p7 = 0.5 * s_theta;
-  const double p8 = 4.0 * P_G;
+  const double p5 = 1.0 / s_m;
+  const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
+  const double p7 = p6 * s_theta;
+  const double p8 = 8.0 * P_G;
+  const double p9 = 0.5 * s_theta;
+  const double p10 = 8.0 * p5 * P_G;
+  const double p11 = ds_theta * p5;
+  const double p12 = 4.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -452,22 +463,18 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double Y_1 = fam.Y[k * 2 + 1];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b11 = p5 * b9 + p6 * (b10 - b9 - p7 * b9);
-    const double b12 = s_m * b10;
-    const double b13 = b11 / b12 * w;
-    const double b14 = p6 * w;
-    const double b15 = Y_0 * Y_0;
-    const double b16 = Y_1 * Y_1;
-    const double b17 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b15 + b16;
-    const double b18 = s_m * b17;
-    const double b19 = b14 / b18;
-    const double b20 = b11 * w;
-    const double b21 = s_m * b17 * b10;
-    const double b22 = b20 / b21;
-    const double b23 = b14 * Y_1 / b18 * Y_0 - b20 * Y_1 / b21 * Y_0;
-    const double b24 = ds_theta * (p4 * b9 - p8 * b9) * w / b12;
-    const double b25 = V0 * (dY_0 * (b13 + b19 * b15 - b22 * b15) + dY_1 * b23 + b24 * Y_0) * V;
-    const double b26 = V0 * (dY_0 * b23 + dY_1 * (b13 + b19 * b16 - b22 * b16) + b24 * Y_1) * V;
+    const double b15 = p5 * (p7 * b13 + p8 * (b14 - b13 - p9 * b13));
+    const double b16 = 1.0 / b14;
+    const double b17 = b15 * b16 * w;
+    const double b18 = Y_0 * Y_0;
+    const double b19 = Y_1 * Y_1;
+    const double b20 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b18 + b19);
+    const double b21 = p10 * b20 * w;
+    const double b22 = b15 * (b20 * b16) * w;
+    const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
+    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * w;
+    const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
+    const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
     df[0] += b25;
     df[(k + 1) * 2 + 1] = -b26;
@@ -475,7 +482,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   }
 }
 
-// silling_plane_strain_intact_energy: per bond 6 add, 13 mul, 1 div, 2 call; per family 2 add, 7 mul, 1 div, 0 call
+// silling_plane_strain_intact_energy: per bond 6 add, 13 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -484,6 +491,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -491,32 +499,33 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   double s_deviatoric_energy = 0.0;
-  const double p3 = 0.5 * s_theta;
+  const double p4 = 0.5 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b4 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b6 = b5 - b4 - p3 * b4;
-    s_deviatoric_energy += b6 * b6 * V * w;
+    const double b7 = b6 - b5 - p4 * b5;
+    s_deviatoric_energy += b7 * b7 * V * w;
   }
-  const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * s_theta * s_theta + 4.0 * s_deviatoric_energy / s_m * P_G;
+  const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * (s_theta * s_theta) + 4.0 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
 
-// silling_plane_strain_intact_outputs: per bond 4 add, 9 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// silling_plane_strain_intact_outputs: per bond 4 add, 9 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -524,10 +533,10 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    const double b2 = std::sqrt(b0);
-    s_theta += 2.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -547,20 +556,20 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &silling_plane_strain_damaged_moments;
   d.damaged.residual = &silling_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {7, 20, 2, 2};
+  d.damaged.residual_ops = {7, 20, 1, 2};
   d.damaged.tangent = &silling_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {16, 53, 9, 2};
+  d.damaged.tangent_ops = {16, 59, 2, 2};
   d.damaged.jvp = &silling_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {21, 63, 9, 2};
+  d.damaged.jvp_ops = {21, 67, 3, 2};
   d.damaged.energy = &silling_plane_strain_damaged_energy;
   d.damaged.outputs = &silling_plane_strain_damaged_outputs;
   d.intact.moments = &silling_plane_strain_intact_moments;
   d.intact.residual = &silling_plane_strain_intact_residual;
-  d.intact.residual_ops = {7, 18, 2, 2};
+  d.intact.residual_ops = {7, 18, 1, 2};
   d.intact.tangent = &silling_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {16, 47, 9, 2};
+  d.intact.tangent_ops = {16, 52, 2, 2};
   d.intact.jvp = &silling_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {21, 57, 9, 2};
+  d.intact.jvp_ops = {21, 60, 3, 2};
   d.intact.energy = &silling_plane_strain_intact_energy;
   d.intact.outputs = &silling_plane_strain_intact_outputs;
   return d;
@@ -582,7 +591,7 @@ void silling_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// silling_3d_damaged_residual: per bond 9 add, 23 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// silling_3d_damaged_residual: per bond 9 add, 23 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
 void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -592,6 +601,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -602,72 +612,18 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p3 = 3.0 * s_theta * P_K;
-  const double p4 = 15.0 * P_G;
-  const double p5 = 0.3333333333333333 * s_theta;
-  for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double b8 = V0 * (p3 * b6 + p4 * (b7 - b6 - p5 * b6)) * V * alpha * w / (s_m * b7);
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    const double b11 = b8 * Y_2;
-    forces[(k + 1) * 3 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 3 + 1] = -b10;
-    forces[1] += b10;
-    forces[(k + 1) * 3 + 2] = -b11;
-    forces[2] += b11;
-  }
-}
-
-// silling_3d_damaged_tangent: per bond 24 add, 68 mul, 11 div, 2 call; per family 0 add, 6 mul, 0 div, 0 call
-void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
-  const int L = fam.n_bonds;
-  const double s_m = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_K = fam.params[0];
-  const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
-  double s_theta = 0.0;
-  for (int k = 0; k < L; ++k) {
-    const double xi_0 = fam.xi[k * 3 + 0];
-    const double xi_1 = fam.xi[k * 3 + 1];
-    const double xi_2 = fam.xi[k * 3 + 2];
-    const double Y_0 = fam.Y[k * 3 + 0];
-    const double Y_1 = fam.Y[k * 3 + 1];
-    const double Y_2 = fam.Y[k * 3 + 2];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
-  }
-  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p3 = 3.0 * s_theta * P_K;
-  const double p4 = 15.0 * P_G;
-  const double p5 = 0.3333333333333333 * s_theta;
-  const double p6 = 3.0 * P_K;
-  const double p7 = 5.0 * P_G;
+  const double p4 = 1.0 / s_m * V0;
+  const double p5 = 3.0 * s_theta * P_K;
+  const double p6 = 15.0 * P_G;
+  const double p7 = 0.3333333333333333 * s_theta;
   for (int k = 0; k < L; ++k) {
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
@@ -677,49 +633,104 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * alpha * w;
+    const double b11 = b10 * Y_0;
+    const double b12 = b10 * Y_1;
+    const double b13 = b10 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b11;
+    forces[0] += b11;
+    forces[(k + 1) * 3 + 1] = -b12;
+    forces[1] += b12;
+    forces[(k + 1) * 3 + 2] = -b13;
+    forces[2] += b13;
+  }
+}
+
+// silling_3d_damaged_tangent: per bond 24 add, 74 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
+void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double P_G = fam.params[1];
+  thread_local std::vector<double> cache;
+  cache.resize(static_cast<std::size_t>(L) * 2);
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double b10 = p3 * b8 + p4 * (b9 - b8 - p5 * b8);
-    const double b11 = s_m * b9;
-    const double b12 = V0 * b10 * V * alpha * w / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = b12 * Y_2;
-    const double b16 = b10 * alpha;
-    const double b17 = b16 / b11 * w;
-    const double b18 = p4 * alpha * w;
-    const double b19 = Y_0 * Y_0;
-    const double b20 = Y_1 * Y_1;
-    const double b21 = Y_2 * Y_2;
-    const double b22 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b19 + b20 + b21;
-    const double b23 = s_m * b22;
-    const double b24 = b18 / b23;
-    const double b25 = b16 * w;
-    const double b26 = s_m * b22 * b9;
-    const double b27 = b25 / b26;
-    const double b28 = b18 * Y_1 / b23 * Y_0 - b25 * Y_1 / b26 * Y_0;
-    const double b29 = b18 * Y_2 / b23;
-    const double b30 = b25 * Y_2 / b26;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * V0;
+  const double p6 = 3.0 * s_theta * P_K;
+  const double p7 = 15.0 * P_G;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 15.0 * p4 * P_G;
+  const double p10 = 3.0 * P_K;
+  const double p11 = 5.0 * P_G;
+  for (int k = 0; k < L; ++k) {
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double b14 = p6 * b12 + p7 * (b13 - b12 - p8 * b12);
+    const double b15 = 1.0 / b13;
+    const double b16 = p5 * b14 * b15 * V * alpha * w;
+    const double b17 = b16 * Y_0;
+    const double b18 = b16 * Y_1;
+    const double b19 = b16 * Y_2;
+    const double b20 = p4 * b14;
+    const double b21 = b20 * b15 * alpha * w;
+    const double b22 = Y_0 * Y_0;
+    const double b23 = Y_1 * Y_1;
+    const double b24 = Y_2 * Y_2;
+    const double b25 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b22 + b23 + b24);
+    const double b26 = p9 * b25 * alpha * w;
+    const double b27 = b20 * (b25 * b15) * alpha * w;
+    const double b28 = b26 * Y_1 * Y_0 - b27 * Y_1 * Y_0;
+    const double b29 = b26 * Y_2;
+    const double b30 = b27 * Y_2;
     const double b31 = b29 * Y_0 - b30 * Y_0;
     const double b32 = b29 * Y_1 - b30 * Y_1;
-    const double b33 = 3.0 * b8 * V * alpha * w / b11;
-    const double b34 = (p6 * b8 - p7 * b8) * alpha * w / b11;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    if (forces != nullptr) forces[2] += b15;
-    factors.direct[k * 9 + 0] = b17 + b24 * b19 - b27 * b19;
+    const double b33 = p0 * b15 * b12 * V * alpha * w;
+    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
+    if (forces != nullptr) forces[0] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
+    if (forces != nullptr) forces[1] += b18;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
+    if (forces != nullptr) forces[2] += b19;
+    factors.direct[k * 9 + 0] = b21 + b26 * b22 - b27 * b22;
     factors.direct[k * 9 + 1] = b28;
     factors.direct[k * 9 + 2] = b31;
     factors.direct[k * 9 + 3] = b28;
-    factors.direct[k * 9 + 4] = b17 + b24 * b20 - b27 * b20;
+    factors.direct[k * 9 + 4] = b21 + b26 * b23 - b27 * b23;
     factors.direct[k * 9 + 5] = b32;
     factors.direct[k * 9 + 6] = b31;
     factors.direct[k * 9 + 7] = b32;
-    factors.direct[k * 9 + 8] = b17 + b24 * b21 - b27 * b21;
+    factors.direct[k * 9 + 8] = b21 + b26 * b24 - b27 * b24;
     factors.right[(k * 1 + 0) * 3 + 0] = b33 * Y_0;
     factors.right[(k * 1 + 0) * 3 + 1] = b33 * Y_1;
     factors.right[(k * 1 + 0) * 3 + 2] = b33 * Y_2;
@@ -729,7 +740,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   }
 }
 
-// silling_3d_damaged_jvp: per bond 35 add, 89 mul, 12 div, 2 call; per family 0 add, 6 mul, 0 div, 0 call
+// silling_3d_damaged_jvp: per bond 35 add, 94 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -740,6 +751,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -753,24 +765,27 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    const double b3 = s_m * b1;
-    s_theta += 3.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
-    ds_theta += 3.0 * dY_0 * b2 * V * alpha * w / b3 * Y_0 + 3.0 * dY_1 * b2 * V * alpha * w / b3 * Y_1 + 3.0 * dY_2 * b2 * V * alpha * w / b3 * Y_2;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    const double b4 = 1.0 / b2;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    ds_theta += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1 + p0 * dY_2 * b4 * b3 * V * alpha * w * Y_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p4 = 3.0 * s_theta * P_K;
-  const double p5 = 15.0 * P_G;
-  const double p6 = 0.3333333333333333 * s_theta;
-  const double p7 = 3.0 * P_K;
-  const double p8 = 5.0 * P_G;
+  const double p5 = 1.0 / s_m;
+  const double p6 = 3.0 * s_theta * P_K;
+  const double p7 = 15.0 * P_G;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 15.0 * p5 * P_G;
+  const double p10 = ds_theta * p5;
+  const double p11 = 3.0 * P_K;
+  const double p12 = 5.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -783,28 +798,24 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b11 = (p4 * b9 + p5 * (b10 - b9 - p6 * b9)) * alpha;
-    const double b12 = s_m * b10;
-    const double b13 = b11 / b12 * w;
-    const double b14 = p5 * alpha * w;
-    const double b15 = Y_0 * Y_0;
-    const double b16 = Y_1 * Y_1;
-    const double b17 = Y_2 * Y_2;
-    const double b18 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b15 + b16 + b17;
-    const double b19 = s_m * b18;
-    const double b20 = b14 / b19;
-    const double b21 = b11 * w;
-    const double b22 = s_m * b18 * b10;
-    const double b23 = b21 / b22;
-    const double b24 = b14 * Y_1 / b19 * Y_0 - b21 * Y_1 / b22 * Y_0;
-    const double b25 = b14 * Y_2 / b19;
-    const double b26 = b21 * Y_2 / b22;
+    const double b15 = p5 * (p6 * b13 + p7 * (b14 - b13 - p8 * b13));
+    const double b16 = 1.0 / b14;
+    const double b17 = b15 * b16 * alpha * w;
+    const double b18 = Y_0 * Y_0;
+    const double b19 = Y_1 * Y_1;
+    const double b20 = Y_2 * Y_2;
+    const double b21 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b18 + b19 + b20);
+    const double b22 = p9 * b21 * alpha * w;
+    const double b23 = b15 * (b21 * b16) * alpha * w;
+    const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
+    const double b25 = b22 * Y_2;
+    const double b26 = b23 * Y_2;
     const double b27 = b25 * Y_0 - b26 * Y_0;
-    const double b28 = ds_theta * (p7 * b9 - p8 * b9) * alpha * w / b12;
-    const double b29 = V0 * (dY_0 * (b13 + b20 * b15 - b23 * b15) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
+    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * alpha * w;
+    const double b29 = V0 * (dY_0 * (b17 + b22 * b18 - b23 * b18) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
     const double b30 = b25 * Y_1 - b26 * Y_1;
-    const double b31 = V0 * (dY_0 * b24 + dY_1 * (b13 + b20 * b16 - b23 * b16) + dY_2 * b30 + b28 * Y_1) * V;
-    const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b13 + b20 * b17 - b23 * b17) + b28 * Y_2) * V;
+    const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
+    const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b17 + b22 * b20 - b23 * b20) + b28 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b29;
     df[0] += b29;
     df[(k + 1) * 3 + 1] = -b31;
@@ -814,7 +825,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   }
 }
 
-// silling_3d_damaged_energy: per bond 8 add, 17 mul, 1 div, 2 call; per family 1 add, 6 mul, 1 div, 0 call
+// silling_3d_damaged_energy: per bond 8 add, 17 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
 double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -823,6 +834,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -833,33 +845,34 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   double s_deviatoric_energy = 0.0;
-  const double p3 = 0.3333333333333333 * s_theta;
+  const double p4 = 0.3333333333333333 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b4 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b6 = b5 - b4 - p3 * b4;
-    s_deviatoric_energy += b6 * b6 * V * alpha * w;
+    const double b7 = b6 - b5 - p4 * b5;
+    s_deviatoric_energy += b7 * b7 * V * alpha * w;
   }
-  const double W = 0.5 * s_theta * s_theta * P_K + 7.5 * s_deviatoric_energy / s_m * P_G;
+  const double W = 0.5 * (s_theta * s_theta) * P_K + 7.5 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
 
-// silling_3d_damaged_outputs: per bond 6 add, 12 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// silling_3d_damaged_outputs: per bond 6 add, 12 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -870,10 +883,10 @@ void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    const double b2 = std::sqrt(b0);
-    s_theta += 3.0 * (b1 - b2) * b2 * V * alpha / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
@@ -893,7 +906,7 @@ void silling_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// silling_3d_intact_residual: per bond 9 add, 21 mul, 2 div, 2 call; per family 0 add, 4 mul, 0 div, 0 call
+// silling_3d_intact_residual: per bond 9 add, 21 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
 void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -903,6 +916,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -912,39 +926,40 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
-  const double p3 = 3.0 * s_theta * P_K;
-  const double p4 = 15.0 * P_G;
-  const double p5 = 0.3333333333333333 * s_theta;
+  const double p4 = 1.0 / s_m * V0;
+  const double p5 = 3.0 * s_theta * P_K;
+  const double p6 = 15.0 * P_G;
+  const double p7 = 0.3333333333333333 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
-    const double b8 = V0 * (p3 * b6 + p4 * (b7 - b6 - p5 * b6)) * V * w / (s_m * b7);
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    const double b11 = b8 * Y_2;
-    forces[(k + 1) * 3 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 3 + 1] = -b10;
-    forces[1] += b10;
-    forces[(k + 1) * 3 + 2] = -b11;
-    forces[2] += b11;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * w;
+    const double b11 = b10 * Y_0;
+    const double b12 = b10 * Y_1;
+    const double b13 = b10 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b11;
+    forces[0] += b11;
+    forces[(k + 1) * 3 + 1] = -b12;
+    forces[1] += b12;
+    forces[(k + 1) * 3 + 2] = -b13;
+    forces[2] += b13;
   }
 }
 
-// silling_3d_intact_tangent: per bond 24 add, 62 mul, 11 div, 2 call; per family 0 add, 6 mul, 0 div, 0 call
+// silling_3d_intact_tangent: per bond 24 add, 67 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -954,6 +969,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -963,22 +979,25 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
-  const double p3 = 3.0 * s_theta * P_K;
-  const double p4 = 15.0 * P_G;
-  const double p5 = 0.3333333333333333 * s_theta;
-  const double p6 = 3.0 * P_K;
-  const double p7 = 5.0 * P_G;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * V0;
+  const double p6 = 3.0 * s_theta * P_K;
+  const double p7 = 15.0 * P_G;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 15.0 * p4 * P_G;
+  const double p10 = 3.0 * P_K;
+  const double p11 = 5.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -987,55 +1006,52 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
-    const double b10 = p3 * b8 + p4 * (b9 - b8 - p5 * b8);
-    const double b11 = s_m * b9;
-    const double b12 = V0 * b10 * V * w / b11;
-    const double b13 = b12 * Y_0;
-    const double b14 = b12 * Y_1;
-    const double b15 = b12 * Y_2;
-    const double b16 = b10 / b11 * w;
-    const double b17 = p4 * w;
-    const double b18 = Y_0 * Y_0;
-    const double b19 = Y_1 * Y_1;
-    const double b20 = Y_2 * Y_2;
-    const double b21 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b18 + b19 + b20;
-    const double b22 = s_m * b21;
-    const double b23 = b17 / b22;
-    const double b24 = b10 * w;
-    const double b25 = s_m * b21 * b9;
-    const double b26 = b24 / b25;
-    const double b27 = b17 * Y_1 / b22 * Y_0 - b24 * Y_1 / b25 * Y_0;
-    const double b28 = b17 * Y_2 / b22;
-    const double b29 = b24 * Y_2 / b25;
-    const double b30 = b28 * Y_0 - b29 * Y_0;
-    const double b31 = b28 * Y_1 - b29 * Y_1;
-    const double b32 = 3.0 * b8 * V * w / b11;
-    const double b33 = (p6 * b8 - p7 * b8) * w / b11;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    if (forces != nullptr) forces[2] += b15;
-    factors.direct[k * 9 + 0] = b16 + b23 * b18 - b26 * b18;
-    factors.direct[k * 9 + 1] = b27;
-    factors.direct[k * 9 + 2] = b30;
-    factors.direct[k * 9 + 3] = b27;
-    factors.direct[k * 9 + 4] = b16 + b23 * b19 - b26 * b19;
-    factors.direct[k * 9 + 5] = b31;
-    factors.direct[k * 9 + 6] = b30;
-    factors.direct[k * 9 + 7] = b31;
-    factors.direct[k * 9 + 8] = b16 + b23 * b20 - b26 * b20;
-    factors.right[(k * 1 + 0) * 3 + 0] = b32 * Y_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b32 * Y_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b32 * Y_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b33 * Y_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b33 * Y_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b33 * Y_2;
+    const double b14 = p6 * b12 + p7 * (b13 - b12 - p8 * b12);
+    const double b15 = 1.0 / b13;
+    const double b16 = p5 * b14 * b15 * V * w;
+    const double b17 = b16 * Y_0;
+    const double b18 = b16 * Y_1;
+    const double b19 = b16 * Y_2;
+    const double b20 = p4 * b14;
+    const double b21 = b20 * b15 * w;
+    const double b22 = Y_0 * Y_0;
+    const double b23 = Y_1 * Y_1;
+    const double b24 = Y_2 * Y_2;
+    const double b25 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b22 + b23 + b24);
+    const double b26 = p9 * b25 * w;
+    const double b27 = b20 * (b25 * b15) * w;
+    const double b28 = b26 * Y_1 * Y_0 - b27 * Y_1 * Y_0;
+    const double b29 = b26 * Y_2;
+    const double b30 = b27 * Y_2;
+    const double b31 = b29 * Y_0 - b30 * Y_0;
+    const double b32 = b29 * Y_1 - b30 * Y_1;
+    const double b33 = p0 * b15 * b12 * V * w;
+    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
+    if (forces != nullptr) forces[0] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
+    if (forces != nullptr) forces[1] += b18;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
+    if (forces != nullptr) forces[2] += b19;
+    factors.direct[k * 9 + 0] = b21 + b26 * b22 - b27 * b22;
+    factors.direct[k * 9 + 1] = b28;
+    factors.direct[k * 9 + 2] = b31;
+    factors.direct[k * 9 + 3] = b28;
+    factors.direct[k * 9 + 4] = b21 + b26 * b23 - b27 * b23;
+    factors.direct[k * 9 + 5] = b32;
+    factors.direct[k * 9 + 6] = b31;
+    factors.direct[k * 9 + 7] = b32;
+    factors.direct[k * 9 + 8] = b21 + b26 * b24 - b27 * b24;
+    factors.right[(k * 1 + 0) * 3 + 0] = b33 * Y_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b33 * Y_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b33 * Y_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b34 * Y_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b34 * Y_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b34 * Y_2;
   }
 }
 
-// silling_3d_intact_jvp: per bond 35 add, 82 mul, 12 div, 2 call; per family 0 add, 6 mul, 0 div, 0 call
+// silling_3d_intact_jvp: per bond 35 add, 86 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1046,6 +1062,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1058,24 +1075,27 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    const double b3 = s_m * b1;
-    s_theta += 3.0 * (b1 - b2) * b2 * V / s_m * w;
-    ds_theta += 3.0 * dY_0 * b2 * V * w / b3 * Y_0 + 3.0 * dY_1 * b2 * V * w / b3 * Y_1 + 3.0 * dY_2 * b2 * V * w / b3 * Y_2;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    const double b4 = 1.0 / b2;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    ds_theta += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1 + p0 * dY_2 * b4 * b3 * V * w * Y_2;
   }
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
-  const double p4 = 3.0 * s_theta * P_K;
-  const double p5 = 15.0 * P_G;
-  const double p6 = 0.3333333333333333 * s_theta;
-  const double p7 = 3.0 * P_K;
-  const double p8 = 5.0 * P_G;
+  const double p5 = 1.0 / s_m;
+  const double p6 = 3.0 * s_theta * P_K;
+  const double p7 = 15.0 * P_G;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 15.0 * p5 * P_G;
+  const double p10 = ds_theta * p5;
+  const double p11 = 3.0 * P_K;
+  const double p12 = 5.0 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1087,28 +1107,24 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
-    const double b11 = p4 * b9 + p5 * (b10 - b9 - p6 * b9);
-    const double b12 = s_m * b10;
-    const double b13 = b11 / b12 * w;
-    const double b14 = p5 * w;
-    const double b15 = Y_0 * Y_0;
-    const double b16 = Y_1 * Y_1;
-    const double b17 = Y_2 * Y_2;
-    const double b18 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b15 + b16 + b17;
-    const double b19 = s_m * b18;
-    const double b20 = b14 / b19;
-    const double b21 = b11 * w;
-    const double b22 = s_m * b18 * b10;
-    const double b23 = b21 / b22;
-    const double b24 = b14 * Y_1 / b19 * Y_0 - b21 * Y_1 / b22 * Y_0;
-    const double b25 = b14 * Y_2 / b19;
-    const double b26 = b21 * Y_2 / b22;
+    const double b15 = p5 * (p6 * b13 + p7 * (b14 - b13 - p8 * b13));
+    const double b16 = 1.0 / b14;
+    const double b17 = b15 * b16 * w;
+    const double b18 = Y_0 * Y_0;
+    const double b19 = Y_1 * Y_1;
+    const double b20 = Y_2 * Y_2;
+    const double b21 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b18 + b19 + b20);
+    const double b22 = p9 * b21 * w;
+    const double b23 = b15 * (b21 * b16) * w;
+    const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
+    const double b25 = b22 * Y_2;
+    const double b26 = b23 * Y_2;
     const double b27 = b25 * Y_0 - b26 * Y_0;
-    const double b28 = ds_theta * (p7 * b9 - p8 * b9) * w / b12;
-    const double b29 = V0 * (dY_0 * (b13 + b20 * b15 - b23 * b15) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
+    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * w;
+    const double b29 = V0 * (dY_0 * (b17 + b22 * b18 - b23 * b18) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
     const double b30 = b25 * Y_1 - b26 * Y_1;
-    const double b31 = V0 * (dY_0 * b24 + dY_1 * (b13 + b20 * b16 - b23 * b16) + dY_2 * b30 + b28 * Y_1) * V;
-    const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b13 + b20 * b17 - b23 * b17) + b28 * Y_2) * V;
+    const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
+    const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b17 + b22 * b20 - b23 * b20) + b28 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b29;
     df[0] += b29;
     df[(k + 1) * 3 + 1] = -b31;
@@ -1118,7 +1134,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   }
 }
 
-// silling_3d_intact_energy: per bond 8 add, 15 mul, 1 div, 2 call; per family 1 add, 6 mul, 1 div, 0 call
+// silling_3d_intact_energy: per bond 8 add, 15 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
 double silling_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1127,6 +1143,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1136,32 +1153,33 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 3.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   double s_deviatoric_energy = 0.0;
-  const double p3 = 0.3333333333333333 * s_theta;
+  const double p4 = 0.3333333333333333 * s_theta;
   for (int k = 0; k < L; ++k) {
-    const double b4 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b6 = b5 - b4 - p3 * b4;
-    s_deviatoric_energy += b6 * b6 * V * w;
+    const double b7 = b6 - b5 - p4 * b5;
+    s_deviatoric_energy += b7 * b7 * V * w;
   }
-  const double W = 0.5 * s_theta * s_theta * P_K + 7.5 * s_deviatoric_energy / s_m * P_G;
+  const double W = 0.5 * (s_theta * s_theta) * P_K + 7.5 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
 
-// silling_3d_intact_outputs: per bond 6 add, 11 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// silling_3d_intact_outputs: per bond 6 add, 11 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1171,10 +1189,10 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
-    const double b2 = std::sqrt(b0);
-    s_theta += 3.0 * (b1 - b2) * b2 * V / s_m * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (b2 - b3) * b3 * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -1194,20 +1212,20 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &silling_3d_damaged_moments;
   d.damaged.residual = &silling_3d_damaged_residual;
-  d.damaged.residual_ops = {9, 23, 2, 2};
+  d.damaged.residual_ops = {9, 23, 1, 2};
   d.damaged.tangent = &silling_3d_damaged_tangent;
-  d.damaged.tangent_ops = {24, 68, 11, 2};
+  d.damaged.tangent_ops = {24, 74, 2, 2};
   d.damaged.jvp = &silling_3d_damaged_jvp;
-  d.damaged.jvp_ops = {35, 89, 12, 2};
+  d.damaged.jvp_ops = {35, 94, 3, 2};
   d.damaged.energy = &silling_3d_damaged_energy;
   d.damaged.outputs = &silling_3d_damaged_outputs;
   d.intact.moments = &silling_3d_intact_moments;
   d.intact.residual = &silling_3d_intact_residual;
-  d.intact.residual_ops = {9, 21, 2, 2};
+  d.intact.residual_ops = {9, 21, 1, 2};
   d.intact.tangent = &silling_3d_intact_tangent;
-  d.intact.tangent_ops = {24, 62, 11, 2};
+  d.intact.tangent_ops = {24, 67, 2, 2};
   d.intact.jvp = &silling_3d_intact_jvp;
-  d.intact.jvp_ops = {35, 82, 12, 2};
+  d.intact.jvp_ops = {35, 86, 3, 2};
   d.intact.energy = &silling_3d_intact_energy;
   d.intact.outputs = &silling_3d_intact_outputs;
   return d;

@@ -177,12 +177,15 @@ class Printer {
         return cpp_double(n.value);
       case Kind::Var:
         return n.text;
+      // A right operand of the same precedence is parenthesised: C++ groups left to
+      // right, and a * (1.0 / b) printed bare would compute (a * 1.0) / b — another
+      // division, and not the tree the counts and the other kernels describe.
       case Kind::Add:
-        return child(n.args[0], 1) + " + " + child(n.args[1], 1);
+        return child(n.args[0], 1) + " + " + child(n.args[1], 2);
       case Kind::Sub:
         return child(n.args[0], 1) + " - " + child(n.args[1], 2);
       case Kind::Mul:
-        return child(n.args[0], 2) + " * " + child(n.args[1], 2);
+        return child(n.args[0], 2) + " * " + child(n.args[1], 3);
       case Kind::Div:
         return child(n.args[0], 2) + " / " + child(n.args[1], 3);
       case Kind::Neg:

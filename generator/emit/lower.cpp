@@ -61,7 +61,20 @@ int Graph::product(double coefficient, const std::vector<NodeId>& factors) {
     const pdgen::Node& n = enode(f);
     if (n.op == Op::Pow) {
       const int base = lower(Expr::from_id(n.args[0]));
-      (n.value > 0 ? num : den).push_back({positive_power(base, std::fabs(n.value)), n.args[0]});
+      const double e = std::fabs(n.value);
+      if (n.value < 0 && (e == std::floor(e) || e - std::floor(e) == 0.5)) {
+        // b^-k as (1/b)^k and b^-(k+1/2) as (1/b)^k / sqrt(b): at most two divisions per
+        // distinct base, shared by every product that divides by it (hash-consing) and
+        // hoisted with it when b is per family. Dividing by each product separately cost
+        // Silling's tangent 9 divisions per bond.
+        const int whole = static_cast<int>(std::floor(e));
+        std::vector<int> parts;
+        if (whole > 0) parts.push_back(integer_power(make(Kind::Div, 0.0, "", {constant(1.0), base}), whole));
+        if (e != whole) parts.push_back(make(Kind::Div, 0.0, "", {constant(1.0), make(Kind::Call, 0.0, "std::sqrt", {base})}));
+        num.push_back({chain(Kind::Mul, parts), n.args[0]});
+      } else {
+        (n.value > 0 ? num : den).push_back({positive_power(base, e), n.args[0]});
+      }
     } else {
       num.push_back({lower(Expr::from_id(f)), f});
     }

@@ -1,6 +1,8 @@
 // The emitter: temporaries for shared nodes, one call per distinct sqrt/pow, powers as products.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <regex>
 #include <set>
 
@@ -45,13 +47,30 @@ TEST(Emit, SmallIntegerPowersAreProducts) {
 
 TEST(Emit, KernelHeaderCarriesOperationCounts) {
   const Expr x = symbol("x"), y = symbol("y");
-  const auto k = emit_kernel(scalar_program({{x, "x"}, {y, "y"}}, x * y + x / y));
-  EXPECT_EQ(k.per_family.muls, 1);
-  EXPECT_EQ(k.per_family.divs, 1);
-  EXPECT_EQ(k.per_family.adds, 1);
-  EXPECT_NE(k.code.find("// f: per bond 0 add, 0 mul, 0 div, 0 call; per family 1 add, 1 mul, 1 div, 0 call"),
+  const auto k = emit_kernel(scalar_program({{x, "x"}, {y, "y"}}, x * y + x / y + exp(x)));
+  // The header's counts are those of the emitted body.
+  const std::string body = k.code.substr(k.code.find('{'));
+  auto occurrences = [&](const std::string& op) {
+    int n = 0;
+    for (std::size_t at = body.find(op); at != std::string::npos; at = body.find(op, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(k.per_family.muls, occurrences(" * ")) << k.code;
+  EXPECT_EQ(k.per_family.divs, occurrences(" / ")) << k.code;
+  EXPECT_EQ(k.per_family.adds, occurrences(" + ") + occurrences(" - ")) << k.code;
+  EXPECT_EQ(k.per_family.calls, 1) << k.code;
+  EXPECT_EQ(k.per_family.divs, 1) << k.code;
+  EXPECT_NE(k.code.find("// f: per bond 0 add, 0 mul, 0 div, 0 call; per family " + std::to_string(k.per_family.adds) +
+                        " add, " + std::to_string(k.per_family.muls) + " mul, 1 div, 1 call"),
             std::string::npos)
       << k.code;
+}
+
+// Every quotient by the same base shares one reciprocal: three quotients, one division.
+TEST(Emit, DivisionsByTheSameBaseShareOneReciprocal) {
+  const Expr x = symbol("x"), y = symbol("y"), r = symbol("r");
+  const auto k = emit_kernel(scalar_program({{x, "x"}, {y, "y"}, {r, "r"}}, x / r + y / r + x * y / (r * r)));
+  EXPECT_EQ(k.per_family.divs, 1) << k.code;
 }
 
 TEST(Emit, NodeUsedTwiceBecomesATemporary) {
