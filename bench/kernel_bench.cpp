@@ -286,90 +286,6 @@ void BM_central_fd_tangent_dense(benchmark::State& state, Case c) {
   state.counters["rel_diff"] = diff;
 }
 
-// Bench-only prototype, not used by the runtime: pd::form_local_matrix with the
-// neighbour block computed entry by entry with the state sum innermost (one store per
-// entry, the right factors of a bond read contiguously) instead of one read-modify-write
-// pass over the row per state. Only for laws with several states (correspondence:
-// d*d); checked against form_local_matrix before timing.
-template <int D, int S>
-void form_local_matrix_state_inner(const pd::abi::Family& fam, const pd::abi::TangentFactors& fac, double* M) {
-  const int L = fam.n_bonds, n = (L + 1) * D;
-  double rs[S * D] = {}, ls[S * D] = {}, center[D * D] = {};
-  for (int k = 0; k < L; ++k) {
-    const double c = fam.V0 * fam.V[k];
-    for (int a = 0; a < S * D; ++a) {
-      rs[a] += fac.right[k * S * D + a];
-      ls[a] += c * fac.left[k * S * D + a];
-    }
-  }
-  for (int i = 0; i < L; ++i) {
-    const double c = fam.V0 * fam.V[i];
-    const double* left_i = fac.left + i * S * D;
-    const double* direct_i = fac.direct + i * D * D;
-    for (int r = 0; r < D; ++r) {
-      double* row = M + static_cast<std::ptrdiff_t>((i + 1) * D + r) * n;
-      double a[S];
-      for (int s = 0; s < S; ++s) a[s] = -c * left_i[s * D + r];
-      double* __restrict block = row + D;
-      for (int k = 0; k < L; ++k) {
-        const double* __restrict rk = fac.right + k * S * D;
-        for (int q = 0; q < D; ++q) {
-          double v = 0;
-          for (int s = 0; s < S; ++s) v += a[s] * rk[s * D + q];
-          block[k * D + q] = v;
-        }
-      }
-      for (int q = 0; q < D; ++q) row[(i + 1) * D + q] -= c * direct_i[r * D + q];
-      for (int q = 0; q < D; ++q) {
-        double v = direct_i[r * D + q];
-        for (int s = 0; s < S; ++s) v += left_i[s * D + r] * rs[s * D + q];
-        row[q] = c * v;
-        center[r * D + q] -= c * v;
-      }
-    }
-  }
-  for (int r = 0; r < D; ++r) {
-    double* row = M + static_cast<std::ptrdiff_t>(r) * n;
-    for (int q = 0; q < D; ++q) row[q] = center[r * D + q];
-    for (int k = 0; k < L; ++k) {
-      const double c = fam.V0 * fam.V[k];
-      for (int q = 0; q < D; ++q) {
-        double v = c * fac.direct[k * D * D + r * D + q];
-        for (int s = 0; s < S; ++s) v += ls[s * D + r] * fac.right[(k * S + s) * D + q];
-        row[(k + 1) * D + q] = v;
-      }
-    }
-  }
-}
-
-using FormFn = void (*)(const pd::abi::Family&, const pd::abi::TangentFactors&, double*);
-FormFn state_inner_form(int dim, int n_states) {
-  if (dim == 2 && n_states == 4) return form_local_matrix_state_inner<2, 4>;
-  if (dim == 3 && n_states == 9) return form_local_matrix_state_inner<3, 9>;
-  return nullptr;
-}
-
-void BM_prototype_tangent_dense(benchmark::State& state, Case c) {
-  const TestFamily f = family(c);
-  const FormFn form = state_inner_form(f.dim, f.law->n_states);
-  pd::TangentScratch scratch;
-  const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
-  std::vector<double> forces(static_cast<std::size_t>(f.dofs())), M(static_cast<std::size_t>(f.dofs() * f.dofs()));
-  const pd::abi::Family fam = f.view();
-  f.law->intact.tangent(fam, forces.data(), fac);
-  form(fam, fac, M.data());
-  const double diff = rel_diff(M, f.tangent_matrix(f.law->intact));
-  check("prototype dense tangent", c, f, diff, 1e-14);
-  for (auto _ : state) {
-    f.law->intact.tangent(fam, forces.data(), fac);
-    form(fam, fac, M.data());
-    benchmark::DoNotOptimize(M.data());
-    benchmark::ClobberMemory();
-  }
-  label(state, f);
-  state.counters["rel_diff"] = diff;
-}
-
 // Derivative vectors: heap (like Sacado DFad) and fixed capacity (stack, no allocation).
 using HeapDer = Eigen::VectorXd;
 template <int Max>
@@ -412,8 +328,6 @@ void register_all() {
     benchmark::RegisterBenchmark(("generated_tangent_factors" + suffix).c_str(), BM_generated_tangent_factors, c);
     benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c);
     benchmark::RegisterBenchmark(("generated_jvp" + suffix).c_str(), BM_generated_jvp, c);
-    if (const auto* law = pd::abi::find_law(c.law); law && state_inner_form(law->dim, law->n_states))
-      benchmark::RegisterBenchmark(("prototype_tangent_dense" + suffix).c_str(), BM_prototype_tangent_dense, c);
     benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<HeapDer>, c);
     if (three_d)
       benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),

@@ -108,7 +108,7 @@ def kernel_section(path):
     table = defaultdict(dict)  # (law, ratio label) -> kind -> (median ns, entries)
     for name, entries in runs.items():
         m = re.match(r"([a-z_]+)/([a-z_0-9]+)/([0-9.a-z]+)$", name)
-        if m and (m.group(1) in KERNEL_KINDS or m.group(1) == "prototype_tangent_dense"):
+        if m and (m.group(1) in KERNEL_KINDS):
             table[(m.group(2), m.group(3))][m.group(1)] = (median_ns(entries), entries)
     out = ["## Kernels: one family, four laws\n",
            "`build/bin/kernel_bench`. Families are perturbed lattice neighbourhoods (`lattice_family` in "
@@ -138,7 +138,6 @@ def kernel_section(path):
         if not rows:
             continue
         out.append("### %s\n" % title)
-        protos = []
         out.append("| law | delta/h | bonds | residual | factors | dense | JVP | AD heap | AD fixed | FD | AD / dense (heap, fixed) | FD / dense | AD fixed / factors | FD / factors | max rel. diff AD, FD |")
         out.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for (law, label), row in rows:
@@ -153,20 +152,9 @@ def kernel_section(path):
                 fmt_ns(get("generated_jvp")), fmt_ns(ad), fmt_ns(adf), fmt_ns(fd), fmt_ratio(ratio(ad, dense)),
                 fmt_ratio(ratio(adf, dense)), fmt_ratio(ratio(fd, dense)), fmt_ratio(ratio(adf, fac)),
                 fmt_ratio(ratio(fd, fac)), ", ".join("%.1e" % d for d in diffs)))
-            if "prototype_tangent_dense" in row:
-                proto = row["prototype_tangent_dense"][0]
-                protos.append("%s at %d bonds: %s ns (dense %s ns, %.1f× faster); AD / prototype %s, FD / prototype %s" % (
-                    law, bonds, fmt_ns(proto), fmt_ns(dense), dense / proto, fmt_ratio(ratio(min(ad, adf), proto)),
-                    fmt_ratio(ratio(fd, proto))))
             if bonds == 28 and not law.endswith("3d"):
                 best_ad = min(ad, adf)
                 summary.append((law, ratio(best_ad, dense), ratio(fd, dense), ratio(best_ad, fac), ratio(fd, fac)))
-        if protos:
-            out.append("")
-            out.append("*dense* is dominated by `form_local_matrix` for this law with d² states (see the profile). A bench-only "
-                       "prototype (`form_local_matrix_state_inner` in `bench/kernel_bench.cpp`: the state sum innermost, "
-                       "one store per entry; the same matrix bit for bit) forms it faster:\n")
-            out.extend("- " + p for p in protos)
         out.append("")
     if summary:
         out.append("### Targets at 28 neighbours (2D, delta/h = 3): generated tangent >= 5× faster than forward AD, >= 30× faster than central FD\n")

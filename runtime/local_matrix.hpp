@@ -15,9 +15,12 @@ namespace pd {
 // The neighbour block is a rank-n_states product written row by row (contiguous
 // stores); the center row and column use the sums over k of right_k and over i of
 // c_i left_i, so only the neighbour block costs O(L^2).
-inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac,
-                              double* M) {
-  const int L = fam.n_bonds, d = dim, S = n_states;
+//
+// DIM and STATES > 0 fix the dimension and state count at compile time (the loops over
+// them unroll: 3x faster for correspondence's 4 states); 0 reads them at run time.
+template <int DIM, int STATES>
+void form_local_matrix_for(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac, double* M) {
+  const int L = fam.n_bonds, d = DIM > 0 ? DIM : dim, S = STATES > 0 ? STATES : n_states;
   const int n = (L + 1) * d, dd = d * d;
   double right_sum[3 * 16] = {}, left_sum[3 * 16] = {};  // [s*d + q], n_states <= 16 on the stack
   std::vector<double> heap;
@@ -46,17 +49,26 @@ inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, con
       double* __restrict block = row + d;
       if (S == 0)
         for (int col = 0; col < n - d; ++col) block[col] = 0.0;
-      for (int s = 0; s < S; ++s) {
-        const double a = -c * left_i[s * d + r];
-        const double* __restrict right = fac.right + s * d;
-        if (S == 1) {  // the common case: one contiguous scaled copy
-          for (int col = 0; col < n - d; ++col) block[col] = a * right[col];
-        } else if (s == 0) {
-          for (int k = 0; k < L; ++k)
-            for (int q = 0; q < d; ++q) block[k * d + q] = a * right[k * S * d + q];
-        } else {
-          for (int k = 0; k < L; ++k)
-            for (int q = 0; q < d; ++q) block[k * d + q] += a * right[k * S * d + q];
+      if (S == 1) {  // the common case: one contiguous scaled copy
+        const double a = -c * left_i[r];
+        const double* __restrict right = fac.right;
+        for (int col = 0; col < n - d; ++col) block[col] = a * right[col];
+      } else if (S > 1) {
+        // Entry by entry with the state sum innermost: one store per entry and each
+        // bond's right factors read contiguously. One read-modify-write pass over the
+        // row per state instead made correspondence's dense tangent 5x slower.
+        double a_stack[16];
+        std::vector<double> a_heap;
+        double* a = a_stack;
+        if (S > 16) a_heap.resize(static_cast<std::size_t>(S)), a = a_heap.data();
+        for (int s = 0; s < S; ++s) a[s] = -c * left_i[s * d + r];
+        for (int k = 0; k < L; ++k) {
+          const double* __restrict rk = fac.right + static_cast<std::ptrdiff_t>(k) * S * d;
+          for (int q = 0; q < d; ++q) {
+            double v = 0.0;
+            for (int s = 0; s < S; ++s) v += a[s] * rk[s * d + q];
+            block[k * d + q] = v;
+          }
         }
       }
       for (int q = 0; q < d; ++q) row[(i + 1) * d + q] -= c * direct_i[r * d + q];
@@ -82,6 +94,15 @@ inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, con
       }
     }
   }
+}
+
+inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac,
+                              double* M) {
+  if (dim == 2 && n_states == 1) return form_local_matrix_for<2, 1>(dim, n_states, fam, fac, M);
+  if (dim == 3 && n_states == 1) return form_local_matrix_for<3, 1>(dim, n_states, fam, fac, M);
+  if (dim == 2 && n_states == 4) return form_local_matrix_for<2, 4>(dim, n_states, fam, fac, M);
+  if (dim == 3 && n_states == 9) return form_local_matrix_for<3, 9>(dim, n_states, fam, fac, M);
+  form_local_matrix_for<0, 0>(dim, n_states, fam, fac, M);
 }
 
 // Scratch storage for one family's tangent factors, sized once per thread.
