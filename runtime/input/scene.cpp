@@ -379,7 +379,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     s.solver.krylov_tolerance = sv.number("krylov_tolerance", 1e-12);
     s.solver.krylov_max_iterations = sv.integer("krylov_max_iterations", 0);
     if (s.solver.krylov_max_iterations < 0) sv.get("krylov_max_iterations").fail("must be 0 (automatic) or positive");
-    const double direct_max = sv.number("direct_max_nonzeros", 8e6);
+    const double direct_max = sv.number("direct_max_nonzeros", 2e6);
     if (!(direct_max >= 0) || direct_max > 9e18) sv.get("direct_max_nonzeros").fail("must be a non-negative count");
     s.solver.direct_max_nonzeros = static_cast<long long>(direct_max);
     const double preconditioner_max = sv.number("preconditioner_max_nonzeros", 4e7);

@@ -73,7 +73,11 @@ struct SolverSpec {
   int max_iterations = 30;
   double krylov_tolerance = 1e-12;
   int krylov_max_iterations = 0;  // 0: 2 x unknowns for assembled Krylov, 20000 matrix-free
-  long long direct_max_nonzeros = 8'000'000;  // auto: a direct solver up to this many nonzeros
+  // auto: the assembled tangent (a direct solver) up to this many estimated nonzeros,
+  // matrix-free above. On the crack at delta/h = 3.5 (one run, shared machine) CHOLMOD
+  // and the short-horizon matrix-free path broke even near 1.5e6 nonzeros (60^2: 1.10 s
+  // vs 0.86 s); at 100^2 (4.3e6) matrix-free took 3.9 s against CHOLMOD's 15 s.
+  long long direct_max_nonzeros = 2'000'000;
   // auto, above direct_max_nonzeros: the short-horizon preconditioner while its stiffness
   // has at most this many nonzeros (its factor must fit in memory), Jacobi above
   long long preconditioner_max_nonzeros = 40'000'000;

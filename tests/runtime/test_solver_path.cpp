@@ -36,7 +36,7 @@ TEST(SolverPath, NonzeroEstimateIsCloseToTheRealPattern) {
 
 TEST(SolverPath, AutoKeepsSmallProblemsAssembled) {
   pd::SolverSpec spec;
-  const pd::SolverPath path = pd::choose_solver_path(spec, 10000, 35.0, 2, 3.5);  // about 5.6e6 nonzeros
+  const pd::SolverPath path = pd::choose_solver_path(spec, 2500, 35.0, 2, 3.5);  // 50^2: about 1.4e6 nonzeros
   EXPECT_EQ(path.linear, "auto");
   EXPECT_NE(path.reason.find("within direct_max_nonzeros"), std::string::npos) << path.reason;
 }
