@@ -85,7 +85,7 @@ def machine_lines(context, build, seconds, command):
             version, flags, cache.get("CMAKE_BUILD_TYPE", "Release")),
         "- Eigen %s, Google Benchmark %s (Debian's libbenchmark prints \"Library was built as DEBUG\": that is its own "
         "timing loop, not the code measured); BLAS `%s`" % (eigen, gbench, blas),
-        "- Date: %s; the whole `%s` took %s." % (context.get("date", ""), command, "%.0f s" % seconds if seconds else "n/a")]
+        "- Kernel results dated %s; this `%s` took %s (stages run with --only keep the other stages' results in build/bench/)." % (context.get("date", ""), command, "%.0f s" % seconds if seconds else "n/a")]
     return out
 
 

@@ -24,11 +24,16 @@ struct ThreadScratch {
 };
 
 // True when all n values are finite: 0*x is 0 for finite x and NaN for NaN or Inf, so
-// one branch-free (vectorisable) pass decides, at a fraction of the scatter's cost.
+// one branch-free pass decides. Eight independent sums: with one, the additions form a
+// dependency chain the compiler may not reorder (no -ffast-math) and the check cost 22%
+// of the stiffness assembly, twice the forming of the matrix it checks.
 bool all_finite(const double* v, std::size_t n) {
-  double s = 0;
-  for (std::size_t i = 0; i < n; ++i) s += v[i] * 0.0;
-  return s == 0.0;
+  double s[8] = {};
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8)
+    for (int j = 0; j < 8; ++j) s[j] += v[i + j] * 0.0;
+  for (; i < n; ++i) s[0] += v[i] * 0.0;
+  return ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7])) == 0.0;
 }
 }  // namespace
 
