@@ -249,22 +249,25 @@ def solve_section(paths):
            "preconditioner, both with Eisenstat–Walker forcing; *auto*: what `pd run` picks by default (its choice in the "
            "last column). Peak = the process's maximum resident set (`wait4`). Krylov = iterations summed over the Newton "
            "steps. A point is not run when the same path's previous grid, scaled linearly in particles, projects past the "
-           "time limit.\n",
+           "time or memory limit. *load*: the 1-minute load average before → after the point; on this shared 2-core "
+           "machine a point run beside other work took up to 7× longer than the same point alone, so compare rows of "
+           "similar load.\n",
            "| grid | δ/h | path | method | nonzeros | Newton | Krylov | setup s | assembly s | linear s | total s | peak MB | "
-           "kB/particle | field error | auto's choice |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "kB/particle | field error | auto's choice | load |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         head = "| %d² | %g | %s |" % (r["grid"], r["ratio"], r["solver"])
         if "skipped" in r:
-            out.append(head + " not run: %s |||||||||||" % r["skipped"])
+            out.append(head + " not run: %s ||||||||||||" % r["skipped"])
         elif "error" in r:
-            out.append(head + " failed: %s |||||||||||" % r["error"].replace("|", "/"))
+            out.append(head + " failed: %s ||||||||||||" % r["error"].replace("|", "/"))
         else:
-            out.append(head + " %s | %.3g | %d | %d | %.3g | %.3g | %.3g | %.3g | %.0f | %.1f | %s | %s |" % (
+            out.append(head + " %s | %.3g | %d | %d | %.3g | %.3g | %.3g | %.3g | %.0f | %.1f | %s | %s | %s |" % (
                 r["method"], r["nonzeros"], r["newton_iterations"], r["krylov_iterations"], r["setup_seconds"],
                 r["assembly_seconds"], r["linear_seconds"], r["wall_seconds"], r["peak_mb"],
                 r["peak_mb"] * 1024 / r["particles"], "%.3e" % r["field_error"] if r.get("field_error") is not None else "–",
-                r["path"].split(" -> ")[-1] if r["solver"] == "auto" else ""))
+                r["path"].split(" -> ")[-1] if r["solver"] == "auto" else "",
+                "%.1f → %.1f" % tuple(r["load"]) if "load" in r else "–"))
     out.append("")
     return out
 

@@ -46,13 +46,17 @@ def run_point(pd, base, count, ratio, solver, workdir):
     path = os.path.join(workdir, "scene.yaml")
     with open(path, "w") as f:
         f.write(scene_text(base, count, ratio, solver, out_dir))
+    load_before = os.getloadavg()[0]
     start = time.monotonic()
     proc = subprocess.Popen([pd, "run", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     log = proc.stdout.read()
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.monotonic() - start
     row = {"grid": count, "ratio": ratio, "solver": solver, "wall_seconds": wall,
-           "peak_mb": usage.ru_maxrss / 1024.0, "exit": os.waitstatus_to_exitcode(status)}
+           "peak_mb": usage.ru_maxrss / 1024.0, "exit": os.waitstatus_to_exitcode(status),
+           # the 1-minute load average before and after: the machine is shared, and a
+           # point run beside other work can take several times longer
+           "load": [load_before, os.getloadavg()[0]]}
     summary = os.path.join(out_dir, "summary.json")
     if row["exit"] != 0 or not os.path.exists(summary):
         row["error"] = log.strip().splitlines()[-1] if log.strip() else "no output"
