@@ -415,12 +415,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
   }
   if (m.has("reference")) s.reference = read_field(m.get("reference"));
   if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
-  if (m.has("damage")) {
-    s.damage = read_damage(m.get("damage"));
-    // Breaking bonds between the load steps of an implicit solve is not implemented yet
-    // (issue 8): say so rather than ignore the section.
-    if (!s.dynamics) m.get("damage").fail("damage needs a dynamics section (explicit or relaxation); bond breaking between implicit load steps is not implemented yet");
-  }
+  if (m.has("damage")) s.damage = read_damage(m.get("damage"));
   if (!s.dynamics)
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");

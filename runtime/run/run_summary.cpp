@@ -45,6 +45,7 @@ std::string RunSummary::json() const {
                             {"increment", it.increment}, {"line_search", it.step_length},
                             {"linear_iterations", it.linear_iterations}});
     j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
+    if (newton.changes > 0) j["bonds_broken_between_load_steps"] = newton.changes;
     j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
                     {"solve", solve_seconds}, {"output", output_seconds}};
   }
@@ -83,6 +84,7 @@ std::string RunSummary::text() const {
     s += fmt::format("unknowns: {}\nnonzeros: {}\nsolver path: {}\nlinear solver: {} ({})\nnewton iterations: {}\n",
                      newton.unknowns, newton.nonzeros, solver_path, newton.linear_solver, newton.linear_choice,
                      newton.iterations());
+    if (newton.changes > 0) s += fmt::format("bonds broken between load steps: {}\n", newton.changes);
     for (const auto& it : newton.history)
       s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
                        it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");

@@ -16,6 +16,7 @@
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
+#include "damage/critical_stretch.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/solver_path.hpp"
@@ -58,7 +59,8 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   scene_.solver.preconditioner = path.preconditioner;
   summary_.solver_path = path.reason;
   AssemblerOptions options;
-  options.intact = summary_.broken_bonds == 0;
+  // A scene with damage reads alpha from the start: bonds break between load steps.
+  options.intact = summary_.broken_bonds == 0 && !scene_.damage;
   options.matrix = scene_.solver.linear != "matrix_free";
   if (matrix_free_preconditioner() == "approximate") {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
@@ -78,6 +80,11 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   if (auto e = make_crack_pressure(scene_, particles_, bonds_)) effects_.push_back(std::move(e));
   for (const auto& e : effects_) summary_.effects.push_back(e->describe());
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
+  if (scene_.damage) {
+    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
+    damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
+    summary_.effects.push_back(damage_->describe() + ", between load steps (each step re-solved until no bond breaks)");
+  }
   u_.assign(static_cast<std::size_t>(particles_.size()) * particles_.dim, 0.0);
   summary_.setup_seconds = seconds_since(t0);
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
@@ -146,6 +153,12 @@ RunSummary Simulation::run(bool write) {
   std::vector<const Effect*> effects;
   for (const auto& e : effects_) effects.push_back(e.get());
   PeridynamicSystem system(*assembler_, effects, approximation_.get());
+  if (damage_)
+    system.set_evolution([this](const double* u) {
+      const int broke = damage_->break_bonds(u);
+      if (broke > 0) assembler_->update_moments();  // the states' moments sum over intact bonds
+      return broke;
+    });
   Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u_.size()));
   if (loaded) {
     summary_.newton = NewtonSolver(newton_settings(), log_).solve(system, dofs, u);

@@ -16,6 +16,8 @@
 
 namespace pd {
 
+class CriticalStretchDamage;
+
 struct ProbeResult {
   std::string name;
   int particles = 0;
@@ -72,6 +74,7 @@ class Simulation {
   Bonds short_bonds_;
   std::unique_ptr<FamilyAssembler> approximation_;
   std::vector<std::unique_ptr<Effect>> effects_;
+  std::unique_ptr<CriticalStretchDamage> damage_;  // only when the scene has a damage section
   std::vector<double> u_;
   RunSummary summary_;
 };

@@ -32,6 +32,11 @@ class NonlinearSystem {
   virtual void diagonal(const Eigen::VectorXd& u, double load, Eigen::VectorXd& d);
   // A sparser matrix close to K(u) (e.g. the same law on a shorter horizon), whose
   // factorisation preconditions the matrix-free path; fixed pattern between calls.
+  // Called after each converged load step: a system with an evolving state (bonds
+  // breaking at a critical stretch) updates it from u and returns how many changes it
+  // made; Newton then solves the same load step again, on the new state.
+  virtual int after_converged_step(const Eigen::VectorXd& /*u*/, double /*load*/) { return 0; }
+  virtual std::string describe_changes(int changes) const { return std::to_string(changes) + " state changes"; }
   virtual bool has_approximate_tangent() const { return false; }
   virtual void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P);
 };
@@ -39,6 +44,7 @@ class NonlinearSystem {
 struct NewtonSettings {
   int load_steps = 1;
   int max_iterations = 25;           // per load step
+  int max_rounds = 100;              // solves of one load step while the system keeps changing
   double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
   double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
   // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
@@ -82,6 +88,7 @@ struct NewtonRecord {
 struct NewtonResult {
   bool converged = false;
   bool stagnated = false;  // converged by the stagnation rule (the residual floor), not by rtol
+  long long changes = 0;   // state changes after converged steps (NonlinearSystem::after_converged_step)
   std::vector<NewtonRecord> history;
   std::string linear_solver;  // the method that solved the last system
   std::string linear_choice;  // why (and any fallback)
