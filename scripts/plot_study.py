@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import NullFormatter  # noqa: E402
 
 FEW_SERIES = 12
 
@@ -80,6 +81,7 @@ def faceted_plots(out, rows, problems):
                     ax.loglog(x, e, marker="o", ms=2, lw=0.8, label="%.1f: %.2f" % (ratio, order(x, e)))
                 ax.grid(True, which="both", lw=0.3)
                 ax.tick_params(labelsize=6)
+                ax.xaxis.set_minor_formatter(NullFormatter())  # h spans one decade: minor labels overlap
                 ax.legend(fontsize=5, title="δ/h: order", title_fontsize=5)
                 if i == 0:
                     ax.set_title(problem, fontsize=8)
