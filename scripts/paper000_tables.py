@@ -102,9 +102,9 @@ def crack(out):
             continue
         paper = " (%s)" % r["paper"] if r["paper"] else ""
         paper_min = " (%.1f%%)" % (100 * float(r["paper_min"])) if r["paper_min"] else ""
-        print("| %s | %s%s | %s | %.2f%%%s |" % (label, r["order"], paper, r["fine"], 100 * float(r["min_error"]), paper_min))
-    print("\n**Cost of every point** — solver that reached it, Newton and Krylov iterations, wall time, peak "
-          "resident memory\n")
+        print("| %s | %s%s | %s | %.3g%%%s |" % (label, r["order"], paper, r["fine"], 100 * float(r["min_error"]), paper_min))
+    print("\n**Cost of every point** — solver that reached it, Newton and Krylov iterations, nonzeros (of the "
+          "tangent; matrix-free: of the short-horizon preconditioner), wall time, peak resident memory\n")
     print("| law | δ/h | n | particles | error | solver | Newton | Krylov | nonzeros | seconds | peak MiB |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|")
     for r in sorted(pts, key=lambda r: (r["law"], float(r["ratio"]), int(r["count"]))):

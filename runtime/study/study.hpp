@@ -58,7 +58,7 @@ struct StudyPoint {
   std::string failure;
   double error = 0;  // the first probe's error, or the field error (eq. 48) when the scene has a reference
   int particles = 0;
-  long long nonzeros = 0;  // of the reduced tangent; 0 matrix-free (the preconditioner's are not counted)
+  long long nonzeros = 0;  // of the reduced tangent; matrix-free: of the short-horizon preconditioner
   double setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
   int newton_iterations = 0, krylov_iterations = 0;
   std::string solver;         // the linear method that solved the last Newton system
