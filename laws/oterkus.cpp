@@ -15,15 +15,19 @@
 
 using namespace pdgen;
 
-PDGEN_LAW(oterkus_plane_strain) {
-  Law law("oterkus_plane_strain", 2,
-          "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); params kappa2, G");
+namespace {
+// d_moment: the horizon sum whose inverse (times 2) is d. Eq. (12) matched to theta = 2s
+// gives sum w a |xi| V; paper 000 section 3 says instead that d's sum "is identical to the
+// summation for m" (sum w a |xi|^2 V). The second variant is kept to test whether that
+// reading explains the paper's non-convergence on biaxial compression (docs/paper000.md).
+Law oterkus(const std::string& name, const std::string& summary, bool d_from_m) {
+  Law law(name, 2, summary);
   const Expr kappa = law.param("kappa2"), G = law.param("G");
   const Expr r = norm(law.xi()), l = law.deformed_length(), e = l - r;
   const Expr wa = law.w() * law.alpha();
   const Expr cosine = dot(law.Y(), law.xi()) / (l * r);
-  const Expr m1 = law.sum("m1", wa * r * law.V());
-  const Expr m2 = law.sum("m2", wa * r * r * law.V());
+  const Expr m1 = d_from_m ? law.sum("m2", wa * r * r * law.V()) : law.sum("m1", wa * r * law.V());
+  const Expr m2 = d_from_m ? m1 : law.sum("m2", wa * r * r * law.V());
   const Expr mx = law.sum("mx", wa * pow(law.xi()[0] * law.xi()[1], 2) / (r * r) * law.V());
   const Expr d = 2 / m1;
   const Expr b = G / (2 * mx);
@@ -32,4 +36,18 @@ PDGEN_LAW(oterkus_plane_strain) {
   law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
   law.output("dilatation", theta);
   return law;
+}
+}  // namespace
+
+PDGEN_LAW(oterkus_plane_strain) {
+  return oterkus("oterkus_plane_strain",
+                 "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); params kappa2, G",
+                 false);
+}
+
+PDGEN_LAW(oterkus_paper_d_plane_strain) {
+  return oterkus("oterkus_paper_d_plane_strain",
+                 "Oterkus law with d = 2 / sum w a |xi|^2 V (paper 000 section 3's reading of eq. 12; a study variant, "
+                 "not dimensionally consistent); params kappa2, G",
+                 true);
 }

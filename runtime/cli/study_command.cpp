@@ -39,7 +39,7 @@ int study_command(const Args& args) {
   fmt::print("\norders of convergence (least squares on log e vs log h):\n");
   for (const auto& o : orders)
     fmt::print("  {:<10} {:<32} {:<10} delta/h={:<4} order {:7.3f}{}\n", o.problem, o.law, o.influence, o.ratio, o.order,
-               o.has_paper ? fmt::format("   (paper {:.4f})", o.paper) : "");
+               o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
   fmt::print("results: {}/points.csv, {}/orders.md, {}/*.png\n", out, out, out);
   return 0;
 }

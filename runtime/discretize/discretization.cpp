@@ -53,6 +53,11 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
   // and no unperturbed row sits on the boundary where rounding would decide.
   Region r = region;
   if (r.kind == Region::Kind::Side && r.thickness <= 0) r.thickness = scene.placement == "node" ? 0.5 * scene.h : scene.h;
+  // A collar particle at depth d lacks the lattice site beyond the face, at distance d + s
+  // (s = h/2 for cell centres, h for nodes), when d + s <= k delta. The tolerance puts a
+  // site exactly k delta away (half-integer delta/h) inside the family, as find_bonds does.
+  if (r.kind == Region::Kind::Collar)
+    r.thickness = r.horizons * scene.delta() - (scene.placement == "node" ? scene.h : 0.5 * scene.h) + 1e-6 * scene.h;
   std::vector<int> out;
   for (int i = 0; i < p.size(); ++i)
     if (r.contains(p.position(i), p.dim, scene.lo, scene.hi, scene.h)) out.push_back(i);
@@ -61,16 +66,19 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
 
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
-  // Cell list with cells of size delta: neighbours lie in the 3^d surrounding cells.
+  // Cell list with cells a little larger than the reach delta (1 + 1e-12): neighbours then
+  // lie in the 3^d surrounding cells even when rounding of (x - lo) / size puts a neighbour
+  // exactly delta away (integer delta/h on a lattice) one cell further than exact arithmetic.
+  const double size = delta * (1 + 1e-9);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int c = 0; c < d; ++c) {
     lo[c] = hi[c] = p.x[c];
     for (int i = 0; i < n; ++i) lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
   }
   int dims[3] = {1, 1, 1};
-  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / delta) + 1);
+  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / size) + 1);
   auto cell_of = [&](const double* x, int* ci) {
-    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / delta)) : 0;
+    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
   };
   const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
   std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));

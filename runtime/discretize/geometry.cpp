@@ -47,6 +47,11 @@ bool Region::contains(const double* x, int dim, const Point& lo, const Point& hi
       for (int i = 0; i < dim; ++i) in = in && x[i] >= min[i] && x[i] <= max[i];
       return kind == Kind::Box ? in : !in;
     }
+    case Kind::Collar: {
+      bool near = false;
+      for (int i = 0; i < dim; ++i) near = near || x[i] - lo[i] < thickness || hi[i] - x[i] < thickness;
+      return near;
+    }
   }
   return false;
 }

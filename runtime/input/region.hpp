@@ -10,9 +10,14 @@ using Point = std::array<double, 3>;
 
 // Where a boundary condition or probe applies.
 struct Region {
-  enum class Kind { All, Side, Box, Outside } kind = Kind::All;
+  // Collar: the particles whose family the domain box truncates, `horizons` deep (1: the
+  // particles with a missing neighbour within delta) -- a Dirichlet collar that keeps one
+  // horizon thick when a study refines h or changes delta/h.
+  enum class Kind { All, Side, Box, Outside, Collar } kind = Kind::All;
   std::string side;          // left right bottom top back front
-  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row)
+  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row).
+                             // Collar: depth from the box faces, set from `horizons` by region_particles
+  double horizons = 0;       // Collar: depth in horizons
   Point min{}, max{};        // Box / Outside (the complement of the box)
   // True when a particle at x belongs (domain bounds lo/hi, spacing h).
   bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;

@@ -89,12 +89,20 @@ Region read_region(const YamlAt& at, int dim) {
     b.finish();
     ++kinds;
   }
+  if (m.has("collar")) {
+    MapReader c(m.get("collar"));
+    r.kind = Region::Kind::Collar;
+    r.horizons = c.number("horizons", 1.0);
+    if (!(r.horizons > 0)) c.get("horizons").fail("horizons must be positive");
+    c.finish();
+    ++kinds;
+  }
   if (m.has("all")) {
     if (!m.boolean("all", false)) m.get("all").fail("use all: true, or another region kind");
     r.kind = Region::Kind::All;
     ++kinds;
   }
-  if (kinds != 1) at.fail("give exactly one of side, box, outside, all");
+  if (kinds != 1) at.fail("give exactly one of side, box, outside, collar, all");
   m.finish();
   return r;
 }

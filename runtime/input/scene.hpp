@@ -128,7 +128,7 @@ struct Scene {
 };
 
 struct YamlAt;
-// A region map (side / box / outside / all); used by the section readers.
+// A region map (side / box / outside / collar / all); used by the section readers.
 Region read_region(const YamlAt& at, int dim);
 
 // Reads and validates a scene file; throws SceneError (file:line: key: message).

@@ -29,7 +29,29 @@ std::vector<int> integers(MapReader& m, const std::string& key, bool required) {
   }
   return out;
 }
+// One sweep's lists from a map (the study's top level, an element of `sweeps`, or
+// `quick`, where every list is optional).
+Sweep read_sweep(MapReader& m, bool required) {
+  Sweep w;
+  w.laws = texts(m, "laws", required);
+  for (const auto& l : w.laws)
+    if (!abi::find_law(l)) m.get("laws").fail("unknown law '" + l + "'");
+  w.influences = texts(m, "influences", required);
+  for (const auto& i : w.influences)
+    if (!abi::find_influence(i)) m.get("influences").fail("unknown influence function '" + i + "'");
+  if (required || m.has("ratios")) w.ratios = m.numbers("ratios");
+  for (double r : w.ratios)
+    if (r < 1.0) m.get("ratios").fail("horizon ratios delta/h must be at least 1");
+  w.counts = integers(m, "counts", required);
+  return w;
+}
 }  // namespace
+
+std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
+                      int count) {
+  std::string key = problem + "|" + law + "|" + influence + "|" + std::to_string(ratio);
+  return count > 0 ? key + "|" + std::to_string(count) : key;
+}
 
 StudySpec read_study(const std::string& path) {
   std::ifstream in(path);
@@ -48,32 +70,39 @@ StudySpec read_study(const std::string& path) {
   s.file = path;
   const auto base = std::filesystem::path(path).parent_path();
   for (const auto& p : texts(m, "problems", true)) s.problems.push_back((base / p).lexically_normal().string());
-  s.laws = texts(m, "laws", true);
-  for (const auto& l : s.laws)
-    if (!abi::find_law(l)) m.get("laws").fail("unknown law '" + l + "'");
-  s.influences = texts(m, "influences", true);
-  for (const auto& i : s.influences)
-    if (!abi::find_influence(i)) m.get("influences").fail("unknown influence function '" + i + "'");
-  s.ratios = m.numbers("ratios");
-  for (double r : s.ratios)
-    if (r < 1.0) m.get("ratios").fail("horizon ratios delta/h must be at least 1");
-  s.counts = integers(m, "counts", true);
+  if (m.has("sweeps")) {
+    const YamlAt list = m.get("sweeps");
+    require_list(list);
+    for (std::size_t i = 0; i < list.node.size(); ++i) {
+      MapReader w(list.element(list.node[i], i));
+      s.sweeps.push_back(read_sweep(w, true));
+      w.finish();
+    }
+    if (s.sweeps.empty()) list.fail("the list is empty");
+  } else {
+    s.sweeps.push_back(read_sweep(m, true));
+  }
   if (m.has("quick")) {
     MapReader q(m.get("quick"));
-    s.quick_laws = texts(q, "laws", false);
-    s.quick_influences = texts(q, "influences", false);
-    if (q.has("ratios")) s.quick_ratios = q.numbers("ratios");
-    s.quick_counts = integers(q, "counts", false);
+    s.quick = read_sweep(q, false);
     q.finish();
   }
+  s.matrix_free_from_bonds = m.number("matrix_free_from_bonds", 0.0);
+  if (s.matrix_free_from_bonds < 0) m.get("matrix_free_from_bonds").fail("must not be negative");
+  s.fine_points = m.integer("fine_points", 0);
+  if (s.fine_points != 0 && s.fine_points < 2) m.get("fine_points").fail("0, or at least 2 points to fit");
   if (m.has("paper")) {
     const YamlAt list = m.get("paper");
     require_list(list);
     for (std::size_t i = 0; i < list.node.size(); ++i) {
       MapReader e(list.element(list.node[i], i));
-      const std::string key = e.text("problem") + "|" + e.text("law") + "|" + e.text("influence") + "|" +
-                              std::to_string(e.number("ratio"));
-      s.paper_orders[key] = e.number("order");
+      const int count = e.integer("count", 0);
+      const std::string key = paper_key(e.text("problem"), e.text("law"), e.text("influence"), e.number("ratio"), count);
+      PaperValues& v = s.paper[key];
+      for (auto [name, slot] : {std::pair{"order", &v.order}, {"min_error", &v.min_error}, {"error", &v.error}})
+        if (e.has(name)) *slot = e.number(name);
+      if (!v.order && !v.min_error && !v.error) e.at().fail("give order, min_error or error");
+      if (count > 0 && (v.order || v.min_error)) e.at().fail("an order or a minimum error belongs to a series: drop count");
       e.finish();
     }
   }

@@ -205,3 +205,46 @@ TEST(Regions, ThicknessBoxOutsideAndAll) {
   r.kind = pd::Region::Kind::All;
   EXPECT_EQ(pd::region_particles(r, p, s).size(), 300u);
 }
+
+// The collar is the set of particles whose family the box truncates: checked against
+// the family sizes find_bonds gives (a full family is the largest one).
+TEST(Regions, CollarIsThePartiallyTruncatedFamilies) {
+  for (const char* placement : {"cell", "node"})
+    for (double ratio : {1.5, 2.5, 3.0, 3.5}) {
+      pd::Scene s = box_scene(2, 0.1);
+      s.placement = placement;
+      s.horizon_ratio = ratio;
+      const pd::Particles p = pd::discretize(s);
+      const pd::Bonds b = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
+      int full = 0;
+      for (int i = 0; i < p.size(); ++i) full = std::max(full, b.family_size(i));
+      pd::Region r;
+      r.kind = pd::Region::Kind::Collar;
+      r.horizons = 1;
+      const auto collar = pd::region_particles(r, p, s);
+      std::vector<int> truncated;
+      for (int i = 0; i < p.size(); ++i)
+        if (b.family_size(i) < full) truncated.push_back(i);
+      EXPECT_EQ(collar, truncated) << placement << " delta/h " << ratio;
+    }
+}
+// Integer delta/h on a node lattice puts neighbours exactly delta away; rounding of the
+// cell index once put some of them two cells away, and find_bonds dropped them from one
+// family only (x = 0.9 had 27 neighbours instead of 28 at delta/h = 3, h = 0.1).
+TEST(Neighbours, LatticeFamiliesAtIntegerRatiosAreComplete) {
+  for (const char* placement : {"cell", "node"})
+    for (double ratio : {2.0, 3.0}) {
+      pd::Scene s = box_scene(2, 0.1);
+      s.placement = placement;
+      s.horizon_ratio = ratio;
+      const pd::Particles p = pd::discretize(s);
+      const pd::Bonds b = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
+      const int full = ratio == 2.0 ? 12 : 28;  // lattice points in a disc of radius 2 (3), centre excluded
+      for (int i = 0; i < p.size(); ++i) {
+        const double* x = p.position(i);
+        const double margin = s.delta() + 0.5 * s.h;
+        if (x[0] > margin && x[0] < 2 - margin && x[1] > margin && x[1] < 1.5 - margin)
+          EXPECT_EQ(b.family_size(i), full) << placement << " delta/h " << ratio << " at " << x[0] << ", " << x[1];
+      }
+    }
+}

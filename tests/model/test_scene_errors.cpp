@@ -211,7 +211,7 @@ TEST(SceneErrors, BoundaryConditionsAndRegions) {
       {"{side: bottom}", "{side: inside}", "boundary[0].region.side", "'inside' is not one of: left, right, bottom, top"},
       {"{side: bottom}", "{side: front}", "boundary[0].region.side", "'front' is not one of: left, right, bottom, top"},
       {"{side: bottom}", "{side: bottom, thickness: -1}", "boundary[0].region.thickness", "thickness must not be negative"},
-      {"{side: bottom}", "{side: bottom, all: true}", "boundary[0].region", "give exactly one of side, box, outside, all"},
+      {"{side: bottom}", "{side: bottom, all: true}", "boundary[0].region", "give exactly one of side, box, outside, collar, all"},
       {"{side: bottom}", "{side: bottom, colour: red}", "boundary[0].region.colour", "unknown key 'colour'"},
       {"{box: {min: [0, 0], max: [0.5, 2]}}", "{box: {min: [0, 0]}}", "boundary[2].region.box", "missing required key 'max'"},
       {"region: {all: true}", "region: {all: false}", "boundary[4].region.all", "use all: true"},
