@@ -585,7 +585,7 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   return d;
 }
 
-// oterkus_paper_d_plane_strain_damaged_moments: per bond 1 add, 9 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_moments: per bond 1 add, 10 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m2 = 0.0;
@@ -600,13 +600,13 @@ void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, do
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
     s_m2 += b2 * V * alpha * w;
-    s_mx += V * alpha * w * b1 / b2 * b0;
+    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
   }
   moments[0] = s_m2;
   moments[1] = s_mx;
 }
 
-// oterkus_paper_d_plane_strain_damaged_residual: per bond 8 add, 26 mul, 3 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -617,6 +617,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -625,69 +626,18 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V * alpha / (s_m2 * b1 * b2) * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p3 = 2.0 * V0;
-  const double p4 = 0.5 * s_theta * (2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G);
-  const double p5 = 0.5 * P_G / s_mx;
-  for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double xi_1 = fam.xi[k * 2 + 1];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b8 = p3 * (p4 / (s_m2 * b7 * b6) * (Y_0 * xi_0 + Y_1 * xi_1) + p5 * (b7 - b6)) * V * alpha * w / b7;
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    forces[(k + 1) * 2 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 2 + 1] = -b10;
-    forces[1] += b10;
-  }
-}
-
-// oterkus_paper_d_plane_strain_damaged_tangent: per bond 25 add, 85 mul, 14 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
-void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
-  const int L = fam.n_bonds;
-  const double s_m2 = fam.moments[0];
-  const double V0 = fam.V0;
-  const double P_kappa2 = fam.params[0];
-  const double s_mx = fam.moments[1];
-  const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
-  double s_theta = 0.0;
-  for (int k = 0; k < L; ++k) {
-    const double Y_0 = fam.Y[k * 2 + 0];
-    const double xi_0 = fam.xi[k * 2 + 0];
-    const double Y_1 = fam.Y[k * 2 + 1];
-    const double xi_1 = fam.xi[k * 2 + 1];
-    const double V = fam.V[k];
-    const double alpha = fam.alpha[k];
-    const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V * alpha / (s_m2 * b1 * b2) * w;
-  }
-  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p3 = 2.0 * V0;
-  const double p4 = 2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G;
-  const double p5 = 0.5 * s_theta * p4;
-  const double p6 = 0.5 * P_G;
-  const double p7 = p6 / s_mx;
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m2);
+  const double p7 = p5 * P_G;
   for (int k = 0; k < L; ++k) {
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
@@ -698,50 +648,105 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b10 = s_m2 * b9 * b8;
-    const double b11 = p5 / b10;
-    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
-    const double b13 = b9 - b8;
-    const double b14 = b11 * b12 + p7 * b13;
-    const double b15 = p3 * b14 * V * alpha * w / b9;
-    const double b16 = b15 * Y_0;
-    const double b17 = b15 * Y_1;
-    const double b18 = 2.0 * b14 * alpha;
-    const double b19 = b18 / b9 * w;
-    const double b20 = p6 / (s_mx * b9);
-    const double b21 = Y_0 * Y_0;
-    const double b22 = Y_1 * Y_1;
-    const double b23 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22;
-    const double b24 = b23 * b9;
-    const double b25 = s_m2 * b24 * b8;
-    const double b26 = p5 * b12 / b25;
-    const double b27 = 2.0 * (b11 * xi_0 + b20 * Y_0 - b26 * Y_0) * alpha * w / b9;
-    const double b28 = b18 * w;
-    const double b29 = b28 / b24;
-    const double b30 = 2.0 * (b11 * xi_1 + b20 * Y_1 - b26 * Y_1) * alpha * w / b9;
-    const double b31 = b28 * Y_1 / b24 * Y_0;
-    const double b32 = 2.0 * b12;
-    const double b33 = s_m2 * b23 * b8;
-    const double b34 = b32 * V * alpha * w / b33;
-    const double b35 = 2.0 * b13 * V * alpha * w / b10;
-    const double b36 = b32 * b13 * V * alpha * w / b25;
-    const double b37 = p4 * b12 * alpha * w / b33;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b16;
-    if (forces != nullptr) forces[0] += b16;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b17;
-    if (forces != nullptr) forces[1] += b17;
-    factors.direct[k * 4 + 0] = b19 + b27 * Y_0 - b29 * b21;
-    factors.direct[k * 4 + 1] = b30 * Y_0 - b31;
-    factors.direct[k * 4 + 2] = b27 * Y_1 - b31;
-    factors.direct[k * 4 + 3] = b19 + b30 * Y_1 - b29 * b22;
-    factors.right[(k * 1 + 0) * 2 + 0] = b34 * Y_0 + b35 * xi_0 - b36 * Y_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b34 * Y_1 + b35 * xi_1 - b36 * Y_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b37 * Y_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b37 * Y_1;
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 2 + 1] = -b13;
+    forces[1] += b13;
   }
 }
 
-// oterkus_paper_d_plane_strain_damaged_jvp: per bond 30 add, 90 mul, 13 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m2 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double s_mx = fam.moments[1];
+  const double P_G = fam.params[1];
+  thread_local std::vector<double> cache;
+  cache.resize(static_cast<std::size_t>(L) * 2);
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 2.0 * P_kappa2 - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m2;
+  const double p8 = 0.5 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = p6 * p7;
+  for (int k = 0; k < L; ++k) {
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = 2.0 * b18;
+    const double b23 = b22 * b15 * alpha * w;
+    const double b24 = p8 * b15 * b16;
+    const double b25 = p9 * b15;
+    const double b26 = Y_0 * Y_0;
+    const double b27 = Y_1 * Y_1;
+    const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
+    const double b29 = b28 * b15;
+    const double b30 = b14 * b29 * b16;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * alpha * w;
+    const double b32 = b22 * b29 * alpha * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * alpha * w;
+    const double b34 = b32 * Y_1 * Y_0;
+    const double b35 = p0 * b13;
+    const double b36 = b35 * b28 * b16 * V * alpha * w;
+    const double b37 = p0 * b17 * b15 * b16 * V * alpha * w;
+    const double b38 = b35 * b17 * b29 * b16 * V * alpha * w;
+    const double b39 = p10 * b13 * b28 * b16 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
+    factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
+    factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
+    factors.direct[k * 4 + 3] = b23 + b33 * Y_1 - b32 * b27;
+    factors.right[(k * 1 + 0) * 2 + 0] = b36 * Y_0 + b37 * xi_0 - b38 * Y_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
+  }
+}
+
+// oterkus_paper_d_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -753,6 +758,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -763,31 +769,34 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b0 = 2.0 * (Y_0 * xi_0 + Y_1 * xi_1);
-    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b2 = 1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1;
-    const double b3 = std::sqrt(b2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
-    const double b4 = std::sqrt(b1);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
-    const double b5 = b3 - b4;
-    const double b6 = b0 * b5 * V * alpha;
-    const double b7 = s_m2 * b3 * b4;
-    const double b8 = b0 * V * alpha * w / (s_m2 * b2 * b4);
-    const double b9 = 2.0 * b5 * V * alpha * w / b7;
-    const double b10 = b6 * w / (s_m2 * b2 * b3 * b4);
-    s_theta += b6 / b7 * w;
-    ds_theta += dY_0 * (b8 * Y_0 + b9 * xi_0 - b10 * Y_0) + dY_1 * (b8 * Y_1 + b9 * xi_1 - b10 * Y_1);
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
+    s_theta += b7 * b8 * b9 * V * alpha * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p11 = 2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G;
-  const double p12 = 0.5 * s_theta * p11;
-  const double p13 = 0.5 * P_G;
-  const double p14 = p13 / s_mx;
-  const double p15 = ds_theta * p11;
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m2;
+  const double p17 = 0.5 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = ds_theta * p15 * p16;
   for (int k = 0; k < L; ++k) {
-    const double b16 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b17 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -797,36 +806,39 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b18 = p12 / (s_m2 * b17 * b16);
-    const double b19 = Y_0 * xi_0 + Y_1 * xi_1;
-    const double b20 = 2.0 * (b18 * b19 + p14 * (b17 - b16)) * alpha;
-    const double b21 = b20 / b17 * w;
-    const double b22 = p13 / (s_mx * b17);
-    const double b23 = Y_0 * Y_0;
-    const double b24 = Y_1 * Y_1;
-    const double b25 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b23 + b24;
-    const double b26 = b25 * b17;
-    const double b27 = p12 * b19 / (s_m2 * b26 * b16);
-    const double b28 = 2.0 * (b18 * xi_0 + b22 * Y_0 - b27 * Y_0) * alpha * w / b17;
-    const double b29 = b20 * w;
-    const double b30 = b29 / b26;
-    const double b31 = 2.0 * (b18 * xi_1 + b22 * Y_1 - b27 * Y_1) * alpha * w / b17;
-    const double b32 = b29 * Y_1 / b26 * Y_0;
-    const double b33 = p15 * b19 * alpha * w / (s_m2 * b25 * b16);
-    const double b34 = V0 * (dY_0 * (b21 + b28 * Y_0 - b30 * b23) + dY_1 * (b31 * Y_0 - b32) + b33 * Y_0) * V;
-    const double b35 = V0 * (dY_0 * (b28 * Y_1 - b32) + dY_1 * (b21 + b31 * Y_1 - b30 * b24) + b33 * Y_1) * V;
-    df[(k + 1) * 2 + 0] = -b34;
-    df[0] += b34;
-    df[(k + 1) * 2 + 1] = -b35;
-    df[1] += b35;
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * alpha * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
+    const double b33 = b32 * b24;
+    const double b34 = b23 * b33 * b25;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * alpha * w;
+    const double b36 = b26 * b33 * alpha * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * alpha * w;
+    const double b38 = b36 * Y_1 * Y_0;
+    const double b39 = p19 * b22 * b32 * b25 * alpha * w;
+    const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
+    const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
+    df[(k + 1) * 2 + 0] = -b40;
+    df[0] += b40;
+    df[(k + 1) * 2 + 1] = -b41;
+    df[1] += b41;
   }
 }
 
-// oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -835,15 +847,15 @@ void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    const double b2 = std::sqrt(b0);
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V * alpha / (s_m2 * b1 * b2) * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
   }
   outputs[0] = s_theta;
 }
 
-// oterkus_paper_d_plane_strain_intact_moments: per bond 1 add, 7 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+// oterkus_paper_d_plane_strain_intact_moments: per bond 1 add, 8 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void oterkus_paper_d_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m2 = 0.0;
@@ -857,13 +869,13 @@ void oterkus_paper_d_plane_strain_intact_moments(const pd::abi::Family& fam, dou
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
     s_m2 += b2 * V * w;
-    s_mx += V * w * b1 / b2 * b0;
+    s_mx += 1.0 / b2 * V * w * b1 * b0;
   }
   moments[0] = s_m2;
   moments[1] = s_mx;
 }
 
-// oterkus_paper_d_plane_strain_intact_residual: per bond 8 add, 24 mul, 3 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// oterkus_paper_d_plane_strain_intact_residual: per bond 8 add, 25 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -874,6 +886,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -881,37 +894,39 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V / (s_m2 * b1 * b2) * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
   }
   forces[0] = 0.0; forces[1] = 0.0; 
-  const double p3 = 2.0 * V0;
-  const double p4 = 0.5 * s_theta * (2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G);
-  const double p5 = 0.5 * P_G / s_mx;
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m2);
+  const double p7 = p5 * P_G;
   for (int k = 0; k < L; ++k) {
-    const double b6 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b7 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b8 = p3 * (p4 / (s_m2 * b7 * b6) * (Y_0 * xi_0 + Y_1 * xi_1) + p5 * (b7 - b6)) * V * w / b7;
-    const double b9 = b8 * Y_0;
-    const double b10 = b8 * Y_1;
-    forces[(k + 1) * 2 + 0] = -b9;
-    forces[0] += b9;
-    forces[(k + 1) * 2 + 1] = -b10;
-    forces[1] += b10;
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 2 + 1] = -b13;
+    forces[1] += b13;
   }
 }
 
-// oterkus_paper_d_plane_strain_intact_tangent: per bond 25 add, 76 mul, 14 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// oterkus_paper_d_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -922,6 +937,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   thread_local std::vector<double> cache;
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -929,72 +945,73 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b1;
-    const double b2 = std::sqrt(b0);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b2;
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V / (s_m2 * b1 * b2) * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
   }
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
-  const double p3 = 2.0 * V0;
-  const double p4 = 2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G;
-  const double p5 = 0.5 * s_theta * p4;
-  const double p6 = 0.5 * P_G;
-  const double p7 = p6 / s_mx;
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 2.0 * P_kappa2 - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m2;
+  const double p8 = 0.5 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = p6 * p7;
   for (int k = 0; k < L; ++k) {
-    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b10 = s_m2 * b9 * b8;
-    const double b11 = p5 / b10;
-    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
-    const double b13 = b9 - b8;
-    const double b14 = b11 * b12 + p7 * b13;
-    const double b15 = p3 * b14 * V * w / b9;
-    const double b16 = b15 * Y_0;
-    const double b17 = b15 * Y_1;
-    const double b18 = 2.0 * b14;
-    const double b19 = b18 / b9 * w;
-    const double b20 = p6 / (s_mx * b9);
-    const double b21 = Y_0 * Y_0;
-    const double b22 = Y_1 * Y_1;
-    const double b23 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22;
-    const double b24 = b23 * b9;
-    const double b25 = s_m2 * b24 * b8;
-    const double b26 = p5 * b12 / b25;
-    const double b27 = 2.0 * (b11 * xi_0 + b20 * Y_0 - b26 * Y_0) * w / b9;
-    const double b28 = b18 * w;
-    const double b29 = b28 / b24;
-    const double b30 = 2.0 * (b11 * xi_1 + b20 * Y_1 - b26 * Y_1) * w / b9;
-    const double b31 = b28 * Y_1 / b24 * Y_0;
-    const double b32 = 2.0 * b12;
-    const double b33 = s_m2 * b23 * b8;
-    const double b34 = b32 * V * w / b33;
-    const double b35 = 2.0 * b13 * V * w / b10;
-    const double b36 = b32 * b13 * V * w / b25;
-    const double b37 = p4 * b12 * w / b33;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b16;
-    if (forces != nullptr) forces[0] += b16;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b17;
-    if (forces != nullptr) forces[1] += b17;
-    factors.direct[k * 4 + 0] = b19 + b27 * Y_0 - b29 * b21;
-    factors.direct[k * 4 + 1] = b30 * Y_0 - b31;
-    factors.direct[k * 4 + 2] = b27 * Y_1 - b31;
-    factors.direct[k * 4 + 3] = b19 + b30 * Y_1 - b29 * b22;
-    factors.right[(k * 1 + 0) * 2 + 0] = b34 * Y_0 + b35 * xi_0 - b36 * Y_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b34 * Y_1 + b35 * xi_1 - b36 * Y_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b37 * Y_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b37 * Y_1;
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = 2.0 * b18;
+    const double b23 = b22 * b15 * w;
+    const double b24 = p8 * b15 * b16;
+    const double b25 = p9 * b15;
+    const double b26 = Y_0 * Y_0;
+    const double b27 = Y_1 * Y_1;
+    const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
+    const double b29 = b28 * b15;
+    const double b30 = b14 * b29 * b16;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * w;
+    const double b32 = b22 * b29 * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * w;
+    const double b34 = b32 * Y_1 * Y_0;
+    const double b35 = p0 * b13;
+    const double b36 = b35 * b28 * b16 * V * w;
+    const double b37 = p0 * b17 * b15 * b16 * V * w;
+    const double b38 = b35 * b17 * b29 * b16 * V * w;
+    const double b39 = p10 * b13 * b28 * b16 * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
+    factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
+    factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
+    factors.direct[k * 4 + 3] = b23 + b33 * Y_1 - b32 * b27;
+    factors.right[(k * 1 + 0) * 2 + 0] = b36 * Y_0 + b37 * xi_0 - b38 * Y_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
   }
 }
 
-// oterkus_paper_d_plane_strain_intact_jvp: per bond 30 add, 83 mul, 13 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// oterkus_paper_d_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -1006,6 +1023,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   cache.resize(static_cast<std::size_t>(L) * 2);
   double s_theta = 0.0;
   double ds_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -1015,31 +1033,34 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    const double b0 = 2.0 * (Y_0 * xi_0 + Y_1 * xi_1);
-    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b2 = 1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1;
-    const double b3 = std::sqrt(b2);
-    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
-    const double b4 = std::sqrt(b1);
-    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
-    const double b5 = b3 - b4;
-    const double b6 = b0 * b5 * V;
-    const double b7 = s_m2 * b3 * b4;
-    const double b8 = b0 * V * w / (s_m2 * b2 * b4);
-    const double b9 = 2.0 * b5 * V * w / b7;
-    const double b10 = b6 * w / (s_m2 * b2 * b3 * b4);
-    s_theta += b6 / b7 * w;
-    ds_theta += dY_0 * (b8 * Y_0 + b9 * xi_0 - b10 * Y_0) + dY_1 * (b8 * Y_1 + b9 * xi_1 - b10 * Y_1);
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * w;
+    s_theta += b7 * b8 * b9 * V * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
   }
   df[0] = 0.0; df[1] = 0.0; 
-  const double p11 = 2.0 * P_kappa2 - 0.5 * s_m2 / s_mx * P_G;
-  const double p12 = 0.5 * s_theta * p11;
-  const double p13 = 0.5 * P_G;
-  const double p14 = p13 / s_mx;
-  const double p15 = ds_theta * p11;
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m2;
+  const double p17 = 0.5 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = ds_theta * p15 * p16;
   for (int k = 0; k < L; ++k) {
-    const double b16 = cache[static_cast<std::size_t>(k) * 2 + 0];
-    const double b17 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -1048,36 +1069,39 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
-    const double b18 = p12 / (s_m2 * b17 * b16);
-    const double b19 = Y_0 * xi_0 + Y_1 * xi_1;
-    const double b20 = 2.0 * (b18 * b19 + p14 * (b17 - b16));
-    const double b21 = b20 / b17 * w;
-    const double b22 = p13 / (s_mx * b17);
-    const double b23 = Y_0 * Y_0;
-    const double b24 = Y_1 * Y_1;
-    const double b25 = 1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b23 + b24;
-    const double b26 = b25 * b17;
-    const double b27 = p12 * b19 / (s_m2 * b26 * b16);
-    const double b28 = 2.0 * (b18 * xi_0 + b22 * Y_0 - b27 * Y_0) * w / b17;
-    const double b29 = b20 * w;
-    const double b30 = b29 / b26;
-    const double b31 = 2.0 * (b18 * xi_1 + b22 * Y_1 - b27 * Y_1) * w / b17;
-    const double b32 = b29 * Y_1 / b26 * Y_0;
-    const double b33 = p15 * b19 * w / (s_m2 * b25 * b16);
-    const double b34 = V0 * (dY_0 * (b21 + b28 * Y_0 - b30 * b23) + dY_1 * (b31 * Y_0 - b32) + b33 * Y_0) * V;
-    const double b35 = V0 * (dY_0 * (b28 * Y_1 - b32) + dY_1 * (b21 + b31 * Y_1 - b30 * b24) + b33 * Y_1) * V;
-    df[(k + 1) * 2 + 0] = -b34;
-    df[0] += b34;
-    df[(k + 1) * 2 + 1] = -b35;
-    df[1] += b35;
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
+    const double b33 = b32 * b24;
+    const double b34 = b23 * b33 * b25;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * w;
+    const double b36 = b26 * b33 * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * w;
+    const double b38 = b36 * Y_1 * Y_0;
+    const double b39 = p19 * b22 * b32 * b25 * w;
+    const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
+    const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
+    df[(k + 1) * 2 + 0] = -b40;
+    df[0] += b40;
+    df[(k + 1) * 2 + 1] = -b41;
+    df[1] += b41;
   }
 }
 
-// oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 13 mul, 1 div, 2 call; per family 0 add, 0 mul, 0 div, 0 call
+// oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
   double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -1085,10 +1109,10 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b0 = xi_0 * xi_0 + xi_1 * xi_1;
-    const double b1 = std::sqrt(1e-16 * b0 + Y_0 * Y_0 + Y_1 * Y_1);
-    const double b2 = std::sqrt(b0);
-    s_theta += 2.0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b1 - b2) * V / (s_m2 * b1 * b2) * w;
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
   }
   outputs[0] = s_theta;
 }
@@ -1108,19 +1132,19 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.n_states = 1;
   d.damaged.moments = &oterkus_paper_d_plane_strain_damaged_moments;
   d.damaged.residual = &oterkus_paper_d_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {8, 26, 3, 2};
+  d.damaged.residual_ops = {8, 27, 4, 2};
   d.damaged.tangent = &oterkus_paper_d_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {25, 85, 14, 2};
+  d.damaged.tangent_ops = {25, 98, 5, 2};
   d.damaged.jvp = &oterkus_paper_d_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {30, 90, 13, 2};
+  d.damaged.jvp_ops = {30, 100, 6, 2};
   d.damaged.outputs = &oterkus_paper_d_plane_strain_damaged_outputs;
   d.intact.moments = &oterkus_paper_d_plane_strain_intact_moments;
   d.intact.residual = &oterkus_paper_d_plane_strain_intact_residual;
-  d.intact.residual_ops = {8, 24, 3, 2};
+  d.intact.residual_ops = {8, 25, 4, 2};
   d.intact.tangent = &oterkus_paper_d_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {25, 76, 14, 2};
+  d.intact.tangent_ops = {25, 88, 5, 2};
   d.intact.jvp = &oterkus_paper_d_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {30, 83, 13, 2};
+  d.intact.jvp_ops = {30, 91, 6, 2};
   d.intact.outputs = &oterkus_paper_d_plane_strain_intact_outputs;
   return d;
 }
