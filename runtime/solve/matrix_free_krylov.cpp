@@ -42,7 +42,10 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M,
     if (r.norm() <= tol * bnorm) break;
     A(p, Ap);
     const double pAp = p.dot(Ap);
-    if (!(pAp > 0)) break;  // not positive definite along p: stop, report the residual
+    if (!(pAp > 0)) {  // not positive definite along p: stop, report the residual
+      res.indefinite = true;
+      break;
+    }
     const double alpha = rz / pAp;
     x += alpha * p;
     r -= alpha * Ap;

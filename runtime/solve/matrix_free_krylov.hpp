@@ -14,6 +14,7 @@ struct KrylovResult {
   int iterations = 0;
   double relative_residual = 0;  // |b - A x| / |b| at exit (recomputed, not the recurrence's)
   bool converged = false;
+  bool indefinite = false;  // CG met p^T A p <= 0: A (or M) is not positive definite
 };
 
 // Conjugate gradients for symmetric positive definite A, preconditioned by M ~ A^-1

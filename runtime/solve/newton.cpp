@@ -75,6 +75,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   LinearOperator jacobi;
   const LinearOperator approximate_solve = [&](const Eigen::VectorXd& rf, Eigen::VectorXd& z) { P_solver.solve(rf, z); };
   double reference = 0;
+  bool use_cg = sys.symmetric();  // matrix-free: CG until the system shows it is indefinite
 
   // Newton step on the free dofs: K_ff du_f = r_f (du_c = 0: the constrained values
   // were already set at the start of the load step).
@@ -141,14 +142,30 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       sys.jvp(u, load, v_full, Kv_full);
       yf = dofs.restrict_free(Kv_full);
     };
-    const bool cg = sys.symmetric();
+    // CG needs K and the preconditioner positive definite: a factorisation that found
+    // the approximate tangent indefinite (CHOLMOD fell back to LU) rules it out.
+    if (use_cg && approximate && P_solver.name() != "cholmod") {
+      say(fmt::format("  the approximate tangent is not positive definite ({}): GMRES from here on", P_solver.name()));
+      use_cg = false;
+    }
     const double eta = forcing(rf.norm(), rec.iteration);
     previous_forcing = eta;
-    const KrylovResult kr = cg ? preconditioned_cg(op, precondition, rf, x, eta, s_.krylov_max_iterations)
-                               : preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart,
-                                                      s_.krylov_max_iterations);
+    KrylovResult kr;
+    if (use_cg) {
+      kr = preconditioned_cg(op, precondition, rf, x, eta, s_.krylov_max_iterations);
+      if (kr.indefinite) {
+        // Negative curvature: the tangent is indefinite here (softening, or a follower
+        // load's stiffness). GMRES does not need definiteness; restart it from zero.
+        say(fmt::format("  CG met negative curvature after {} iterations (the tangent is not positive definite): "
+                        "GMRES from here on", kr.iterations));
+        use_cg = false;
+        x.setZero();
+      }
+    }
+    if (!use_cg)
+      kr = preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart, s_.krylov_max_iterations);
     res.linear_seconds += seconds_since(t0);
-    res.linear_solver = fmt::format("matrix-free {}+{}", cg ? "cg" : "gmres", approximate ? P_solver.name() : "jacobi");
+    res.linear_solver = fmt::format("matrix-free {}+{}", use_cg ? "cg" : "gmres", approximate ? P_solver.name() : "jacobi");
     res.linear_choice = approximate ? "matrix-free Newton-Krylov preconditioned by a factorised approximate tangent"
                                     : "matrix-free Newton-Krylov";
     rec.linear_iterations = kr.iterations;
