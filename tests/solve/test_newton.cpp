@@ -252,3 +252,45 @@ TEST(Newton, StagnationOnTheRoundingFloorEndsTheIterationAndIsReported) {
   EXPECT_FALSE(strict.converged);
   EXPECT_NE(strict.message.find("did not converge"), std::string::npos);
 }
+
+namespace {
+// r(u) = load b - A u with A symmetric but indefinite (a softening region): declared
+// symmetric, so the matrix-free path starts with CG and must hand over to GMRES.
+struct IndefiniteLinear final : pd::NonlinearSystem {
+  Eigen::MatrixXd A;
+  Eigen::VectorXd b;
+  explicit IndefiniteLinear(int n) : A(Eigen::MatrixXd::Zero(n, n)), b(n) {
+    for (int i = 0; i < n; ++i) {
+      A(i, i) = i < 3 * n / 4 ? 2.5 : -3.0;
+      if (i + 1 < n) A(i, i + 1) = A(i + 1, i) = -1.0;
+      b[i] = std::sin(1.0 + i);
+    }
+  }
+  int size() const override { return static_cast<int>(b.size()); }
+  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { r = l * b - A * u; }
+  void tangent(const Eigen::VectorXd&, double, pd::SparseMatrix& K, Eigen::VectorXd*) override { K = A.sparseView(); }
+  bool has_jvp() const override { return true; }
+  void jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override { Kv = A * v; }
+  void diagonal(const Eigen::VectorXd&, double, Eigen::VectorXd& d) override { d = A.diagonal(); }
+};
+}  // namespace
+
+TEST(Newton, MatrixFreeCgHandsOverToGmresOnNegativeCurvature) {
+  IndefiniteLinear sys(40);
+  const std::vector<char> constrained(40, 0);
+  const std::vector<double> prescribed(40, 0.0);
+  const pd::DofMap dofs(constrained, prescribed);
+  pd::NewtonSettings st;
+  st.matrix_free = true;
+  st.krylov_tolerance = 1e-12;
+  Eigen::VectorXd u;
+  std::vector<std::string> log;
+  const pd::NewtonResult r = run(sys, dofs, u, st, &log);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.linear_solver, "matrix-free gmres+jacobi");
+  bool said = false;
+  for (const auto& line : log) said = said || line.find("negative curvature") != std::string::npos;
+  EXPECT_TRUE(said);
+  const Eigen::VectorXd exact = sys.A.fullPivLu().solve(sys.b);
+  EXPECT_LT((u - exact).norm(), 1e-9 * exact.norm());
+}
