@@ -8,6 +8,7 @@
 
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
+#include "post/smoothing.hpp"
 
 namespace pd {
 
@@ -391,6 +392,15 @@ Scene read(const YAML::Node& root, const std::string& file) {
     s.output.directory = o.text("directory", "out");
     s.output.vtu = o.boolean("vtu", true);
     s.output.csv = o.boolean("csv", true);
+    if (o.has("smoothing")) {
+      MapReader sm(o.get("smoothing"));
+      s.output.smoothing_influence = sm.text("influence");
+      const abi::InfluenceDescriptor* inf = abi::find_influence(s.output.smoothing_influence);
+      if (inf == nullptr) sm.get("influence").fail("unknown influence function '" + s.output.smoothing_influence + "' (pd laws lists them)");
+      if (!can_smooth_with(inf->weight))
+        sm.get("influence").fail("'" + s.output.smoothing_influence + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
+      sm.finish();
+    }
     o.finish();
   }
   if (m.has("probes")) {
@@ -417,6 +427,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
     // (issue 8): say so rather than ignore the section.
     if (!s.dynamics) m.get("damage").fail("damage needs a dynamics section (explicit or relaxation); bond breaking between implicit load steps is not implemented yet");
   }
+  if (s.dynamics && !s.output.smoothing_influence.empty())
+    m.get("output").fail("smoothing post-processes the static solution; dynamic scenes do not support it yet");
   if (!s.dynamics)
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");
