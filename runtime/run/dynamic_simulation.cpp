@@ -19,6 +19,7 @@
 #include "dynamics/verlet_integrator.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
+#include "interrupt.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
@@ -429,6 +430,7 @@ RunSummary DynamicSimulation::run_explicit(bool write, int stop_after) {
   }
   Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
   for (int s = step + 1; s <= last; ++s) {
+    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", s, last));
     u_old = u_;
     g_old = g;
     verlet.first_half(u_, v_, f);
@@ -502,6 +504,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
   int s = step;
   while (ratio > dyn.tolerance && s < last) {
+    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u_);
     if (damage_ && damage_->break_bonds(u_.data()) > 0) assembler_->update_moments();

@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
+#include "interrupt.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
@@ -216,11 +218,20 @@ void Simulation::write_outputs() {
     fields.push_back({law.output_names[k], 1, v});
   }
   const std::string dir = scene_.output.directory;
-  if (scene_.output.vtu) write_vtu_file(dir + "/result.vtu", particles_, u_, fields), summary_.files.push_back(dir + "/result.vtu");
-  if (scene_.output.csv) write_csv_file(dir + "/result.csv", particles_, u_, fields), summary_.files.push_back(dir + "/result.csv");
-  summary_.files.push_back(dir + "/summary.json");
-  summary_.output_seconds = seconds_since(t1);
-  write_file_atomically(dir + "/summary.json", summary_.json());
+  // The files form one result: when a signal stops the writing half-way, the files this
+  // run already renamed into place go too (a result without its summary is partial).
+  try {
+    if (scene_.output.vtu) write_vtu_file(dir + "/result.vtu", particles_, u_, fields), summary_.files.push_back(dir + "/result.vtu");
+    if (scene_.output.csv) write_csv_file(dir + "/result.csv", particles_, u_, fields), summary_.files.push_back(dir + "/result.csv");
+    summary_.files.push_back(dir + "/summary.json");
+    summary_.output_seconds = seconds_since(t1);
+    write_file_atomically(dir + "/summary.json", summary_.json());
+  } catch (const Interrupted&) {
+    for (const std::string& f : summary_.files)
+      if (f != dir + "/summary.json") std::remove(f.c_str());
+    summary_.files.clear();
+    throw;
+  }
 }
 
 }  // namespace pd
