@@ -61,16 +61,19 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
 
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
-  // Cell list with cells of size delta: neighbours lie in the 3^d surrounding cells.
+  // Cell list: neighbours lie in the 3^d surrounding cells. The cells are a little
+  // larger than the reach delta (1 + 1e-12): with cells of exactly delta, a pair at
+  // distance delta can round into cells two apart and be missed (delta = h on a lattice).
+  const double cell_size = delta * (1 + 1e-9);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int c = 0; c < d; ++c) {
     lo[c] = hi[c] = p.x[c];
     for (int i = 0; i < n; ++i) lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
   }
   int dims[3] = {1, 1, 1};
-  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / delta) + 1);
+  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / cell_size) + 1);
   auto cell_of = [&](const double* x, int* ci) {
-    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / delta)) : 0;
+    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / cell_size)) : 0;
   };
   const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
   std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));
