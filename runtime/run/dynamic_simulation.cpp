@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/family_quality.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
 #include "dynamics/energies.hpp"
@@ -60,6 +61,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
     if (bonds_.family_size(p) == 0)
       throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", p,
                                            particles_.x[p * particles_.dim], particles_.x[p * particles_.dim + 1]));
+  check_family_quality(particles_, bonds_, influence->weight, influence->name, scene_.h);
   std::vector<std::vector<double>> params;
   for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken: a

@@ -10,6 +10,8 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/family_quality.hpp"
+#include "assembly/strain_modes.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
@@ -47,6 +49,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     if (bonds_.family_size(p) == 0)
       throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", p,
                                            particles_.x[p * particles_.dim], particles_.x[p * particles_.dim + 1]));
+  const FamilyQualityReport quality = check_family_quality(particles_, bonds_, influence->weight, influence->name, scene_.h);
   std::vector<std::vector<double>> params;
   for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
@@ -65,6 +68,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     approximation_ = std::make_unique<FamilyAssembler>(particles_, short_bonds_, *law, params, short_options);
   }
   assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, std::move(params), options);
+  const StrainModeReport modes = check_strain_modes(*assembler_, influence->name, scene_.delta() / scene_.h);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
                                          influence->name));
@@ -77,6 +81,14 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
                    summary_.particles, summary_.bonds, scene_.delta(), scene_.delta() / scene_.h, summary_.setup_seconds));
   for (const auto& e : summary_.effects) log_("  effect: " + e);
+  log_(fmt::format("  families: smallest weighted volume {:.3g} of a full horizon's (particle {}), largest shape-tensor "
+                   "condition number {:.3g} (particle {})",
+                   quality.worst_weighted_volume_ratio, quality.worst_weighted_volume_particle, quality.worst_condition,
+                   quality.worst_condition_particle));
+  if (!modes.blind.empty())
+    log_(fmt::format("  warning: {} famil(ies) give the law no stiffness against some homogeneous strain (particle {} first); "
+                     "their neighbours' families hold them",
+                     modes.blind.size(), modes.blind.front()));
 }
 
 std::string Simulation::matrix_free_preconditioner() const {
