@@ -108,9 +108,15 @@ namespace {
 struct FieldParameters {
   const char* solution;
   std::vector<std::string> required;
+  std::vector<std::string> optional;  // besides E, nu, x0, y0
 };
 const std::vector<FieldParameters> kFieldParameters{
-    {"uniaxial", {"traction"}}, {"biaxial", {"traction"}}, {"shear", {"traction"}}, {"westergaard", {"pressure", "half_length"}}};
+    {"uniaxial", {"traction"}, {}},
+    {"biaxial", {"traction"}, {}},
+    {"shear", {"traction"}, {}},
+    {"westergaard", {"pressure", "half_length"}, {}},
+    {"rotation", {"angle"}, {"stretch"}},
+    {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}}};
 const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
 
 FieldSpec read_field(const YamlAt& at) {
@@ -125,7 +131,14 @@ FieldSpec read_field(const YamlAt& at) {
   for (const std::string& key : fp->required) f.parameters[key] = m.number(key);
   for (const std::string& key : kFieldOptional)
     if (m.has(key)) f.parameters[key] = m.number(key);
+  for (const std::string& key : fp->optional)
+    if (m.has(key)) f.parameters[key] = m.number(key);
   m.finish();
+  for (const char* key : {"radius", "E_inclusion"})
+    if (f.parameters.count(key) && f.parameters[key] <= 0) m.get(key).fail(std::string(key) + " must be positive");
+  if (f.parameters.count("nu_inclusion") && !(f.parameters["nu_inclusion"] > -1 && f.parameters["nu_inclusion"] < 0.5))
+    m.get("nu_inclusion").fail("nu_inclusion must lie in (-1, 0.5)");
+  if (f.parameters.count("stretch") && !(f.parameters["stretch"] > -1)) m.get("stretch").fail("stretch must exceed -1");
   if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0) m.get("half_length").fail("half_length must be positive");
   if (f.parameters.count("E") && f.parameters["E"] <= 0) m.get("E").fail("Young's modulus E must be positive");
   if (f.parameters.count("nu") && !(f.parameters["nu"] > -1 && f.parameters["nu"] < 0.5))
