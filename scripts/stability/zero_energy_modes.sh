@@ -19,7 +19,9 @@ for ratio in 1.5 2.0 2.5 3.0 3.5; do
     law=${entry%%|*}
     params=${entry#*|}
     tag="${count}_${ratio}_${law}"
-    material="  - {name: rock, E: 60, nu: 0.0, plane: strain${params:+, parameters: {$params}}}"
+    extra=""
+    if [ -n "$params" ]; then extra=", parameters: {$params}"; fi
+    material="  - {name: rock, E: 60, nu: 0.0, plane: strain$extra}"
     sed -e "s/^law: .*/law: $law/" -e "s/^  count: 80 /  count: $count /" -e "s/ratio: 3.0/ratio: $ratio/" \
         -e "s|^  - {name: rock.*|$material|" \
         -e "s|^output: .*|output: {directory: $out/$tag, vtu: false, csv: false, smoothing: {influence: linear}}|" \
