@@ -8,18 +8,36 @@
 #include "cli/commands.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
+#include "interrupt.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 
 namespace pd::cli {
 
 namespace {
-// Results are written to temporary files and renamed at the end, so an interrupted
-// run leaves no partial result; say so and stop.
+// The first SIGINT/SIGTERM only records the signal: the solve stops at the next Newton
+// (or Krylov, or time) step and no result file is written, not even a temporary. A
+// second signal stops at once, removing the temporary file being written, if any.
 extern "C" void on_interrupt(int sig) {
-  const char msg[] = "\npd run: interrupted; no result files were written\n";
+  if (interrupt_signal() == 0) {
+    request_interrupt(sig);
+    const char msg[] = "\npd run: stopping at the next step (signal again to stop at once)\n";
+    [[maybe_unused]] auto n = write(STDERR_FILENO, msg, sizeof msg - 1);
+    return;
+  }
+  remove_pending_temporary();
+  const char msg[] = "\npd run: stopped at once (the temporary file being written, if any, was removed)\n";
   [[maybe_unused]] auto n = write(STDERR_FILENO, msg, sizeof msg - 1);
   _exit(128 + sig);
+}
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;  // a write(2) in progress completes; the flag is polled after it
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
 }
 }  // namespace
 
@@ -31,7 +49,8 @@ const char* kRunUsage =
     "  DIR/energies.csv, DIR/animation.pvd (snapshots) and DIR/checkpoint.bin as the scene asks;\n"
     "  --restart resumes such a run from a checkpoint.\n"
     "  DIR defaults to the scene's output.directory. The scene format: docs/scene_format.md.\n"
-    "  Exit codes: 0 solved, 1 solve failed, 2 bad input (the message names file, line and key).\n";
+    "  Exit codes: 0 solved, 1 solve failed, 2 bad input (the message names file, line and key),\n"
+    "  130 / 143 interrupted by SIGINT / SIGTERM (no result file is written).\n";
 }  // namespace
 
 int run_command(const Args& args) {
@@ -57,8 +76,7 @@ int run_command(const Args& args) {
     fmt::print(stderr, "{}", kRunUsage);
     return 2;
   }
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  install_interrupt_handlers();
   Scene scene;
   try {
     scene = read_scene(scene_path);
@@ -75,6 +93,7 @@ int run_command(const Args& args) {
     scene.dynamics->restart = restart;
   }
   RunSummary s;
+  const bool dynamic = scene.dynamics.has_value();
   try {
     const auto log = [](const std::string& line) { fmt::print("{}\n", line); std::fflush(stdout); };
     if (scene.dynamics) {
@@ -87,6 +106,12 @@ int run_command(const Args& args) {
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
     fmt::print(stderr, "pd run: {}\n", e.what());
     return 2;
+  } catch (const Interrupted& e) {
+    // Dynamic runs write snapshots and checkpoints as they go; those are complete files.
+    fmt::print(stderr, "pd run: {}; {}\n", e.what(),
+               dynamic ? "no result files were written (snapshots and checkpoints already written are complete)"
+                       : "no result files were written");
+    return 128 + e.signal();
   }
   fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
              s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);

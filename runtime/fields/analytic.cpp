@@ -27,15 +27,45 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
   } else if (name_ == "uniaxial" || name_ == "biaxial" || name_ == "shear") {
     T_ = param(spec, "traction", NAN);
     if (!std::isfinite(T_)) throw std::invalid_argument(name_ + " field needs traction");
+  } else if (name_ == "rotation") {
+    angle_ = param(spec, "angle", NAN) * M_PI / 180;
+    stretch_ = param(spec, "stretch", 0.0);
+    if (!std::isfinite(angle_)) throw std::invalid_argument("rotation field needs angle (degrees)");
+  } else if (name_ == "inclusion") {
+    // Plane strain, axisymmetric: u_r = A r inside, B r + C / r outside. Far field
+    // sigma_rr = T gives B = T / (2 (lambda_m + mu_m)); continuity of u_r and of
+    // sigma_rr at r = a gives A = B (lambda_m + 2 mu_m) / (lambda_i + mu_i + mu_m) and
+    // C = (A - B) a^2 (sigma_rr = 2 (lambda + mu) u_r' ... with u = A r: 2 (lambda + mu) A;
+    // with C / r: -2 mu C / r^2).
+    T_ = param(spec, "traction", NAN);
+    a_ = param(spec, "radius", NAN);
+    const IsotropicElastic mi = IsotropicElastic::from_E_nu(param(spec, "E_inclusion", NAN), param(spec, "nu_inclusion", NAN));
+    const IsotropicElastic mm = IsotropicElastic::from_E_nu(E_, nu_);
+    if (!std::isfinite(T_) || !(a_ > 0)) throw std::invalid_argument("inclusion field needs traction and a positive radius");
+    outer_ = T_ / (2 * (mm.lambda + mm.G));
+    inner_ = outer_ * (mm.lambda + 2 * mm.G) / (mi.lambda + mi.G + mm.G);
+    hole_ = (inner_ - outer_) * a_ * a_;
   } else {
     throw std::invalid_argument("unknown analytic solution '" + name_ + "'");
   }
   for (const auto& [k, v] : spec.parameters) {
-    static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction"};
+    static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction", "angle", "stretch",
+                                  "radius", "E_inclusion", "nu_inclusion"};
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
     if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");
   }
+}
+
+std::array<double, 3> AnalyticField::displacement_at_load(const double* p, double load) const {
+  if (name_ == "rotation") {
+    AnalyticField part = *this;
+    part.angle_ *= load;
+    part.stretch_ *= load;
+    return part.displacement(p);
+  }
+  const auto u = displacement(p);
+  return {load * u[0], load * u[1], load * u[2]};
 }
 
 std::array<double, 3> AnalyticField::displacement(const double* p) const {
@@ -48,6 +78,16 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
     return {s * x, s * y, 0.0};
   }
   if (name_ == "shear") return {2 * T * y * (1 + nu) / E, 0.0, 0.0};
+  if (name_ == "rotation") {
+    const double c = std::cos(angle_), s = std::sin(angle_), k = 1 + stretch_;
+    return {k * (c * x - s * y) - x, k * (s * x + c * y) - y, 0.0};
+  }
+  if (name_ == "inclusion") {
+    const double r = std::hypot(x, y);
+    if (r == 0) return {0.0, 0.0, 0.0};
+    const double ur = r < a_ ? inner_ * r : outer_ * r + hole_ / r;
+    return {ur * x / r, ur * y / r, 0.0};
+  }
   // Westergaard: Z = p (z / sqrt(z^2 - a^2) - 1), Zhat = p (sqrt(z^2 - a^2) - z),
   // 2G u_x = (1 - 2 nu) Re Zhat - y Im Z, 2G u_y = 2 (1 - nu) Im Zhat - y Re Z,
   // evaluated in the first quadrant, signs restored by symmetry.

@@ -4,6 +4,9 @@
 //   biaxial:    rollers left and bottom, traction T on top and right
 //   shear:      bottom clamped, horizontal rollers on the sides, tangential T on top
 //   westergaard: pressurised crack on y = 0, |x| < a, pressure p (eqs. 42-47)
+//   rotation:   rigid rotation by `angle` degrees about (x0, y0), times 1 + `stretch`
+//   inclusion:  circular inclusion of radius a (E_inclusion, nu_inclusion) at (x0, y0)
+//               in an infinite plane under remote equibiaxial traction T
 #pragma once
 
 #include <array>
@@ -21,11 +24,17 @@ class AnalyticField {
   // are taken from `material` (E, nu).
   AnalyticField(const FieldSpec& spec, const IsotropicElastic& material);
   std::array<double, 3> displacement(const double* x) const;
+  // The field at a load factor in [0, 1]: load * displacement for the elastic solutions;
+  // the rotation by load * angle with stretch load * stretch (so every intermediate
+  // state of a load-stepped rotation is itself a rotation).
+  std::array<double, 3> displacement_at_load(const double* x, double load) const;
   const std::string& name() const { return name_; }
 
  private:
   std::string name_;
   double T_ = 0, E_ = 0, nu_ = 0, a_ = 0, x0_ = 0, y0_ = 0;
+  double angle_ = 0, stretch_ = 0;            // rotation
+  double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
 };
 
 }  // namespace pd

@@ -8,6 +8,7 @@
 
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
+#include "post/smoothing.hpp"
 
 namespace pd {
 
@@ -115,9 +116,15 @@ namespace {
 struct FieldParameters {
   const char* solution;
   std::vector<std::string> required;
+  std::vector<std::string> optional;  // besides E, nu, x0, y0
 };
 const std::vector<FieldParameters> kFieldParameters{
-    {"uniaxial", {"traction"}}, {"biaxial", {"traction"}}, {"shear", {"traction"}}, {"westergaard", {"pressure", "half_length"}}};
+    {"uniaxial", {"traction"}, {}},
+    {"biaxial", {"traction"}, {}},
+    {"shear", {"traction"}, {}},
+    {"westergaard", {"pressure", "half_length"}, {}},
+    {"rotation", {"angle"}, {"stretch"}},
+    {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}}};
 const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
 
 FieldSpec read_field(const YamlAt& at) {
@@ -132,7 +139,14 @@ FieldSpec read_field(const YamlAt& at) {
   for (const std::string& key : fp->required) f.parameters[key] = m.number(key);
   for (const std::string& key : kFieldOptional)
     if (m.has(key)) f.parameters[key] = m.number(key);
+  for (const std::string& key : fp->optional)
+    if (m.has(key)) f.parameters[key] = m.number(key);
   m.finish();
+  for (const char* key : {"radius", "E_inclusion"})
+    if (f.parameters.count(key) && f.parameters[key] <= 0) m.get(key).fail(std::string(key) + " must be positive");
+  if (f.parameters.count("nu_inclusion") && !(f.parameters["nu_inclusion"] > -1 && f.parameters["nu_inclusion"] < 0.5))
+    m.get("nu_inclusion").fail("nu_inclusion must lie in (-1, 0.5)");
+  if (f.parameters.count("stretch") && !(f.parameters["stretch"] > -1)) m.get("stretch").fail("stretch must exceed -1");
   if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0) m.get("half_length").fail("half_length must be positive");
   if (f.parameters.count("E") && f.parameters["E"] <= 0) m.get("E").fail("Young's modulus E must be positive");
   if (f.parameters.count("nu") && !(f.parameters["nu"] > -1 && f.parameters["nu"] < 0.5))
@@ -403,6 +417,15 @@ Scene read(const YAML::Node& root, const std::string& file) {
     s.output.directory = o.text("directory", "out");
     s.output.vtu = o.boolean("vtu", true);
     s.output.csv = o.boolean("csv", true);
+    if (o.has("smoothing")) {
+      MapReader sm(o.get("smoothing"));
+      s.output.smoothing_influence = sm.text("influence");
+      const abi::InfluenceDescriptor* inf = abi::find_influence(s.output.smoothing_influence);
+      if (inf == nullptr) sm.get("influence").fail("unknown influence function '" + s.output.smoothing_influence + "' (pd laws lists them)");
+      if (!can_smooth_with(inf->weight))
+        sm.get("influence").fail("'" + s.output.smoothing_influence + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
+      sm.finish();
+    }
     o.finish();
   }
   if (m.has("probes")) {
@@ -424,6 +447,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (m.has("reference")) s.reference = read_field(m.get("reference"));
   if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
   if (m.has("damage")) s.damage = read_damage(m.get("damage"));
+  if (s.dynamics && !s.output.smoothing_influence.empty())
+    m.get("output").fail("smoothing post-processes the static solution; dynamic scenes do not support it yet");
   if (!s.dynamics)
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");

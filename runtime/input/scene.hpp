@@ -87,6 +87,9 @@ struct OutputSpec {
   std::string directory = "out";
   bool vtu = true;
   bool csv = true;
+  // Paper 000 eq. (49): also write the displacement averaged over each family with this
+  // influence function (and its field error). Empty: no smoothing.
+  std::string smoothing_influence;
 };
 
 struct Probe {

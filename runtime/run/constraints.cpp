@@ -19,24 +19,36 @@ DofMap scene_constraints(const Scene& scene, const Particles& particles) {
   const std::size_t n = static_cast<std::size_t>(particles.size()) * d;
   std::vector<double> value(n, 0.0);
   std::vector<char> fixed(n, 0);
+  // The field condition that set each dof, when its values are not proportional to the load.
+  std::vector<std::shared_ptr<const AnalyticField>> path(n);
   for (const BoundaryCondition& bc : scene.boundary) {
     if (bc.kind != BoundaryCondition::Kind::Fixed && bc.kind != BoundaryCondition::Kind::Displacement &&
         bc.kind != BoundaryCondition::Kind::Field)
       continue;
     const auto ids = region_particles(bc.region, particles, scene);
     if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
-    std::unique_ptr<AnalyticField> field;
-    if (bc.kind == BoundaryCondition::Kind::Field) field = std::make_unique<AnalyticField>(bc.field, scene.materials[0].elastic);
+    std::shared_ptr<const AnalyticField> field;
+    if (bc.kind == BoundaryCondition::Kind::Field) field = std::make_shared<const AnalyticField>(bc.field, scene.materials[0].elastic);
+    const bool nonlinear_path = field && field->name() == "rotation";
     for (int p : ids)
       for (int c = 0; c < d; ++c) {
         if (!bc.components[c]) continue;
         fixed[p * d + c] = 1;
+        path[p * d + c] = nonlinear_path ? field : nullptr;
         value[p * d + c] = bc.kind == BoundaryCondition::Kind::Fixed ? 0.0
                            : field ? field->displacement(particles.position(p))[c]
                                    : bc.values[c];
       }
   }
-  return DofMap(fixed, value);
+  DofMap dofs(fixed, value);
+  if (std::any_of(path.begin(), path.end(), [](const auto& f) { return f != nullptr; }))
+    dofs.set_load_path([&particles, d, path = std::move(path), constrained = dofs.constrained_dofs(),
+                        values = dofs.prescribed()](double load, int i) {
+      const int dof = constrained[static_cast<std::size_t>(i)];
+      const auto& f = path[static_cast<std::size_t>(dof)];
+      return f ? f->displacement_at_load(particles.position(dof / d), load)[dof % d] : load * values[static_cast<std::size_t>(i)];
+    });
+  return dofs;
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/family_quality.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
 #include "dynamics/energies.hpp"
@@ -19,6 +20,7 @@
 #include "dynamics/verlet_integrator.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
+#include "interrupt.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
@@ -59,6 +61,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
     if (bonds_.family_size(p) == 0)
       throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", p,
                                            particles_.x[p * particles_.dim], particles_.x[p * particles_.dim + 1]));
+  check_family_quality(particles_, bonds_, influence->weight, influence->name, scene_.h);
   std::vector<std::vector<double>> params;
   for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken: a
@@ -429,6 +432,7 @@ RunSummary DynamicSimulation::run_explicit(bool write, int stop_after) {
   }
   Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
   for (int s = step + 1; s <= last; ++s) {
+    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", s, last));
     u_old = u_;
     g_old = g;
     verlet.first_half(u_, v_, f);
@@ -502,6 +506,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
   int s = step;
   while (ratio > dyn.tolerance && s < last) {
+    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u_);
     if (damage_ && damage_->break_bonds(u_.data()) > 0) assembler_->update_moments();

@@ -57,6 +57,11 @@ std::string RunSummary::json() const {
   }
   j["probes"] = probe_list;
   if (has_field_error) j["field_error_eq48"] = field_error;
+  if (!smoothing.empty()) {
+    nlohmann::ordered_json sj{{"influence", smoothing}, {"oscillation", oscillation}};
+    if (has_field_error) sj["field_error_eq48"] = smoothed_field_error;
+    j["smoothing_eq49"] = sj;
+  }
   j["files"] = files;
   return j.dump(2) + "\n";
 }
@@ -92,6 +97,9 @@ std::string RunSummary::text() const {
                      setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
   }
   if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
+  if (!smoothing.empty())
+    s += fmt::format("smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
+                     has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");
   s += "probes:\n";
   for (const auto& p : probes)
     s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)

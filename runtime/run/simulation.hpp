@@ -40,6 +40,11 @@ struct RunSummary {
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2
+  // output.smoothing (paper 000 eq. 49): the influence used, the relative oscillation
+  // sqrt(sum |u - u_s|^2 / sum |u|^2) and, with a reference, eq. (48) for u_s.
+  std::string smoothing;
+  double oscillation = 0;
+  double smoothed_field_error = 0;
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
   std::string text() const;  // the run summary for the log
@@ -57,6 +62,8 @@ class Simulation {
   const Particles& particles() const { return particles_; }
   const Bonds& bonds() const { return bonds_; }
   const std::vector<double>& displacement() const { return u_; }
+  // The displacement smoothed by output.smoothing (empty without it).
+  const std::vector<double>& smoothed_displacement() const { return u_smooth_; }
   const Scene& scene() const { return scene_; }
   const FamilyAssembler& assembler() const { return *assembler_; }
 
@@ -64,6 +71,8 @@ class Simulation {
   NewtonSettings newton_settings() const;
   std::string matrix_free_preconditioner() const;  // "" (assembled), diagonal or approximate
   std::vector<ProbeResult> evaluate_probes() const;
+  double field_error(const FieldSpec& reference, const std::vector<double>& u) const;
+  void smooth();
   void write_outputs();
   Scene scene_;
   Log log_;
@@ -75,7 +84,7 @@ class Simulation {
   std::unique_ptr<FamilyAssembler> approximation_;
   std::vector<std::unique_ptr<Effect>> effects_;
   std::unique_ptr<CriticalStretchDamage> damage_;  // only when the scene has a damage section
-  std::vector<double> u_;
+  std::vector<double> u_, u_smooth_;
   RunSummary summary_;
 };
 

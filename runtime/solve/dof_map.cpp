@@ -45,7 +45,7 @@ void DofMap::expand_free(const Eigen::VectorXd& reduced, Eigen::VectorXd& full) 
 }
 
 void DofMap::apply_prescribed(Eigen::VectorXd& full, double factor) const {
-  for (int i = 0; i < constrained_count(); ++i) full[constrained_[i]] = factor * prescribed_[i];
+  for (int i = 0; i < constrained_count(); ++i) full[constrained_[i]] = path_ ? path_(factor, i) : factor * prescribed_[i];
 }
 
 ReducedSystem::ReducedSystem(const DofMap& dofs, const SparseMatrix& K) : dofs_(&dofs) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -32,12 +33,19 @@ class DofMap {
   Eigen::VectorXd restrict_free(const Eigen::VectorXd& full) const;
   // full[free] = reduced (constrained entries untouched).
   void expand_free(const Eigen::VectorXd& reduced, Eigen::VectorXd& full) const;
-  // full[constrained] = factor * prescribed.
+  // full[constrained] = factor * prescribed, or the load path's values at `factor`.
   void apply_prescribed(Eigen::VectorXd& full, double factor = 1.0) const;
+  // A prescribed motion that is not proportional to the load (a rotation: scaling its
+  // displacement by 1/2 is a rotation by 30 degrees *and* a 13% contraction, not a
+  // rotation by 45) gives its values at a load factor: path(load, i) for the i-th
+  // constrained dof; it must give prescribed()[i] at load 1.
+  using LoadPath = std::function<double(double load, int i)>;
+  void set_load_path(LoadPath path) { path_ = std::move(path); }
 
  private:
   std::vector<int> free_index_, free_, constrained_;
   std::vector<double> prescribed_;
+  LoadPath path_;
 };
 
 // K_ff and K_fc of a matrix with a fixed pattern. The index plans are built once; each

@@ -7,6 +7,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "interrupt.hpp"
+
 namespace pd {
 
 Eigen::VectorXd safe_inverse_diagonal(const Eigen::VectorXd& d) {
@@ -40,6 +42,7 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M,
   double rz = r.dot(z);
   for (res.iterations = 0; res.iterations < max_it; ++res.iterations) {
     if (r.norm() <= tol * bnorm) break;
+    throw_if_interrupted("during a matrix-free CG solve");
     A(p, Ap);
     const double pAp = p.dot(Ap);
     if (!(pAp > 0)) {  // not positive definite along p: stop, report the residual
@@ -86,6 +89,7 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator&
     g[0] = beta;
     int j = 0;
     for (; j < m && res.iterations < max_it; ++j, ++res.iterations) {
+      throw_if_interrupted("during a matrix-free GMRES solve");
       M(V.col(j), z);
       A(z, w);  // right preconditioning: A M v
       for (int i = 0; i <= j; ++i) {    // modified Gram-Schmidt

@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "interrupt.hpp"
 #include "solve/matrix_free_krylov.hpp"
 
 namespace pd {
@@ -188,6 +189,9 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       NewtonRecord rec{step, 0, load, norm, 0.0, 0.0, 0, 0.0};
       bool done = false;
       for (int it = 0;; ++it) {
+        if (interrupt_signal() != 0)
+          throw_if_interrupted(
+              fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
         rec.iteration = it;
         rec.residual = norm;
         res.history.push_back(rec);

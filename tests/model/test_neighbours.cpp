@@ -126,6 +126,31 @@ TEST(Neighbours, BondsAtExactlyTheHorizonAreKept) {
   }
 }
 
+TEST(Neighbours, IntegerHorizonRatiosKeepEveryLatticeNeighbour) {
+  // delta = k h exactly: a pair at distance delta along an axis can fall two cells apart
+  // when the cell size is exactly delta and the positions round the other way (0.35 and
+  // 0.45 with h = 0.1 land in cells 2 and 4). Every particle must still see every
+  // lattice offset with a^2 + b^2 <= k^2 that lies in the domain.
+  pd::Scene s;
+  s.dim = 2;
+  s.lo = {0, 0, 0};
+  s.hi = {1, 1, 0};
+  s.h = 0.1;
+  s.materials.resize(1);
+  const pd::Particles p = pd::discretize(s);
+  for (int k : {1, 2, 3}) {
+    const pd::Bonds b = pd::find_bonds(p, k * s.h, weight);
+    for (int i = 0; i < p.size(); ++i) {
+      const int ix = static_cast<int>(std::lround(p.position(i)[0] / s.h - 0.5)), iy = static_cast<int>(std::lround(p.position(i)[1] / s.h - 0.5));
+      int expected = 0;
+      for (int a = -k; a <= k; ++a)
+        for (int c = -k; c <= k; ++c)
+          expected += (a || c) && a * a + c * c <= k * k && ix + a >= 0 && ix + a < 10 && iy + c >= 0 && iy + c < 10;
+      ASSERT_EQ(b.family_size(i), expected) << "delta = " << k << "h, particle " << i;
+    }
+  }
+}
+
 TEST(Neighbours, SingleParticleAndCollinearClouds) {
   pd::Particles one;
   one.dim = 2;

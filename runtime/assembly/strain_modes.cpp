@@ -1,0 +1,72 @@
+// Per-family response to homogeneous strains, from the generated tangent-vector product.
+#include "assembly/strain_modes.hpp"
+
+#include <fmt/core.h>
+
+#include <Eigen/Eigenvalues>
+#include <stdexcept>
+
+namespace pd {
+
+StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, double tolerance) {
+  const FamilyInputs& in = assembler.inputs();
+  const abi::KernelVariant& variant = assembler.variant();
+  const int n = in.size(), d = in.dim(), nk = d * (d + 1) / 2;
+  std::vector<double> ratios(static_cast<std::size_t>(n), 1.0);
+#pragma omp parallel
+  {
+    FamilyGather g(in);
+    std::vector<double> dy, df;
+    Eigen::MatrixXd response;
+#pragma omp for schedule(dynamic, 64)
+    for (int p = 0; p < n; ++p) {
+      const abi::Family f = g.gather(p, nullptr);
+      const int m = (f.n_bonds + 1) * d;
+      dy.assign(static_cast<std::size_t>(m), 0.0);
+      df.assign(static_cast<std::size_t>(m), 0.0);
+      response.resize(m, nk);
+      int k = 0;
+      for (int r = 0; r < d; ++r)
+        for (int c = r; c < d; ++c, ++k) {
+          // dy_a = eps x_a relative to the center: eps = (e_r e_c^T + e_c e_r^T) / 2.
+          std::fill(dy.begin(), dy.end(), 0.0);
+          for (int b = 0; b < f.n_bonds; ++b) {
+            const double* xi = f.xi + static_cast<std::ptrdiff_t>(b) * d;
+            dy[static_cast<std::size_t>(b + 1) * d + r] += 0.5 * xi[c];
+            dy[static_cast<std::size_t>(b + 1) * d + c] += 0.5 * xi[r];
+          }
+          variant.jvp(f, dy.data(), df.data());
+          for (int i = 0; i < m; ++i) response(i, k) = df[i];
+        }
+      const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(response.transpose() * response).eigenvalues();
+      ratios[p] = eig[nk - 1] > 0 ? std::max(0.0, eig[0]) / eig[nk - 1] : 0.0;
+    }
+  }
+  StrainModeReport report;
+  for (int p = 0; p < n; ++p) {
+    if (ratios[p] < report.worst_ratio) report.worst_ratio = ratios[p], report.worst_particle = p;
+    if (ratios[p] < tolerance) report.blind.push_back(p);
+  }
+  return report;
+}
+
+StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h) {
+  StrainModeReport report = find_strain_blind_families(assembler);
+  const int n = assembler.inputs().size();
+  if (2 * static_cast<long long>(report.blind.size()) > n) {
+    const Particles& P = *assembler.inputs().particles;
+    std::string list;
+    for (std::size_t k = 0; k < std::min<std::size_t>(report.blind.size(), 5); ++k)
+      list += fmt::format("{}particle {} at ({:.6g}, {:.6g})", k ? ", " : "", report.blind[k], P.position(report.blind[k])[0],
+                          P.position(report.blind[k])[1]);
+    throw std::runtime_error(fmt::format(
+        "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = {:.4g}): {}{}; "
+        "their bonds are too few or too aligned for this law (on a square lattice, delta/h < 1.42 leaves only the axial "
+        "bonds, which do not stretch under shear): increase the horizon ratio",
+        report.blind.size(), n, assembler.law().name, influence, delta_over_h, list,
+        report.blind.size() > 5 ? fmt::format(" and {} more", report.blind.size() - 5) : ""));
+  }
+  return report;
+}
+
+}  // namespace pd
