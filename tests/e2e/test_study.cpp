@@ -56,18 +56,21 @@ TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
   const std::vector<std::pair<std::string, std::string>> not_converging{{"uniaxial", S}, {"shear", S}, {"uniaxial", O}};
   for (double ratio : spec.quick.ratios) {
     // Converging: first order, and the order between the finest two resolutions stays so.
-    for (const auto& [problem, law] : converging)
-      if (const auto* o = find(problem, law, ratio)) {
-        EXPECT_GT(o->order, 0.8) << problem << " " << law << " " << ratio;
-        EXPECT_GT(o->fine_order, 0.8) << problem << " " << law << " " << ratio;
-      }
+    for (const auto& [problem, law] : converging) {
+      const auto* o = find(problem, law, ratio);
+      ASSERT_NE(o, nullptr) << "no series " << problem << " " << law << " " << ratio;
+      EXPECT_GT(o->order, 0.8) << problem << " " << law << " " << ratio;
+      EXPECT_GT(o->fine_order, 0.8) << problem << " " << law << " " << ratio;
+    }
     // Not converging: the error grows or stays (order < 0.2), or it falls more slowly at
     // every refinement (order < 0.8 and the finest pair's order below the fit's): the
     // error tends to a nonzero limit.
-    for (const auto& [problem, law] : not_converging)
-      if (const auto* o = find(problem, law, ratio))
-        EXPECT_TRUE(o->order < 0.2 || (o->order < 0.8 && o->fine_order < o->order))
-            << problem << " " << law << " " << ratio << ": order " << o->order << ", finest pair " << o->fine_order;
+    for (const auto& [problem, law] : not_converging) {
+      const auto* o = find(problem, law, ratio);
+      ASSERT_NE(o, nullptr) << "no series " << problem << " " << law << " " << ratio;
+      EXPECT_TRUE(o->order < 0.2 || (o->order < 0.8 && o->fine_order < o->order))
+          << problem << " " << law << " " << ratio << ": order " << o->order << ", finest pair " << o->fine_order;
+    }
   }
   EXPECT_TRUE(std::filesystem::exists(out + "/points.csv"));
   EXPECT_TRUE(std::filesystem::exists(out + "/orders.md"));
@@ -75,7 +78,9 @@ TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
   const auto again = pd::run_study(spec, out, true, [](const std::string&) {});
   ASSERT_EQ(again.size(), orders.size());
   for (std::size_t i = 0; i < orders.size(); ++i)
-    if (std::isfinite(orders[i].order)) EXPECT_NEAR(again[i].order, orders[i].order, 1e-6);
+    if (std::isfinite(orders[i].order)) {
+      EXPECT_NEAR(again[i].order, orders[i].order, 1e-6);
+    }
 }
 
 TEST(Study, CrackStudyFileHasThePapersTables) {

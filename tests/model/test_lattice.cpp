@@ -243,8 +243,9 @@ TEST(Neighbours, LatticeFamiliesAtIntegerRatiosAreComplete) {
       for (int i = 0; i < p.size(); ++i) {
         const double* x = p.position(i);
         const double margin = s.delta() + 0.5 * s.h;
-        if (x[0] > margin && x[0] < 2 - margin && x[1] > margin && x[1] < 1.5 - margin)
+        if (x[0] > margin && x[0] < 2 - margin && x[1] > margin && x[1] < 1.5 - margin) {
           EXPECT_EQ(b.family_size(i), full) << placement << " delta/h " << ratio << " at " << x[0] << ", " << x[1];
+        }
       }
     }
 }
