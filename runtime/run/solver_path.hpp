@@ -24,8 +24,8 @@ struct SolverPath {
 // linear != auto, or a preconditioner named with auto: the scene's choice. Else:
 //  - estimated K nonzeros <= direct_max_nonzeros: assembled (the direct/Krylov rule of
 //    the linear solver then decides on the exact count);
-//  - above, matrix-free Newton-Krylov: preconditioned by the factorised short-horizon
-//    stiffness when that horizon is shorter than delta and its estimate fits
+//  - above, matrix-free Newton-Krylov: preconditioned by the factorised stiffness on
+//    the horizon min(delta, preconditioner_ratio h) while its estimate fits
 //    preconditioner_max_nonzeros, else by Jacobi (the least memory).
 SolverPath choose_solver_path(const SolverSpec& solver, int particles, double mean_family_size, int dim,
                               double delta_over_h);

@@ -49,9 +49,18 @@ TEST(SolverPath, AutoGoesMatrixFreeWithTheShortHorizonAboveTheDirectLimit) {
   EXPECT_NE(path.reason.find("delta/h = 2"), std::string::npos) << path.reason;
 }
 
-TEST(SolverPath, AutoFallsBackToJacobiWhenTheShortHorizonCannotHelpOrFit) {
+TEST(SolverPath, AShortHorizonAlreadyFactorisesTheTangentItself) {
   pd::SolverSpec spec;
-  // delta/h = 1.5 is already shorter than the preconditioner's horizon.
+  // 200^2 at delta/h = 1.5: the preconditioner's horizon is delta itself.
+  const pd::SolverPath path = pd::choose_solver_path(spec, 40000, 7.9, 2, 1.5);
+  EXPECT_EQ(path.linear, "matrix_free");
+  EXPECT_EQ(path.preconditioner, "short_horizon");
+  EXPECT_NE(path.reason.find("own factorisation"), std::string::npos) << path.reason;
+}
+
+TEST(SolverPath, AutoFallsBackToJacobiWhenThePreconditionerCannotFit) {
+  pd::SolverSpec spec;
+  // 1000^2 at delta/h = 1.5: even the tangent itself exceeds the limit.
   pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 7.9, 2, 1.5);
   EXPECT_EQ(path.linear, "matrix_free");
   EXPECT_EQ(path.preconditioner, "diagonal");
