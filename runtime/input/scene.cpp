@@ -411,22 +411,24 @@ Scene read(const YAML::Node& root, const std::string& file) {
   }
   if (m.has("reference")) s.reference = read_field(m.get("reference"));
   if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
+  // Without dynamics, damage breaks bonds between the Newton load steps (Simulation).
   if (m.has("damage")) {
     s.damage = read_damage(m.get("damage"));
-    // Breaking bonds between the load steps of an implicit solve is not implemented yet
-    // (issue 8): say so rather than ignore the section.
-    if (!s.dynamics) m.get("damage").fail("damage needs a dynamics section (explicit or relaxation); bond breaking between implicit load steps is not implemented yet");
+    if (s.dynamics && !s.damage->max_resolves_where.empty())
+      throw SceneError(s.damage->max_resolves_where + ": max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds every step");
   }
-  if (!s.dynamics)
+  if (!s.dynamics) {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");
       if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": velocity conditions need a dynamics section");
     }
-  if (s.dynamics && s.dynamics->method == "relaxation")
+  }
+  if (s.dynamics && s.dynamics->method == "relaxation") {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
       if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
     }
+  }
   if (s.dynamics && s.dynamics->method == "relaxation")
     for (const InitialCondition& ic : s.dynamics->initial)
       if (ic.velocity != Point{}) throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");

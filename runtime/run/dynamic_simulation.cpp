@@ -89,10 +89,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   if (scene_.damage) {
     const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
     damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() +
-                               (scene_.damage->fracture_energy > 0
-                                    ? fmt::format(" (from G0 = {:.6g}, PMB {}D formula)", scene_.damage->fracture_energy, scene_.dim)
-                                    : std::string()));
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim));
   }
   setup_constraints();
   for (const Probe& pr : scene_.probes) {

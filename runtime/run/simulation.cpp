@@ -48,8 +48,9 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
+  // A scene with damage needs the damaged variant from the start: bonds may break.
   AssemblerOptions options;
-  options.intact = summary_.broken_bonds == 0;
+  options.intact = summary_.broken_bonds == 0 && !scene_.damage;
   options.matrix = scene_.solver.linear != "matrix_free";
   if (matrix_free_preconditioner() == "approximate") {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
@@ -58,7 +59,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     short_bonds_ = find_bonds(particles_, short_delta, influence->weight);
     const int cut = cut_bonds(scene_.cracks, particles_, short_bonds_);
     AssemblerOptions short_options;
-    short_options.intact = cut == 0;
+    short_options.intact = cut == 0 && !scene_.damage;
     approximation_ = std::make_unique<FamilyAssembler>(particles_, short_bonds_, *law, params, short_options);
   }
   assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, std::move(params), options);
@@ -69,6 +70,13 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   if (auto e = make_crack_pressure(scene_, particles_, bonds_)) effects_.push_back(std::move(e));
   for (const auto& e : effects_) summary_.effects.push_back(e->describe());
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
+  if (scene_.damage) {
+    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
+    damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
+    if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(particles_, short_bonds_, s0, scene_.damage->tension_only);
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim) +
+                               fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
+  }
   u_.assign(static_cast<std::size_t>(particles_.size()) * particles_.dim, 0.0);
   summary_.setup_seconds = seconds_since(t0);
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
@@ -137,13 +145,23 @@ RunSummary Simulation::run(bool write) {
   for (const auto& e : effects_) effects.push_back(e.get());
   PeridynamicSystem system(*assembler_, effects, approximation_.get());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u_.size()));
+  const long long broken_before = broken_bond_count(bonds_);
   if (loaded) {
-    summary_.newton = NewtonSolver(newton_settings(), log_).solve(system, dofs, u);
+    NewtonSettings settings = newton_settings();
+    if (damage_) {
+      settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
+      settings.max_resolves = scene_.damage->max_resolves;
+    }
+    summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
   } else {
     summary_.newton.converged = true;
     summary_.newton.unknowns = dofs.free_count();
   }
   summary_.solve_seconds = seconds_since(t0);
+  if (damage_) {
+    summary_.bonds_broken_by_damage = broken_bond_count(bonds_) - broken_before;
+    summary_.broken_bonds = static_cast<int>(broken_bond_count(bonds_));
+  }
   if (!summary_.newton.linear_choice.empty())
     log_(fmt::format("  linear solver: {} ({})", summary_.newton.linear_solver, summary_.newton.linear_choice));
   if (!summary_.newton.converged) throw std::runtime_error(summary_.newton.message);
@@ -172,18 +190,29 @@ RunSummary Simulation::run(bool write) {
   return summary_;
 }
 
+// Critical-stretch breaking at the converged solution of a load step (the rule of the
+// dynamic runs, CriticalStretchDamage). Broken bonds change the moments, so the next
+// round's residual and tangent see the new bond set; the pattern keeps the broken
+// bonds' slots (as zeros), so no symbolic re-analysis is needed.
+long long Simulation::after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs) {
+  const int broken = damage_->break_bonds(u.data());
+  if (broken == 0) return 0;
+  assembler_->update_moments();
+  if (short_damage_ && short_damage_->break_bonds(u.data()) > 0) approximation_->update_moments();
+  log_(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
+                   scene_.solver.load_steps, broken, broken_bond_count(bonds_)));
+  // A piece cut loose by the new crack faces would make K singular: say which.
+  check_held(particles_, bonds_, dofs);
+  return broken;
+}
+
 void Simulation::write_outputs() {
   const auto t1 = std::chrono::steady_clock::now();
   const int n = particles_.size(), d = particles_.dim;
   std::vector<OutputField> fields;
-  std::vector<double> material(particles_.material.begin(), particles_.material.end()), damage(n, 0.0);
-  for (int p = 0; p < n; ++p) {
-    int broken = 0;
-    for (int e = bonds_.offsets[p]; e < bonds_.offsets[p + 1]; ++e) broken += bonds_.alpha[e] == 0.0;
-    damage[p] = bonds_.family_size(p) ? static_cast<double>(broken) / bonds_.family_size(p) : 0.0;
-  }
+  std::vector<double> material(particles_.material.begin(), particles_.material.end());
   fields.push_back({"material", 1, material});
-  fields.push_back({"damage", 1, damage});
+  fields.push_back({"damage", 1, particle_damage(bonds_)});
   std::vector<double> force(u_.size());
   assembler_->internal_forces(u_.data(), force.data());
   fields.push_back({"internal_force", d, force});

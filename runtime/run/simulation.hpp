@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "damage/critical_stretch.hpp"
 #include "input/scene.hpp"
 #include "run/dynamics_report.hpp"
 #include "run/effects.hpp"
@@ -33,6 +34,7 @@ struct RunSummary {
   std::string variant;
   std::vector<std::string> effects;
   NewtonResult newton;                    // static runs
+  std::optional<long long> bonds_broken_by_damage;  // static runs with `damage`: broken between load steps
   std::optional<DynamicsReport> dynamics;  // dynamic and relaxation runs only
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
@@ -56,6 +58,7 @@ class Simulation {
   const std::vector<double>& displacement() const { return u_; }
   const Scene& scene() const { return scene_; }
   const FamilyAssembler& assembler() const { return *assembler_; }
+  const CriticalStretchDamage* damage() const { return damage_.get(); }
 
  private:
   NewtonSettings newton_settings() const;
@@ -71,6 +74,10 @@ class Simulation {
   Bonds short_bonds_;
   std::unique_ptr<FamilyAssembler> approximation_;
   std::vector<std::unique_ptr<Effect>> effects_;
+  // Scenes with `damage`: bonds break between load steps (after_load_step), in the real
+  // bonds and in the preconditioner's short ones alike.
+  std::unique_ptr<CriticalStretchDamage> damage_, short_damage_;
+  long long after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs);
   std::vector<double> u_;
   RunSummary summary_;
 };

@@ -159,27 +159,30 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
     return x;
   };
 
-  for (int step = 1; step <= s_.load_steps; ++step) {
-    const double load = static_cast<double>(step) / s_.load_steps;
-    dofs.apply_prescribed(u, load);
+  // Newton iterations of one load step (round > 0: solved again after after_step
+  // changed the system); false with res.message set when they fail.
+  auto iterate = [&](int step, double load, int round) -> bool {
     sys.residual(u, load, r);
     double norm = dofs.restrict_free(r).norm();
     reference = std::max(reference, norm);
-    NewtonRecord rec{step, 0, load, norm, 0.0, 0.0, 0, 0.0};
+    NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
     bool done = false;
     for (int it = 0;; ++it) {
       rec.iteration = it;
       rec.residual = norm;
       res.history.push_back(rec);
-      say(fmt::format("  load {:.3g} (step {}/{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
-                      s_.load_steps, it, norm, reference > 0 ? norm / reference : 0.0,
-                      it == 0 ? std::string()
-                              : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
-                                            rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
-                                                                  : std::string())));
+      say(fmt::format(
+          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
+          s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it, norm,
+          reference > 0 ? norm / reference : 0.0,
+          it == 0 ? std::string()
+                  : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
+                                rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
+                                                      : std::string())));
       if (!std::isfinite(norm)) {
-        res.message = fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
-        return res;
+        res.message =
+            fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
+        return false;
       }
       if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance ||
           (it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance)) {
@@ -188,22 +191,25 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       }
       if (stagnated(res.history, it)) {
         res.stagnated = done = true;
-        say(fmt::format("  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
-                        "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning allows",
-                        norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
-                        s_.relative_tolerance));
+        say(fmt::format(
+            "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
+            "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning "
+            "allows",
+            norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
+            s_.relative_tolerance));
         break;
       }
       if (it == s_.max_iterations) break;
-      rec = NewtonRecord{step, it + 1, load, 0.0, 0.0, 0.0, 0, 0.0};
+      rec = NewtonRecord{step, it + 1, round, load, 0.0, 0.0, 0.0, 0, 0.0};
       const Eigen::VectorXd rf = dofs.restrict_free(r);
       Eigen::VectorXd dx;
       try {
         dx = newton_direction(rf, load, rec);
         previous_norm = norm;
       } catch (const std::runtime_error& e) {
-        res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load, it + 1, e.what());
-        return res;
+        res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load,
+                                  it + 1, e.what());
+        return false;
       }
       du.setZero();
       dofs.expand_free(dx, du);
@@ -218,7 +224,9 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
         trial = u + alpha * du;
         sys.residual(trial, load, r_trial);
         trial_norm = dofs.restrict_free(r_trial).norm();
-        if (negligible || (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm)) break;
+        if (negligible ||
+            (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm))
+          break;
         if (b == s_.max_backtracks) {
           say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
           break;
@@ -236,10 +244,30 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       res.message = fmt::format(
           "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, {:.2e} of the "
           "reference {:.3e} (tolerance {:.1e}); try more load steps or more iterations",
-          load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0, reference,
-          s_.relative_tolerance);
+          load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0,
+          reference, s_.relative_tolerance);
       say(res.message);
-      return res;
+      return false;
+    }
+    return true;
+  };
+
+  for (int step = 1; step <= s_.load_steps; ++step) {
+    const double load = static_cast<double>(step) / s_.load_steps;
+    dofs.apply_prescribed(u, load);
+    for (int round = 0;; ++round) {
+      if (!iterate(step, load, round)) return res;
+      if (!s_.after_step) break;
+      const long long changes = s_.after_step(step, load, u);
+      if (changes == 0) break;
+      if (round == s_.max_resolves) {
+        res.message = fmt::format(
+            "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more load steps",
+            changes, s_.max_resolves, load, step, s_.load_steps);
+        say(res.message);
+        return res;
+      }
+      ++res.resolves;
     }
   }
   res.converged = true;

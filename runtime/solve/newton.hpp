@@ -68,10 +68,17 @@ struct NewtonSettings {
   double max_forcing = 1e-2;
   int krylov_max_iterations = 5000;
   int gmres_restart = 60;
+  // Called after each converged load step with its solution; returns how many changes
+  // it made to the system (e.g. bonds broken). Non-zero: the same load step is solved
+  // again from that solution on the changed system, until the hook changes nothing or
+  // max_resolves re-solves have not sufficed (then the solve fails, saying so).
+  std::function<long long(int step, double load, const Eigen::VectorXd& u)> after_step;
+  int max_resolves = 50;
 };
 
 struct NewtonRecord {
   int step = 0, iteration = 0;
+  int round = 0;                  // re-solves of this load step before this one (after_step)
   double load = 0, residual = 0;  // |r_f| at this iterate
   double step_length = 0;         // line-search factor of the step that led here (0 at iteration 0)
   double increment = 0;           // |du| / |u| of that step
@@ -88,6 +95,7 @@ struct NewtonResult {
   std::string message;        // the failure, when not converged
   std::int64_t unknowns = 0;  // free dofs
   std::int64_t nonzeros = 0;  // of the reduced tangent (0 when matrix-free)
+  int resolves = 0;           // load steps solved again after after_step changed the system
   double assembly_seconds = 0;  // forming tangents (or diagonals, matrix-free)
   double linear_seconds = 0;    // factorisations and linear solves
   int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }

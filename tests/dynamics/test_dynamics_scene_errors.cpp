@@ -30,7 +30,11 @@ TEST(DynamicsScene, BadValuesNameFileLineAndKey) {
   EXPECT_NE(error_of("dynamics: {method: relaxation, dt: 1}\n").find("dynamics.dt"), std::string::npos);
   EXPECT_NE(error_of("dynamics: {steps: 1}\ndamage: {critical_stretch: -1}\n").find("s.yaml:6: damage.critical_stretch"), std::string::npos);
   EXPECT_NE(error_of("dynamics: {steps: 1}\ndamage: {critical_stretch: 0.1, fracture_energy: 1}\n").find("exactly one"), std::string::npos);
-  EXPECT_NE(error_of("damage: {critical_stretch: 0.1}\n").find("damage needs a dynamics section"), std::string::npos);
+  // Damage without dynamics breaks bonds between Newton load steps; max_resolves is theirs.
+  EXPECT_EQ(error_of("damage: {critical_stretch: 0.1, max_resolves: 3}\n"), "");
+  EXPECT_NE(error_of("damage: {critical_stretch: 0.1, max_resolves: 0}\n").find("s.yaml:5: damage.max_resolves"), std::string::npos);
+  EXPECT_NE(error_of("dynamics: {steps: 1}\ndamage: {critical_stretch: 0.1, max_resolves: 3}\n").find("s.yaml:6: damage.max_resolves: max_resolves belongs to implicit"),
+            std::string::npos);
   const std::string tf = "boundary:\n  - region: {side: top}\n    traction: [0, 1]\n    time_function: {ramp: 0}\n";
   EXPECT_NE(error_of(tf + "dynamics: {steps: 1}\n").find("s.yaml:8: boundary[0].time_function.ramp"), std::string::npos)
       << error_of(tf + "dynamics: {steps: 1}\n");
