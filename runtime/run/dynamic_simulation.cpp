@@ -81,9 +81,15 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
     summary_.effects.push_back(l.effect->describe() + (bc.time ? ", times " + bc.time->describe() : std::string()));
     loads_.push_back(std::move(l));
   }
-  if (auto e = make_crack_pressure(scene_, particles_, bonds_)) {
-    summary_.effects.push_back(e->describe() + " (constant in time)");
-    loads_.push_back({std::move(e), TimeFunction{}});
+  // Crack pressure: one effect per pressurised crack, each scaled by its own function
+  // of time (relaxation, like every load, applies it in full).
+  for (const Crack& crack : scene_.cracks) {
+    Scene single = scene_;
+    single.cracks = {crack};
+    auto e = make_crack_pressure(single, particles_, bonds_);
+    if (!e) continue;
+    summary_.effects.push_back(e->describe() + (crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
+    loads_.push_back({std::move(e), crack.time.value_or(TimeFunction{})});
   }
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
