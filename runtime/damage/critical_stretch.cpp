@@ -19,6 +19,11 @@ double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, in
   return std::sqrt(5 * spec.fracture_energy / (9 * e.K * delta));
 }
 
+std::string critical_stretch_origin(const DamageSpec& spec, int dim) {
+  if (spec.fracture_energy <= 0) return "";
+  return fmt::format(" (from G0 = {:.6g}, PMB {}D formula)", spec.fracture_energy, dim);
+}
+
 CriticalStretchDamage::CriticalStretchDamage(const Particles& particles, Bonds& bonds, double s0, bool tension_only)
     : p_(particles), b_(bonds), s0_(s0), tension_only_(tension_only) {}
 

@@ -23,6 +23,8 @@ namespace pd {
 // G0 is the work to break every bond crossing a unit crack area (length in 2D). For
 // state-based laws the same s0 is a PMB-calibrated approximation, not an exact match.
 double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, int dim, double delta);
+// For the run log: "" when s0 was given, " (from G0 = ..., PMB 2D formula)" otherwise.
+std::string critical_stretch_origin(const DamageSpec& spec, int dim);
 
 class CriticalStretchDamage {
  public:

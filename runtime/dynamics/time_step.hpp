@@ -8,10 +8,12 @@
 // Gershgorin bound on the rows of M^-1 K gives
 //     lambda_max <= max_r (sum_c |K_rc|) / m_r,
 // hence dt_crit = 2 / sqrt(max_r S_r / m_r), S_r = sum_c |K_rc|, a bound that needs only
-// one assembly of K and holds for any law (state-based couplings included). For a
-// bond-based law (K block per bond k n n^T, k = c V_p V_q / |xi|) it reduces to
-// Silling & Askari's dt = sqrt(2 rho / sum_q V_q c / |xi|) per particle. The scene's
-// safety_factor (default 0.8) multiplies it. The same row sums give the fictitious
+// one assembly of K and holds for any law (state-based couplings included). The block
+// (per-particle) form of the theorem gives Silling & Askari's dt = sqrt(2 rho / sum_q
+// V_q c / |xi|) for a bond-based law; the row form used here keeps the bond direction
+// factors and is 1.27 times larger on the square lattice at delta = 3h, still an
+// upper bound on omega_max (docs/dynamics.md derives both and measures the ratio). The
+// scene's safety_factor (default 0.8) multiplies it. The same row sums give the fictitious
 // density of adaptive dynamic relaxation (dynamic_relaxation.hpp).
 #pragma once
 

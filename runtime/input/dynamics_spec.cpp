@@ -98,6 +98,11 @@ DamageSpec read_damage(const YamlAt& at) {
     if (!(d.fracture_energy > 0)) m.get("fracture_energy").fail("fracture_energy must be positive");
   }
   d.tension_only = m.boolean("tension_only", true);
+  d.max_resolves = m.integer("max_resolves", 50);
+  if (m.has("max_resolves")) {
+    d.max_resolves_where = m.get("max_resolves").location();
+    if (d.max_resolves < 1) m.get("max_resolves").fail("max_resolves must be at least 1");
+  }
   m.finish();
   return d;
 }

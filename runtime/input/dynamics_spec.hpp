@@ -42,6 +42,8 @@ struct DamageSpec {
   double critical_stretch = 0;  // given directly, or ...
   double fracture_energy = 0;   // ... G0, converted with the PMB formula of the dimension
   bool tension_only = true;     // bonds break in tension only (s > s0); false: |s| > s0
+  int max_resolves = 50;        // implicit runs: re-solves of one load step after bonds broke
+  std::string max_resolves_where;  // "file:line: damage.max_resolves" when given
   std::string where;            // "file:line: damage"
 };
 

@@ -375,6 +375,12 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (s.dim == 2 && crack.points[0] == crack.points[1]) pts.fail("the two points coincide");
       if (s.dim == 3) check_crack_polygon(pts, crack.points);
       crack.pressure = c.number("pressure", 0.0);
+      if (c.has("time_function")) {
+        const YamlAt tf = c.get("time_function");
+        if (crack.pressure == 0) tf.fail("a time function scales the crack pressure: give pressure");
+        crack.time = read_time_function(tf);
+        crack.time_where = tf.location();
+      }
       c.finish();
       s.cracks.push_back(crack);
     }
@@ -446,19 +452,30 @@ Scene read(const YAML::Node& root, const std::string& file) {
   }
   if (m.has("reference")) s.reference = read_field(m.get("reference"));
   if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
-  if (m.has("damage")) s.damage = read_damage(m.get("damage"));
+  // Without dynamics, damage breaks bonds between the Newton load steps (Simulation).
+  if (m.has("damage")) {
+    s.damage = read_damage(m.get("damage"));
+    if (s.dynamics && !s.damage->max_resolves_where.empty())
+      throw SceneError(s.damage->max_resolves_where + ": max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds every step");
+  }
   if (s.dynamics && !s.output.smoothing_influence.empty())
     m.get("output").fail("smoothing post-processes the static solution; dynamic scenes do not support it yet");
-  if (!s.dynamics)
+  if (!s.dynamics) {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");
       if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": velocity conditions need a dynamics section");
     }
-  if (s.dynamics && s.dynamics->method == "relaxation")
+    for (const Crack& c : s.cracks)
+      if (c.time) throw SceneError(c.time_where + ": time functions need a dynamics section (a static crack pressure follows the load factor)");
+  }
+  if (s.dynamics && s.dynamics->method == "relaxation") {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
       if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
     }
+    for (const Crack& c : s.cracks)
+      if (c.time) throw SceneError(c.time_where + ": relaxation solves the static problem: no time functions");
+  }
   if (s.dynamics && s.dynamics->method == "relaxation")
     for (const InitialCondition& ic : s.dynamics->initial)
       if (ic.velocity != Point{}) throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");

@@ -58,6 +58,9 @@ struct BoundaryCondition {
 struct Crack {
   std::vector<Point> points;  // 2D: a segment (2 points); 3D: a planar polygon
   double pressure = 0;
+  // Dynamic scenes: the pressure is scaled by f(t); without one it acts from t = 0.
+  std::optional<TimeFunction> time;
+  std::string time_where;  // "file:line: cracks[i].time_function"
 };
 
 struct SolverSpec {

@@ -84,18 +84,21 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
     summary_.effects.push_back(l.effect->describe() + (bc.time ? ", times " + bc.time->describe() : std::string()));
     loads_.push_back(std::move(l));
   }
-  if (auto e = make_crack_pressure(scene_, particles_, bonds_)) {
-    summary_.effects.push_back(e->describe() + " (constant in time)");
-    loads_.push_back({std::move(e), TimeFunction{}});
+  // Crack pressure: one effect per pressurised crack, each scaled by its own function
+  // of time (relaxation, like every load, applies it in full).
+  for (const Crack& crack : scene_.cracks) {
+    Scene single = scene_;
+    single.cracks = {crack};
+    auto e = make_crack_pressure(single, particles_, bonds_);
+    if (!e) continue;
+    summary_.effects.push_back(e->describe() + (crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
+    loads_.push_back({std::move(e), crack.time.value_or(TimeFunction{})});
   }
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
     const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
     damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() +
-                               (scene_.damage->fracture_energy > 0
-                                    ? fmt::format(" (from G0 = {:.6g}, PMB {}D formula)", scene_.damage->fracture_energy, scene_.dim)
-                                    : std::string()));
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim));
   }
   setup_constraints();
   for (const Probe& pr : scene_.probes) {
@@ -477,30 +480,38 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   check_held(particles_, bonds_, dofs);
   AdaptiveDynamicRelaxation adr(density_, free_);
   int step = 0;
-  const long long broken_start = broken_bond_count(bonds_);
+  long long broken_start = broken_bond_count(bonds_);
+  std::vector<double> f, g;
+  double reference = 0;
+  // Checkpoint scalars: [iterations, reference, broken_start, v (N), f_prev (N)]. The
+  // reference is the one of iteration 0: recomputed at the restored u it would be the
+  // residual there, and the restarted run would stop at another iteration.
+  constexpr std::size_t kHead = 3;
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
     restore(dyn.restart, step, scalars);
     const std::size_t N = u_.size();
-    if (scalars.size() != 1 + 2 * N) throw std::runtime_error(dyn.restart + ": not a relaxation checkpoint of this scene");
-    adr.restore(static_cast<int>(scalars[0]), std::vector<double>(scalars.begin() + 1, scalars.begin() + 1 + static_cast<std::ptrdiff_t>(N)),
-                std::vector<double>(scalars.begin() + 1 + static_cast<std::ptrdiff_t>(N), scalars.end()));
+    if (scalars.size() != kHead + 2 * N) throw std::runtime_error(dyn.restart + ": not a relaxation checkpoint of this scene");
+    const auto v_begin = scalars.begin() + kHead, f_begin = v_begin + static_cast<std::ptrdiff_t>(N);
+    adr.restore(static_cast<int>(scalars[0]), std::vector<double>(v_begin, f_begin), std::vector<double>(f_begin, scalars.end()));
+    reference = scalars[1];
+    broken_start = static_cast<long long>(scalars[2]);
+    forces(0.0, f, g);
   } else {
     apply_initial_conditions();
     prescribe(0.0);
+    forces(0.0, f, g);
+    // The reference force: the larger of the loads and the initial out-of-balance force.
+    reference = norm_over(f, free_);
+    for (const TimedLoad& l : loads_) {
+      std::vector<double> load(u_.size(), 0.0);
+      l.effect->add_forces(u_.data(), 1.0, load.data());
+      reference = std::max(reference, norm_over(load, free_));
+    }
+    if (reference == 0) reference = 1;
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  std::vector<double> f, g;
-  forces(0.0, f, g);
-  // The reference force: the larger of the loads and the initial out-of-balance force.
-  double reference = norm_over(f, free_);
-  for (const TimedLoad& l : loads_) {
-    std::vector<double> load(u_.size(), 0.0);
-    l.effect->add_forces(u_.data(), 1.0, load.data());
-    reference = std::max(reference, norm_over(load, free_));
-  }
-  if (reference == 0) reference = 1;
   double ratio = norm_over(f, free_) / reference;
   if (step == 0) series_.push_back(make_row(0, 0, ratio));
   Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
@@ -517,7 +528,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
     if (s % dyn.output_every == 0 || done) series_.push_back(make_row(s, s, ratio));
     if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done)) write_snapshot(s, s);
     if (dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0) {
-      std::vector<double> scalars{static_cast<double>(adr.iterations())};
+      std::vector<double> scalars{static_cast<double>(adr.iterations()), reference, static_cast<double>(broken_start)};
       scalars.insert(scalars.end(), adr.velocity().begin(), adr.velocity().end());
       scalars.insert(scalars.end(), adr.previous_force().begin(), adr.previous_force().end());
       save_checkpoint(s, scalars);

@@ -2,8 +2,6 @@
 // assembler plus the forces of the effects the scene calls for.
 #pragma once
 
-#include <functional>
-#include <string>
 #include <vector>
 
 #include "assembly/assembler.hpp"
@@ -52,11 +50,6 @@ class PeridynamicSystem final : public NonlinearSystem {
     a_.stiffness_diagonal(u.data(), d.data());
     for (const Effect* e : effects_) e->add_stiffness_diagonal(u.data(), load, d.data());
   }
-  // Bond breaking between load steps: evolve(u) breaks the bonds over their limit,
-  // updates what depends on them and returns how many broke.
-  void set_evolution(std::function<int(const double* u)> evolve) { evolve_ = std::move(evolve); }
-  int after_converged_step(const Eigen::VectorXd& u, double /*load*/) override { return evolve_ ? evolve_(u.data()) : 0; }
-  std::string describe_changes(int changes) const override { return std::to_string(changes) + " bonds broke"; }
   bool has_approximate_tangent() const override { return approximation_ != nullptr; }
   void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P) override {
     approximation_->stiffness(u.data(), P);
@@ -67,7 +60,6 @@ class PeridynamicSystem final : public NonlinearSystem {
   const FamilyAssembler& a_;
   std::vector<const Effect*> effects_;
   const FamilyAssembler* approximation_;
-  std::function<int(const double*)> evolve_;
 };
 
 }  // namespace pd

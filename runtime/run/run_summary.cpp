@@ -40,12 +40,15 @@ std::string RunSummary::json() const {
     j["nonzeros"] = newton.nonzeros;
     j["linear_solver"] = {{"path", solver_path}, {"method", newton.linear_solver}, {"choice", newton.linear_choice}};
     nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
-    for (const auto& it : newton.history)
-      iterations.push_back({{"load_step", it.step}, {"load", it.load}, {"iteration", it.iteration}, {"residual", it.residual},
-                            {"increment", it.increment}, {"line_search", it.step_length},
-                            {"linear_iterations", it.linear_iterations}});
+    for (const auto& it : newton.history) {
+      nlohmann::ordered_json e{{"load_step", it.step}, {"load", it.load}};
+      if (bonds_broken_by_damage) e["resolve"] = it.round;  // 0: the first solve of the step
+      e.update({{"iteration", it.iteration}, {"residual", it.residual}, {"increment", it.increment},
+                {"line_search", it.step_length}, {"linear_iterations", it.linear_iterations}});
+      iterations.push_back(e);
+    }
     j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
-    if (newton.changes > 0) j["bonds_broken_between_load_steps"] = newton.changes;
+    if (bonds_broken_by_damage) j["damage"] = {{"bonds_broken", *bonds_broken_by_damage}, {"resolves", newton.resolves}};
     j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
                     {"solve", solve_seconds}, {"output", output_seconds}};
   }
@@ -89,10 +92,12 @@ std::string RunSummary::text() const {
     s += fmt::format("unknowns: {}\nnonzeros: {}\nsolver path: {}\nlinear solver: {} ({})\nnewton iterations: {}\n",
                      newton.unknowns, newton.nonzeros, solver_path, newton.linear_solver, newton.linear_choice,
                      newton.iterations());
-    if (newton.changes > 0) s += fmt::format("bonds broken between load steps: {}\n", newton.changes);
     for (const auto& it : newton.history)
-      s += fmt::format("  step {} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step, it.iteration, it.residual,
-                       it.step_length, it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
+      s += fmt::format("  step {}{} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step,
+                       it.round > 0 ? fmt::format(" re-solve {}", it.round) : "", it.iteration, it.residual, it.step_length,
+                       it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
+    if (bonds_broken_by_damage)
+      s += fmt::format("bonds broken between load steps: {} ({} re-solves)\n", *bonds_broken_by_damage, newton.resolves);
     s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
                      setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
   }

@@ -65,7 +65,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   scene_.solver.preconditioner = path.preconditioner;
   summary_.solver_path = path.reason;
   AssemblerOptions options;
-  // A scene with damage reads alpha from the start: bonds break between load steps.
+  // A scene with damage needs the damaged variant from the start: bonds may break.
   options.intact = summary_.broken_bonds == 0 && !scene_.damage;
   options.matrix = scene_.solver.linear != "matrix_free";
   if (matrix_free_preconditioner() == "approximate") {
@@ -75,7 +75,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     short_bonds_ = find_bonds(particles_, short_delta, influence->weight);
     const int cut = cut_bonds(scene_.cracks, particles_, short_bonds_);
     AssemblerOptions short_options;
-    short_options.intact = cut == 0;
+    short_options.intact = cut == 0 && !scene_.damage;
     approximation_ = std::make_unique<FamilyAssembler>(particles_, short_bonds_, *law, params, short_options);
   }
   assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, std::move(params), options);
@@ -90,7 +90,9 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   if (scene_.damage) {
     const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
     damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + ", between load steps (each step re-solved until no bond breaks)");
+    if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(particles_, short_bonds_, s0, scene_.damage->tension_only);
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim) +
+                               fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
   }
   u_.assign(static_cast<std::size_t>(particles_.size()) * particles_.dim, 0.0);
   summary_.setup_seconds = seconds_since(t0);
@@ -201,20 +203,24 @@ RunSummary Simulation::run(bool write) {
   std::vector<const Effect*> effects;
   for (const auto& e : effects_) effects.push_back(e.get());
   PeridynamicSystem system(*assembler_, effects, approximation_.get());
-  if (damage_)
-    system.set_evolution([this](const double* u) {
-      const int broke = damage_->break_bonds(u);
-      if (broke > 0) assembler_->update_moments();  // the states' moments sum over intact bonds
-      return broke;
-    });
   Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u_.size()));
+  const long long broken_before = broken_bond_count(bonds_);
   if (loaded) {
-    summary_.newton = NewtonSolver(newton_settings(), log_).solve(system, dofs, u);
+    NewtonSettings settings = newton_settings();
+    if (damage_) {
+      settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
+      settings.max_resolves = scene_.damage->max_resolves;
+    }
+    summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
   } else {
     summary_.newton.converged = true;
     summary_.newton.unknowns = dofs.free_count();
   }
   summary_.solve_seconds = seconds_since(t0);
+  if (damage_) {
+    summary_.bonds_broken_by_damage = broken_bond_count(bonds_) - broken_before;
+    summary_.broken_bonds = static_cast<int>(broken_bond_count(bonds_));
+  }
   if (!summary_.newton.linear_choice.empty())
     log_(fmt::format("  linear solver: {} ({})", summary_.newton.linear_solver, summary_.newton.linear_choice));
   if (!summary_.newton.converged) throw std::runtime_error(summary_.newton.message);
@@ -237,18 +243,29 @@ RunSummary Simulation::run(bool write) {
   return summary_;
 }
 
+// Critical-stretch breaking at the converged solution of a load step (the rule of the
+// dynamic runs, CriticalStretchDamage). Broken bonds change the moments, so the next
+// round's residual and tangent see the new bond set; the pattern keeps the broken
+// bonds' slots (as zeros), so no symbolic re-analysis is needed.
+long long Simulation::after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs) {
+  const int broken = damage_->break_bonds(u.data());
+  if (broken == 0) return 0;
+  assembler_->update_moments();
+  if (short_damage_ && short_damage_->break_bonds(u.data()) > 0) approximation_->update_moments();
+  log_(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
+                   scene_.solver.load_steps, broken, broken_bond_count(bonds_)));
+  // A piece cut loose by the new crack faces would make K singular: say which.
+  check_held(particles_, bonds_, dofs);
+  return broken;
+}
+
 void Simulation::write_outputs() {
   const auto t1 = std::chrono::steady_clock::now();
   const int n = particles_.size(), d = particles_.dim;
   std::vector<OutputField> fields;
-  std::vector<double> material(particles_.material.begin(), particles_.material.end()), damage(n, 0.0);
-  for (int p = 0; p < n; ++p) {
-    int broken = 0;
-    for (int e = bonds_.offsets[p]; e < bonds_.offsets[p + 1]; ++e) broken += bonds_.alpha[e] == 0.0;
-    damage[p] = bonds_.family_size(p) ? static_cast<double>(broken) / bonds_.family_size(p) : 0.0;
-  }
+  std::vector<double> material(particles_.material.begin(), particles_.material.end());
   fields.push_back({"material", 1, material});
-  fields.push_back({"damage", 1, damage});
+  fields.push_back({"damage", 1, particle_damage(bonds_)});
   std::vector<double> force(u_.size());
   assembler_->internal_forces(u_.data(), force.data());
   fields.push_back({"internal_force", d, force});

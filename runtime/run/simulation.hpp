@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "damage/critical_stretch.hpp"
 #include "input/scene.hpp"
 #include "run/dynamics_report.hpp"
 #include "run/effects.hpp"
@@ -36,6 +37,7 @@ struct RunSummary {
   std::vector<std::string> effects;
   std::string solver_path;  // the linear-solver path and why (run/solver_path.hpp)
   NewtonResult newton;                    // static runs
+  std::optional<long long> bonds_broken_by_damage;  // static runs with `damage`: broken between load steps
   std::optional<DynamicsReport> dynamics;  // dynamic and relaxation runs only
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
@@ -66,6 +68,7 @@ class Simulation {
   const std::vector<double>& smoothed_displacement() const { return u_smooth_; }
   const Scene& scene() const { return scene_; }
   const FamilyAssembler& assembler() const { return *assembler_; }
+  const CriticalStretchDamage* damage() const { return damage_.get(); }
 
  private:
   NewtonSettings newton_settings() const;
@@ -83,7 +86,10 @@ class Simulation {
   Bonds short_bonds_;
   std::unique_ptr<FamilyAssembler> approximation_;
   std::vector<std::unique_ptr<Effect>> effects_;
-  std::unique_ptr<CriticalStretchDamage> damage_;  // only when the scene has a damage section
+  // Scenes with `damage`: bonds break between load steps (after_load_step), in the real
+  // bonds and in the preconditioner's short ones alike.
+  std::unique_ptr<CriticalStretchDamage> damage_, short_damage_;
+  long long after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs);
   std::vector<double> u_, u_smooth_;
   RunSummary summary_;
 };

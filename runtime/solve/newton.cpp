@@ -177,105 +177,117 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
     return x;
   };
 
+  // Newton iterations of one load step (round > 0: solved again after after_step
+  // changed the system); false with res.message set when they fail.
+  auto iterate = [&](int step, double load, int round) -> bool {
+    sys.residual(u, load, r);
+    double norm = dofs.restrict_free(r).norm();
+    reference = std::max(reference, norm);
+    NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
+    bool done = false;
+    for (int it = 0;; ++it) {
+      if (interrupt_signal() != 0)
+        throw_if_interrupted(fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
+      rec.iteration = it;
+      rec.residual = norm;
+      res.history.push_back(rec);
+      say(fmt::format(
+          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
+          s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it, norm,
+          reference > 0 ? norm / reference : 0.0,
+          it == 0 ? std::string()
+                  : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
+                                rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
+                                                      : std::string())));
+      if (!std::isfinite(norm)) {
+        res.message =
+            fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
+        return false;
+      }
+      if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance ||
+          (it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance)) {
+        done = true;
+        break;
+      }
+      if (stagnated(res.history, it)) {
+        res.stagnated = done = true;
+        say(fmt::format(
+            "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
+            "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning "
+            "allows",
+            norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
+            s_.relative_tolerance));
+        break;
+      }
+      if (it == s_.max_iterations) break;
+      rec = NewtonRecord{step, it + 1, round, load, 0.0, 0.0, 0.0, 0, 0.0};
+      const Eigen::VectorXd rf = dofs.restrict_free(r);
+      Eigen::VectorXd dx;
+      try {
+        dx = newton_direction(rf, load, rec);
+        previous_norm = norm;
+      } catch (const std::runtime_error& e) {
+        res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load,
+                                  it + 1, e.what());
+        return false;
+      }
+      du.setZero();
+      dofs.expand_free(dx, du);
+      // A full step below the increment tolerance has converged to rounding: the residual
+      // sits on its floor there, so it is taken without a line search (which could only
+      // waste halvings). Otherwise backtrack: halve the step until |r_f| decreases
+      // sufficiently; if none does, keep the smallest step (the next tangent may do
+      // better) and say so.
+      const bool negligible = du.norm() <= s_.increment_tolerance * u.norm();
+      double alpha = 1.0, trial_norm = 0.0;
+      for (int b = 0;; ++b) {
+        trial = u + alpha * du;
+        sys.residual(trial, load, r_trial);
+        trial_norm = dofs.restrict_free(r_trial).norm();
+        if (negligible ||
+            (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm))
+          break;
+        if (b == s_.max_backtracks) {
+          say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
+          break;
+        }
+        alpha *= 0.5;
+      }
+      const double unorm = trial.norm();
+      rec.step_length = alpha;
+      rec.increment = unorm > 0 ? alpha * du.norm() / unorm : 0.0;
+      u = trial;
+      r = r_trial;
+      norm = trial_norm;
+    }
+    if (!done) {
+      res.message = fmt::format(
+          "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, {:.2e} of the "
+          "reference {:.3e} (tolerance {:.1e}); try more load steps or more iterations",
+          load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0,
+          reference, s_.relative_tolerance);
+      say(res.message);
+      return false;
+    }
+    return true;
+  };
+
   for (int step = 1; step <= s_.load_steps; ++step) {
     const double load = static_cast<double>(step) / s_.load_steps;
     dofs.apply_prescribed(u, load);
-    // A system that changes after a converged step (bonds breaking) is re-solved at the
-    // same load until it stops changing.
     for (int round = 0;; ++round) {
-      sys.residual(u, load, r);
-      double norm = dofs.restrict_free(r).norm();
-      reference = std::max(reference, norm);
-      NewtonRecord rec{step, 0, load, norm, 0.0, 0.0, 0, 0.0};
-      bool done = false;
-      for (int it = 0;; ++it) {
-        if (interrupt_signal() != 0)
-          throw_if_interrupted(
-              fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
-        rec.iteration = it;
-        rec.residual = norm;
-        res.history.push_back(rec);
-        say(fmt::format("  load {:.3g} (step {}/{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
-                        s_.load_steps, it, norm, reference > 0 ? norm / reference : 0.0,
-                        it == 0 ? std::string()
-                                : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
-                                              rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
-                                                                    : std::string())));
-        if (!std::isfinite(norm)) {
-          res.message = fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
-          return res;
-        }
-        if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance ||
-            (it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance)) {
-          done = true;
-          break;
-        }
-        if (stagnated(res.history, it)) {
-          res.stagnated = done = true;
-          say(fmt::format("  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
-                          "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning allows",
-                          norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
-                          s_.relative_tolerance));
-          break;
-        }
-        if (it == s_.max_iterations) break;
-        rec = NewtonRecord{step, it + 1, load, 0.0, 0.0, 0.0, 0, 0.0};
-        const Eigen::VectorXd rf = dofs.restrict_free(r);
-        Eigen::VectorXd dx;
-        try {
-          dx = newton_direction(rf, load, rec);
-          previous_norm = norm;
-        } catch (const std::runtime_error& e) {
-          res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load, it + 1, e.what());
-          return res;
-        }
-        du.setZero();
-        dofs.expand_free(dx, du);
-        // A full step below the increment tolerance has converged to rounding: the residual
-        // sits on its floor there, so it is taken without a line search (which could only
-        // waste halvings). Otherwise backtrack: halve the step until |r_f| decreases
-        // sufficiently; if none does, keep the smallest step (the next tangent may do
-        // better) and say so.
-        const bool negligible = du.norm() <= s_.increment_tolerance * u.norm();
-        double alpha = 1.0, trial_norm = 0.0;
-        for (int b = 0;; ++b) {
-          trial = u + alpha * du;
-          sys.residual(trial, load, r_trial);
-          trial_norm = dofs.restrict_free(r_trial).norm();
-          if (negligible || (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm)) break;
-          if (b == s_.max_backtracks) {
-            say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
-            break;
-          }
-          alpha *= 0.5;
-        }
-        const double unorm = trial.norm();
-        rec.step_length = alpha;
-        rec.increment = unorm > 0 ? alpha * du.norm() / unorm : 0.0;
-        u = trial;
-        r = r_trial;
-        norm = trial_norm;
-      }
-      if (!done) {
-        res.message = fmt::format(
-            "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, {:.2e} of the "
-            "reference {:.3e} (tolerance {:.1e}); try more load steps or more iterations",
-            load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0, reference,
-            s_.relative_tolerance);
-        say(res.message);
-        return res;
-      }
-      const int changes = sys.after_converged_step(u, load);
+      if (!iterate(step, load, round)) return res;
+      if (!s_.after_step) break;
+      const long long changes = s_.after_step(step, load, u);
       if (changes == 0) break;
-      res.changes += changes;
-      say(fmt::format("  load {:.3g} (step {}/{}): {} after the converged solve; solving the step again", load, step,
-                      s_.load_steps, sys.describe_changes(changes)));
-      if (round + 1 == s_.max_rounds) {
-        res.message = fmt::format("Newton: the system still changed after {} solves at load {:.3g} (step {}/{}); "
-                                  "try more load steps", s_.max_rounds, load, step, s_.load_steps);
+      if (round == s_.max_resolves) {
+        res.message = fmt::format(
+            "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more load steps",
+            changes, s_.max_resolves, load, step, s_.load_steps);
         say(res.message);
         return res;
       }
+      ++res.resolves;
     }
   }
   res.converged = true;

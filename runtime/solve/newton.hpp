@@ -32,11 +32,6 @@ class NonlinearSystem {
   virtual void diagonal(const Eigen::VectorXd& u, double load, Eigen::VectorXd& d);
   // A sparser matrix close to K(u) (e.g. the same law on a shorter horizon), whose
   // factorisation preconditions the matrix-free path; fixed pattern between calls.
-  // Called after each converged load step: a system with an evolving state (bonds
-  // breaking at a critical stretch) updates it from u and returns how many changes it
-  // made; Newton then solves the same load step again, on the new state.
-  virtual int after_converged_step(const Eigen::VectorXd& /*u*/, double /*load*/) { return 0; }
-  virtual std::string describe_changes(int changes) const { return std::to_string(changes) + " state changes"; }
   virtual bool has_approximate_tangent() const { return false; }
   virtual void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P);
 };
@@ -44,7 +39,6 @@ class NonlinearSystem {
 struct NewtonSettings {
   int load_steps = 1;
   int max_iterations = 25;           // per load step
-  int max_rounds = 100;              // solves of one load step while the system keeps changing
   double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
   double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
   // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
@@ -74,10 +68,17 @@ struct NewtonSettings {
   double max_forcing = 1e-2;
   int krylov_max_iterations = 5000;
   int gmres_restart = 60;
+  // Called after each converged load step with its solution; returns how many changes
+  // it made to the system (e.g. bonds broken). Non-zero: the same load step is solved
+  // again from that solution on the changed system, until the hook changes nothing or
+  // max_resolves re-solves have not sufficed (then the solve fails, saying so).
+  std::function<long long(int step, double load, const Eigen::VectorXd& u)> after_step;
+  int max_resolves = 50;
 };
 
 struct NewtonRecord {
   int step = 0, iteration = 0;
+  int round = 0;                  // re-solves of this load step before this one (after_step)
   double load = 0, residual = 0;  // |r_f| at this iterate
   double step_length = 0;         // line-search factor of the step that led here (0 at iteration 0)
   double increment = 0;           // |du| / |u| of that step
@@ -88,13 +89,13 @@ struct NewtonRecord {
 struct NewtonResult {
   bool converged = false;
   bool stagnated = false;  // converged by the stagnation rule (the residual floor), not by rtol
-  long long changes = 0;   // state changes after converged steps (NonlinearSystem::after_converged_step)
   std::vector<NewtonRecord> history;
   std::string linear_solver;  // the method that solved the last system
   std::string linear_choice;  // why (and any fallback)
   std::string message;        // the failure, when not converged
   std::int64_t unknowns = 0;  // free dofs
   std::int64_t nonzeros = 0;  // of the reduced tangent (0 when matrix-free)
+  int resolves = 0;           // load steps solved again after after_step changed the system
   double assembly_seconds = 0;  // forming tangents (or diagonals, matrix-free)
   double linear_seconds = 0;    // factorisations and linear solves
   int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }

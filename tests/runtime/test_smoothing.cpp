@@ -47,7 +47,9 @@ TEST(Smoothing, ConstantsAreReproducedEverywhere) {
   const pd::Particles p = pd::discretize(scene);
   for (const char* w : {"const", "linear", "cubic", "quarticA"}) {
     pd::Bonds b = pd::find_bonds(p, 0.3, influence(w));
-    pd::cut_bonds({pd::Crack{{pd::Point{0.5, 0.75, 0}, pd::Point{1.5, 0.75, 0}}, 0.0}}, p, b);
+    pd::Crack crack;
+    crack.points = {pd::Point{0.5, 0.75, 0}, pd::Point{1.5, 0.75, 0}};
+    pd::cut_bonds({crack}, p, b);
     std::vector<double> u(static_cast<std::size_t>(p.size()) * 2);
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = i % 2 ? -2.5 : 7.0;
     const auto s = pd::smooth_field(p, b, influence(w), u, 2);
@@ -89,7 +91,9 @@ TEST(Smoothing, BrokenBondsDoNotAverageAcrossACrack) {
   p.volume = {1, 1};
   p.material = {0, 0};
   pd::Bonds b = pd::find_bonds(p, 1.5, influence("const"));
-  pd::cut_bonds({pd::Crack{{pd::Point{0.5, -1, 0}, pd::Point{0.5, 1, 0}}, 0.0}}, p, b);
+  pd::Crack crack;
+  crack.points = {pd::Point{0.5, -1, 0}, pd::Point{0.5, 1, 0}};
+  pd::cut_bonds({crack}, p, b);
   const auto s = pd::smooth_field(p, b, influence("const"), {1, 0, 3, 0}, 2);
   EXPECT_EQ(s[0], 1.0);
   EXPECT_EQ(s[2], 3.0);
