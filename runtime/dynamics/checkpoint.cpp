@@ -47,6 +47,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   std::size_t pos = 0;
   auto take = [&](void* out, std::size_t n) {
     if (pos + n > s.size()) throw std::runtime_error(path + ": the checkpoint is truncated");
+    if (n == 0) return;  // an empty array's data() may be null, which memcpy must not get (UBSan)
     std::memcpy(out, s.data() + pos, n);
     pos += n;
   };
