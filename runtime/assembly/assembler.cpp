@@ -72,18 +72,22 @@ const SparsityPattern& FamilyAssembler::pattern() const {
 
 SparseMatrix FamilyAssembler::make_matrix() const { return pattern().matrix(); }
 
+int FamilyAssembler::thread_count() const {
+  // An explicit count is obeyed. Otherwise: one thread on small bodies. Each colour ends
+  // with a barrier; on a small body the colours hold too little work to pay for it, and
+  // when another process holds the second core every barrier waits for a descheduled
+  // thread: the 40^2 crack's Jacobi-CG solve (148 products) took 11.4 s on 2 threads
+  // beside a build and 0.25 s on 1. Below this many bonds per call, one thread.
+  constexpr int kMinBondsForThreads = 200000;
+  if (options_.threads > 0) return options_.threads;
+  return inputs_.bonds->bond_count() >= kMinBondsForThreads ? omp_get_max_threads() : 1;
+}
+
 template <class Body>
 void FamilyAssembler::for_each_family(const char* stage, Body&& body) const {
   int bad = -1;
   std::string bad_stage;
-  const int threads = options_.threads > 0 ? options_.threads : omp_get_max_threads();
-  // Each colour ends with a barrier. On a small body the colours hold too little work to
-  // pay for it, and when another process holds the second core every barrier waits for a
-  // descheduled thread: the 40^2 crack's Jacobi-CG solve (148 products) took 11.4 s on 2
-  // threads beside a build and 0.25 s on 1. Below this many bonds per call, one thread.
-  constexpr int kMinBondsForThreads = 200000;
-  const bool parallel = options_.threads > 1 || inputs_.bonds->bond_count() >= kMinBondsForThreads;
-#pragma omp parallel num_threads(threads) if (parallel)
+#pragma omp parallel num_threads(thread_count())
   {
     ThreadScratch s(inputs_, law_.n_states);
     for (int c = 0; c < colouring_.colours(); ++c) {
@@ -219,14 +223,7 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
   std::vector<double> out(static_cast<std::size_t>(n) * no, 0.0);
   if (no == 0 || variant_.outputs == nullptr) return out;
   // Each particle writes only its own slice: no colouring needed.
-  const int threads = options_.threads > 0 ? options_.threads : omp_get_max_threads();
-  // Each colour ends with a barrier. On a small body the colours hold too little work to
-  // pay for it, and when another process holds the second core every barrier waits for a
-  // descheduled thread: the 40^2 crack's Jacobi-CG solve (148 products) took 11.4 s on 2
-  // threads beside a build and 0.25 s on 1. Below this many bonds per call, one thread.
-  constexpr int kMinBondsForThreads = 200000;
-  const bool parallel = options_.threads > 1 || inputs_.bonds->bond_count() >= kMinBondsForThreads;
-#pragma omp parallel num_threads(threads) if (parallel)
+#pragma omp parallel num_threads(thread_count())
   {
     FamilyGather g(inputs_);
 #pragma omp for schedule(static)
@@ -243,14 +240,7 @@ double FamilyAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);
-  const int threads = options_.threads > 0 ? options_.threads : omp_get_max_threads();
-  // Each colour ends with a barrier. On a small body the colours hold too little work to
-  // pay for it, and when another process holds the second core every barrier waits for a
-  // descheduled thread: the 40^2 crack's Jacobi-CG solve (148 products) took 11.4 s on 2
-  // threads beside a build and 0.25 s on 1. Below this many bonds per call, one thread.
-  constexpr int kMinBondsForThreads = 200000;
-  const bool parallel = options_.threads > 1 || inputs_.bonds->bond_count() >= kMinBondsForThreads;
-#pragma omp parallel num_threads(threads) if (parallel)
+#pragma omp parallel num_threads(thread_count())
   {
     FamilyGather g(inputs_);
 #pragma omp for schedule(static)

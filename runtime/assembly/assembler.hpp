@@ -79,6 +79,7 @@ class FamilyAssembler {
  private:
   template <class Body>
   void for_each_family(const char* stage, Body&& body) const;
+  int thread_count() const;  // OpenMP threads for one pass over the families
 
   const abi::LawDescriptor& law_;
   const abi::KernelVariant& variant_;

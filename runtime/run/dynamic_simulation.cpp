@@ -11,6 +11,7 @@
 
 #include "discretize/discretization.hpp"
 #include "discretize/family_quality.hpp"
+#include "run/body_setup.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
 #include "dynamics/energies.hpp"
@@ -46,24 +47,12 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   if (!scene_.dynamics) throw std::invalid_argument("DynamicSimulation: the scene has no dynamics section");
   const DynamicsSpec& dyn = *scene_.dynamics;
   const auto t0 = std::chrono::steady_clock::now();
-  const abi::LawDescriptor* law = abi::find_law(scene_.law);
-  const abi::InfluenceDescriptor* influence = abi::find_influence(scene_.influence);
-  if (!law || !influence) throw std::invalid_argument("unknown law or influence function");
-  particles_ = discretize(scene_);
-  bonds_ = find_bonds(particles_, scene_.delta(), influence->weight);
-  summary_.scene = scene_.file;
-  summary_.law = law->name;
-  summary_.influence = influence->name;
-  summary_.particles = particles_.size();
-  summary_.bonds = bonds_.bond_count() / 2;
-  summary_.broken_bonds = cut_bonds(scene_.cracks, particles_, bonds_) / 2;
-  for (int p = 0; p < particles_.size(); ++p)
-    if (bonds_.family_size(p) == 0)
-      throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", p,
-                                           particles_.x[p * particles_.dim], particles_.x[p * particles_.dim + 1]));
-  check_family_quality(particles_, bonds_, influence->weight, influence->name, scene_.h);
-  std::vector<std::vector<double>> params;
-  for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
+  BodySetup body = set_up_body(scene_, summary_);
+  const abi::LawDescriptor* law = body.law;
+  const abi::InfluenceDescriptor* influence = body.influence;
+  particles_ = std::move(body.particles);
+  bonds_ = std::move(body.bonds);
+  const std::vector<std::vector<double>> params = std::move(body.params);
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken: a
   // damage scene needs the damaged variant from the start.
   AssemblerOptions options;

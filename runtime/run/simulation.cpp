@@ -22,6 +22,7 @@
 #include "output/vtu_writer.hpp"
 #include "damage/critical_stretch.hpp"
 #include "post/smoothing.hpp"
+#include "run/body_setup.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/solver_path.hpp"
@@ -38,24 +39,13 @@ Simulation::~Simulation() = default;
 
 Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(std::move(log)) {
   const auto t0 = std::chrono::steady_clock::now();
-  const abi::LawDescriptor* law = abi::find_law(scene_.law);
-  const abi::InfluenceDescriptor* influence = abi::find_influence(scene_.influence);
-  if (!law || !influence) throw std::invalid_argument("unknown law or influence function");
-  particles_ = discretize(scene_);
-  bonds_ = find_bonds(particles_, scene_.delta(), influence->weight);
-  summary_.scene = scene_.file;
-  summary_.law = law->name;
-  summary_.influence = influence->name;
-  summary_.particles = particles_.size();
-  summary_.bonds = bonds_.bond_count() / 2;
-  summary_.broken_bonds = cut_bonds(scene_.cracks, particles_, bonds_) / 2;
-  for (int p = 0; p < particles_.size(); ++p)
-    if (bonds_.family_size(p) == 0)
-      throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", p,
-                                           particles_.x[p * particles_.dim], particles_.x[p * particles_.dim + 1]));
-  const FamilyQualityReport quality = check_family_quality(particles_, bonds_, influence->weight, influence->name, scene_.h);
-  std::vector<std::vector<double>> params;
-  for (const MaterialSpec& m : scene_.materials) params.push_back(law_parameters(*law, m.elastic, m.plane, m.parameters));
+  BodySetup body = set_up_body(scene_, summary_);
+  const abi::LawDescriptor* law = body.law;
+  const abi::InfluenceDescriptor* influence = body.influence;
+  particles_ = std::move(body.particles);
+  bonds_ = std::move(body.bonds);
+  const FamilyQualityReport& quality = body.quality;
+  std::vector<std::vector<double>> params = std::move(body.params);
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
   const SolverPath path = choose_solver_path(scene_.solver, particles_.size(),
