@@ -15,14 +15,17 @@ F, SILLING, OTERKUS = "correspondence_plane_strain", "silling_plane_strain", "ot
 
 
 def read_orders(out):
+    """Series of OUT/orders.md keyed (problem, law, influence, ratio) when unsmoothed and
+    (problem, law, influence, ratio, smoothing influence) when smoothed (eq. 49)."""
     rows = {}
     for line in open(os.path.join(out, "orders.md")):
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) != 10 or cells[0] in ("problem", "---"):
+        if len(cells) != 11 or cells[0] in ("problem", "---"):
             continue
-        problem, law, inf, ratio, points, order, fine, min_error, paper, paper_min = cells
-        rows[(problem, law, inf, float(ratio))] = {"order": order.strip("*"), "fine": fine, "min_error": min_error,
-                                                   "paper": paper, "paper_min": paper_min}
+        problem, law, inf, ratio, smoothed, points, order, fine, min_error, paper, paper_min = cells
+        key = (problem, law, inf, float(ratio)) + ((smoothed,) if smoothed != "no" else ())
+        rows[key] = {"order": order.strip("*"), "fine": fine, "min_error": min_error, "paper": paper,
+                     "paper_min": paper_min}
     return rows
 
 
@@ -83,20 +86,31 @@ def converging_frontier(out):
 def crack(out):
     rows = read_orders(out)
     pts = list(csv.DictReader(open(os.path.join(out, "points.csv"))))
-    paper7 = {1.5: 0.2105, 2.0: 0.3022, 2.5: 0.5409, 3.0: 1.0375, 3.5: 2.6741}
-    print("**Table 7** — F, cubic influence, NP = 200, unsmoothed: field error eq. (48), ours (paper)\n")
-    print("| δ/h | error |\n|---|---|")
+    # Paper 000 Table 7: unsmoothed, then smoothed with const, linear, cubic.
+    paper7 = {1.5: (0.2105, 0.0836, 0.0708, 0.1810), 2.0: (0.3022, 0.0868, 0.0429, 0.1697),
+              2.5: (0.5409, 0.1080, 0.0670, 0.1628), 3.0: (1.0375, 0.1604, 0.1004, 0.1965),
+              3.5: (2.6741, 0.2684, 0.1452, 0.3302)}
+    columns = ("error", "error_smoothed_const", "error_smoothed_linear", "error_smoothed_cubic")
+    print("**Table 7** — F, cubic influence, NP = 200: field error eq. (48), unsmoothed and smoothed (eq. 49) "
+          "with three influence functions, ours (paper)\n")
+    print("| δ/h | unsmoothed | const | linear | cubic |\n|---|---|---|---|---|")
     for ratio, paper in paper7.items():
         p = [r for r in pts if r["law"] == F and float(r["ratio"]) == ratio and r["count"] == "200"]
-        value = ("%.4g" % float(p[0]["error"]) if p[0]["converged"] == "1" else "failed") if p else "not run"
-        print("| %.1f | %s (%.4f) |" % (ratio, value, paper))
+        values = []
+        for column, value in zip(columns, paper):
+            ours = "not run" if not p else "failed" if p[0]["converged"] != "1" else (
+                "%.4g" % float(p[0][column]) if p[0].get(column) else "not run")
+            values.append("%s (%.4f)" % (ours, value))
+        print("| %.1f | %s |" % (ratio, " | ".join(values)))
     print("\n**Table 8** — order of the field error (all resolutions / the 3 finest) and the smallest error, "
           "ours (paper)\n")
     print("| method | order | order, 3 finest | min. error |\n|---|---|---|---|")
-    for label, law, ratio in (("Silling, δ/h 3.5", SILLING, 3.5), ("Oterkus, δ/h 3.5", OTERKUS, 3.5),
-                              ("F unsmoothed, δ/h 1.5", F, 1.5), ("Silling, δ/h 1.5", SILLING, 1.5),
-                              ("Oterkus, δ/h 1.5", OTERKUS, 1.5)):
-        r = rows.get(("crack", law, "cubic", ratio))
+    for label, key in (("Silling, δ/h 3.5", (SILLING, 3.5)), ("Oterkus, δ/h 3.5", (OTERKUS, 3.5)),
+                       ("F unsmoothed, δ/h 1.5", (F, 1.5)), ("F smoothed (linear), δ/h 1.5", (F, 1.5, "linear")),
+                       ("F smoothed (const), δ/h 1.5", (F, 1.5, "const")),
+                       ("F smoothed (cubic), δ/h 1.5", (F, 1.5, "cubic")),
+                       ("Silling, δ/h 1.5", (SILLING, 1.5)), ("Oterkus, δ/h 1.5", (OTERKUS, 1.5))):
+        r = rows.get(("crack", key[0], "cubic") + key[1:])
         if not r:
             print("| %s | not run | | |" % label)
             continue

@@ -167,6 +167,11 @@ double Simulation::field_error(const FieldSpec& reference, const std::vector<dou
   return den > 0 ? num / den : num;
 }
 
+double Simulation::reference_error(const std::vector<double>& u) const {
+  if (!scene_.reference) throw std::logic_error("reference_error: the scene has no reference field");
+  return field_error(*scene_.reference, u);
+}
+
 void Simulation::smooth() {
   const abi::InfluenceDescriptor* w = abi::find_influence(scene_.output.smoothing_influence);
   u_smooth_ = smooth_field(particles_, bonds_, w->weight, u_, particles_.dim);

@@ -69,6 +69,9 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const FamilyAssembler& assembler() const { return *assembler_; }
   const CriticalStretchDamage* damage() const { return damage_.get(); }
+  // Paper 000 eq. (48) of a displacement field (one value per particle and component)
+  // against the scene's `reference`; throws std::logic_error when the scene has none.
+  double reference_error(const std::vector<double>& u) const;
 
  private:
   NewtonSettings newton_settings() const;

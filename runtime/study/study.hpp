@@ -19,6 +19,9 @@ struct Sweep {
   std::vector<std::string> laws, influences;
   std::vector<double> ratios;
   std::vector<int> counts;  // particles along x
+  // Influence functions to smooth each solution with (paper 000 eq. 49) before its field
+  // error is measured again; scenes with a reference field only. Empty: unsmoothed only.
+  std::vector<std::string> smoothing;
 };
 
 // What the paper reports for one series (problem|law|influence|ratio), or for one point
@@ -46,9 +49,10 @@ struct StudySpec {
 };
 
 StudySpec read_study(const std::string& path);
-// The key of StudySpec::paper: a series (count 0) or one point.
+// The key of StudySpec::paper: a series (count 0) or one point; `smoothing` names the
+// influence function of a smoothed error (empty: the unsmoothed one).
 std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
-                      int count = 0);
+                      int count = 0, const std::string& smoothing = "");
 
 struct StudyPoint {
   std::string problem, law, influence;
@@ -63,12 +67,20 @@ struct StudyPoint {
   int newton_iterations = 0, krylov_iterations = 0;
   std::string solver;         // the linear method that solved the last Newton system
   double peak_rss_mb = -1;    // peak resident memory during the point (-1: not measured)
+  std::vector<std::string> smoothing;           // requested: the union over the sweeps holding the point
+  std::map<std::string, double> smoothed_error;  // influence -> field error (eq. 48) of the smoothed solution
   std::string key() const;
+  // The error of the solution smoothed with `smoothing`, or the unsmoothed one (empty);
+  // NaN when the point failed or that smoothing was not recorded.
+  double error_of(const std::string& smoothing) const;
 };
 
+// One series is one problem x law x influence x ratio, unsmoothed or smoothed with one
+// influence function (`smoothing`).
 struct SeriesOrder {
   std::string problem, law, influence;
   double ratio = 0;
+  std::string smoothing;  // empty: the unsmoothed error
   int points = 0;
   double order = 0;       // slope of log e against log h (NaN with fewer than 2 usable points)
   double fine_order = 0;  // the same on the finest StudySpec::fine_points points (NaN if unset)

@@ -60,35 +60,59 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
     if (!series.count(key)) keys.push_back(key);
     series[key].push_back(&p);
   }
+  // Each series once unsmoothed, then once per smoothing its points recorded.
   std::vector<SeriesOrder> orders;
+  std::vector<std::string> all_smoothings;
   for (const auto& key : keys) {
     auto pts = series[key];
     std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->h > b->h; });
-    std::vector<double> h, e;
-    for (const auto* p : pts) h.push_back(p->h), e.push_back(p->converged ? p->error : NAN);
-    SeriesOrder o;
-    o.problem = pts[0]->problem, o.law = pts[0]->law, o.influence = pts[0]->influence, o.ratio = pts[0]->ratio;
-    o.order = fit_order(h, e, &o.points);
-    o.fine_order = NAN;
-    if (spec.fine_points >= 2 && static_cast<int>(h.size()) > spec.fine_points) {
-      const std::size_t from = h.size() - static_cast<std::size_t>(spec.fine_points);
-      o.fine_order = fit_order({h.begin() + from, h.end()}, {e.begin() + from, e.end()});
+    std::vector<std::string> smoothings{""};
+    for (const auto* p : pts)
+      for (const auto& name : p->smoothing) {
+        if (std::find(smoothings.begin(), smoothings.end(), name) == smoothings.end()) smoothings.push_back(name);
+        if (std::find(all_smoothings.begin(), all_smoothings.end(), name) == all_smoothings.end())
+          all_smoothings.push_back(name);
+      }
+    for (const auto& smoothing : smoothings) {
+      std::vector<double> h, e;
+      for (const auto* p : pts) {
+        const double v = p->error_of(smoothing);
+        if (smoothing.empty() || std::isfinite(v)) h.push_back(p->h), e.push_back(v);
+      }
+      SeriesOrder o;
+      o.problem = pts[0]->problem, o.law = pts[0]->law, o.influence = pts[0]->influence, o.ratio = pts[0]->ratio;
+      o.smoothing = smoothing;
+      o.order = fit_order(h, e, &o.points);
+      o.fine_order = NAN;
+      if (spec.fine_points >= 2 && static_cast<int>(h.size()) > spec.fine_points) {
+        const std::size_t from = h.size() - static_cast<std::size_t>(spec.fine_points);
+        o.fine_order = fit_order({h.begin() + from, h.end()}, {e.begin() + from, e.end()});
+      }
+      o.min_error = NAN;
+      for (double v : e)
+        if (v > 0 && !(v >= o.min_error)) o.min_error = v;
+      if (auto it = spec.paper.find(paper_key(o.problem, o.law, o.influence, o.ratio, 0, smoothing)); it != spec.paper.end())
+        o.paper = it->second;
+      orders.push_back(o);
     }
-    o.min_error = NAN;
-    for (double v : e)
-      if (v > 0 && !(v >= o.min_error)) o.min_error = v;
-    if (auto it = spec.paper.find(key); it != spec.paper.end()) o.paper = it->second;
-    orders.push_back(o);
   }
   const auto best = frontier(points);
   std::ostringstream csv;
   csv << "problem,law,influence,ratio,count,h,converged,error,particles,nonzeros,setup_s,assembly_s,solve_s,total_s,"
-         "newton_iterations,krylov_iterations,solver,peak_rss_mb,non_dominated,failure\n";
-  for (const auto& p : points)
-    csv << fmt::format("{},{},{},{},{},{:.9g},{},{:.9g},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},\"{}\",{:.1f},{},\"{}\"\n",
+         "newton_iterations,krylov_iterations,solver,peak_rss_mb,non_dominated,failure";
+  for (const auto& name : all_smoothings) csv << ",error_smoothed_" << name;  // empty where not recorded
+  csv << "\n";
+  for (const auto& p : points) {
+    csv << fmt::format("{},{},{},{},{},{:.9g},{},{:.9g},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},\"{}\",{:.1f},{},\"{}\"",
                        p.problem, p.law, p.influence, p.ratio, p.count, p.h, p.converged ? 1 : 0, p.error, p.particles,
                        p.nonzeros, p.setup_seconds, p.assembly_seconds, p.solve_seconds, p.total_seconds,
                        p.newton_iterations, p.krylov_iterations, p.solver, p.peak_rss_mb, best.count(&p) ? 1 : 0, p.failure);
+    for (const auto& name : all_smoothings) {
+      const double v = p.error_of(name);
+      csv << (std::isfinite(v) ? fmt::format(",{:.9g}", v) : std::string(","));
+    }
+    csv << "\n";
+  }
   write_file_atomically((fs::path(out) / "points.csv").string(), csv.str());
 
   std::ostringstream md;
@@ -96,26 +120,31 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
      << "`" << (quick ? " (quick sweep)" : "") << "; `fine` fits the finest " << spec.fine_points
      << " resolutions only. Paper: paper 000's tables where it reports the series; **bold** marks an order more than "
         "0.1 from the paper's.\n\n"
-        "| problem | law | influence | delta/h | points | order | fine | min error | paper order | paper min error |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
+        "| problem | law | influence | delta/h | smoothed | points | order | fine | min error | paper order | paper min error |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& o : orders) {
     const bool off = o.paper.order && std::isfinite(o.order) && std::fabs(o.order - *o.paper.order) > 0.1;
-    md << fmt::format("| {} | {} | {} | {} | {} | {}{:.3f}{} | {} | {} | {} | {} |\n", o.problem, o.law, o.influence,
-                      o.ratio, o.points, off ? "**" : "", o.order, off ? "**" : "",
+    md << fmt::format("| {} | {} | {} | {} | {} | {} | {}{:.3f}{} | {} | {} | {} | {} |\n", o.problem, o.law, o.influence,
+                      o.ratio, o.smoothing.empty() ? "no" : o.smoothing, o.points, off ? "**" : "", o.order, off ? "**" : "",
                       std::isfinite(o.fine_order) ? fmt::format("{:.3f}", o.fine_order) : "",
                       std::isfinite(o.min_error) ? fmt::format("{:.4g}", o.min_error) : "", number(o.paper.order, "{:.4f}"),
                       number(o.paper.min_error, "{:.3f}"));
   }
   // Single points the paper reports (e.g. its Table 7) next to ours.
   std::ostringstream single;
-  for (const auto& p : points)
-    if (auto it = spec.paper.find(paper_key(p.problem, p.law, p.influence, p.ratio, p.count));
-        it != spec.paper.end() && it->second.error)
-      single << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4f} |\n", p.problem, p.law, p.influence, p.ratio,
-                            p.count, p.error, *it->second.error);
+  for (const auto& p : points) {
+    std::vector<std::string> smoothings{""};
+    smoothings.insert(smoothings.end(), p.smoothing.begin(), p.smoothing.end());
+    for (const auto& smoothing : smoothings)
+      if (auto it = spec.paper.find(paper_key(p.problem, p.law, p.influence, p.ratio, p.count, smoothing));
+          it != spec.paper.end() && it->second.error)
+        single << fmt::format("| {} | {} | {} | {} | {} | {} | {:.4g} | {:.4f} |\n", p.problem, p.law, p.influence,
+                              p.ratio, p.count, smoothing.empty() ? "no" : smoothing, p.error_of(smoothing),
+                              *it->second.error);
+  }
   if (!single.str().empty())
-    md << "\n## Errors of single points\n\n| problem | law | influence | delta/h | n | error | paper |\n"
-          "|---|---|---|---|---|---|---|\n"
+    md << "\n## Errors of single points\n\n| problem | law | influence | delta/h | n | smoothed | error | paper |\n"
+          "|---|---|---|---|---|---|---|---|\n"
        << single.str();
   // What the finest point of each series cost, and which solver reached it.
   md << "\n## Cost of the finest point of each series\n\n| problem | law | influence | delta/h | n | particles | "

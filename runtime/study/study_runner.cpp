@@ -6,11 +6,14 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <map>
 #include <numbers>
-#include <set>
 
 #include "input/scene.hpp"
+#include "kernel_abi.hpp"
 #include "output/atomic_file.hpp"
+#include "post/smoothing.hpp"
 #include "run/simulation.hpp"
 #include "study/peak_memory.hpp"
 #include "study/study.hpp"
@@ -23,6 +26,12 @@ std::string StudyPoint::key() const {
   return fmt::format("{}__{}__{}__r{}__n{}", problem, law, influence, ratio, count);
 }
 
+double StudyPoint::error_of(const std::string& smoothing_influence) const {
+  if (smoothing_influence.empty()) return error;
+  const auto it = smoothed_error.find(smoothing_influence);
+  return converged && it != smoothed_error.end() ? it->second : NAN;
+}
+
 namespace {
 nlohmann::json to_json(const StudyPoint& p) {
   return {{"problem", p.problem}, {"law", p.law}, {"influence", p.influence}, {"ratio", p.ratio}, {"count", p.count},
@@ -30,7 +39,7 @@ nlohmann::json to_json(const StudyPoint& p) {
           {"particles", p.particles}, {"nonzeros", p.nonzeros}, {"setup_seconds", p.setup_seconds},
           {"assembly_seconds", p.assembly_seconds}, {"solve_seconds", p.solve_seconds}, {"total_seconds", p.total_seconds},
           {"newton_iterations", p.newton_iterations}, {"krylov_iterations", p.krylov_iterations}, {"solver", p.solver},
-          {"peak_rss_mb", p.peak_rss_mb}};
+          {"peak_rss_mb", p.peak_rss_mb}, {"smoothed_error", p.smoothed_error}};
 }
 StudyPoint from_json(const nlohmann::json& j) {
   StudyPoint p;
@@ -44,6 +53,7 @@ StudyPoint from_json(const nlohmann::json& j) {
   p.krylov_iterations = j.value("krylov_iterations", 0);
   p.solver = j.value("solver", std::string());
   p.peak_rss_mb = j.value("peak_rss_mb", -1.0);
+  if (j.contains("smoothed_error")) p.smoothed_error = j["smoothed_error"].get<std::map<std::string, double>>();
   return p;
 }
 
@@ -78,6 +88,12 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
     pt.newton_iterations = r.newton.iterations();
     for (const auto& rec : r.newton.history) pt.krylov_iterations += rec.linear_iterations;
     pt.solver = r.newton.linear_solver;
+    // Eq. (49) with each requested influence, on the intact bonds of the law's own horizon.
+    for (const std::string& name : id.smoothing) {
+      const abi::InfluenceDescriptor* w = abi::find_influence(name);
+      const auto u_s = smooth_field(sim.particles(), sim.bonds(), w->weight, sim.displacement(), s.dim);
+      pt.smoothed_error[name] = sim.reference_error(u_s);
+    }
   } catch (const std::exception& e) {
     pt.converged = false;
     pt.failure = e.what();
@@ -93,10 +109,11 @@ const std::vector<T>& pick(bool quick, const std::vector<T>& full, const std::ve
   return quick && !reduced.empty() ? reduced : full;
 }
 
-// The points of every sweep for one problem, in sweep order, each once.
+// The points of every sweep for one problem, in sweep order, each once (with the union
+// of the smoothings its sweeps ask for).
 std::vector<StudyPoint> plan(const StudySpec& spec, const std::string& problem, bool quick) {
   std::vector<StudyPoint> out;
-  std::set<std::string> seen;
+  std::map<std::string, std::size_t> seen;
   for (const Sweep& w : spec.sweeps)
     for (const auto& law : pick(quick, w.laws, spec.quick.laws))
       for (const auto& inf : pick(quick, w.influences, spec.quick.influences))
@@ -104,38 +121,62 @@ std::vector<StudyPoint> plan(const StudySpec& spec, const std::string& problem, 
           for (int count : pick(quick, w.counts, spec.quick.counts)) {
             StudyPoint p;
             p.problem = problem, p.law = law, p.influence = inf, p.ratio = ratio, p.count = count;
-            if (seen.insert(p.key()).second) out.push_back(p);
+            const auto [it, added] = seen.emplace(p.key(), out.size());
+            if (added) out.push_back(p);
+            for (const auto& name : pick(quick, w.smoothing, spec.quick.smoothing)) {
+              auto& wanted = out[it->second].smoothing;
+              if (std::find(wanted.begin(), wanted.end(), name) == wanted.end()) wanted.push_back(name);
+            }
           }
   return out;
+}
+
+// A cached point serves when it holds every smoothed error the study now asks for.
+bool has_smoothings(const StudyPoint& cached, const StudyPoint& wanted) {
+  for (const auto& name : wanted.smoothing)
+    if (cached.converged && !cached.smoothed_error.count(name)) return false;
+  return true;
 }
 }  // namespace
 
 std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out, bool quick,
                                    const std::function<void(const std::string&)>& log) {
   fs::create_directories(fs::path(out) / "points");
-  std::vector<std::pair<std::string, std::vector<StudyPoint>>> plans;
+  // Every scene is read before the first point runs (read_study checked that the scenes
+  // of smoothed sweeps have a reference field).
+  struct Problem {
+    std::string path;
+    Scene scene;
+    std::vector<StudyPoint> todo;
+  };
+  std::vector<Problem> problems;
   std::size_t total = 0, done = 0;
   for (const std::string& path : spec.problems) {
-    plans.emplace_back(path, plan(spec, fs::path(path).stem().string(), quick));
-    total += plans.back().second.size();
+    problems.push_back({path, read_scene(path), plan(spec, fs::path(path).stem().string(), quick)});
+    total += problems.back().todo.size();
   }
   std::vector<StudyPoint> points;
-  for (const auto& [path, todo] : plans) {
-    const Scene base = read_scene(path);
-    for (const StudyPoint& id : todo) {
+  for (const Problem& problem : problems) {
+    for (const StudyPoint& id : problem.todo) {
       ++done;
       const fs::path cache = fs::path(out) / "points" / (id.key() + ".json");
       StudyPoint pt;
+      bool cached = false;
       if (fs::exists(cache)) {
         std::ifstream in(cache);
         pt = from_json(nlohmann::json::parse(in));
-      } else {
-        pt = run_point(base, spec, id);
+        cached = has_smoothings(pt, id);
+      }
+      if (!cached) {
+        pt = run_point(problem.scene, spec, id);
         write_file_atomically(cache.string(), to_json(pt).dump(1));
       }
+      pt.smoothing = id.smoothing;
+      std::string smoothed;
+      for (const auto& name : pt.smoothing) smoothed += fmt::format(", smoothed ({}) {:.3e}", name, pt.error_of(name));
       log(fmt::format("[{}/{}] {} {} {} delta/h={} n={}: {}", done, total, pt.problem, pt.law, pt.influence, pt.ratio,
                       pt.count,
-                      pt.converged ? fmt::format("error {:.3e}, {:.3f} s, {}", pt.error, pt.total_seconds, pt.solver)
+                      pt.converged ? fmt::format("error {:.3e}{}, {:.3f} s, {}", pt.error, smoothed, pt.total_seconds, pt.solver)
                                    : "FAILED: " + pt.failure));
       points.push_back(pt);
     }

@@ -3,8 +3,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
+#include "post/smoothing.hpp"
 #include "study/study.hpp"
 
 namespace pd {
@@ -31,7 +33,8 @@ std::vector<int> integers(MapReader& m, const std::string& key, bool required) {
 }
 // One sweep's lists from a map (the study's top level, an element of `sweeps`, or
 // `quick`, where every list is optional).
-Sweep read_sweep(MapReader& m, bool required) {
+// `problems` are the study's scene files: a smoothed error needs their reference field.
+Sweep read_sweep(MapReader& m, bool required, const std::vector<std::string>& problems) {
   Sweep w;
   w.laws = texts(m, "laws", required);
   for (const auto& l : w.laws)
@@ -43,14 +46,27 @@ Sweep read_sweep(MapReader& m, bool required) {
   for (double r : w.ratios)
     if (r < 1.0) m.get("ratios").fail("horizon ratios delta/h must be at least 1");
   w.counts = integers(m, "counts", required);
+  w.smoothing = texts(m, "smoothing", false);
+  for (const auto& name : w.smoothing) {
+    const abi::InfluenceDescriptor* inf = abi::find_influence(name);
+    if (inf == nullptr) m.get("smoothing").fail("unknown influence function '" + name + "' (pd laws lists them)");
+    if (!can_smooth_with(inf->weight))
+      m.get("smoothing").fail("'" + name + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
+  }
+  if (!w.smoothing.empty())
+    for (const auto& problem : problems)
+      if (!read_scene(problem).reference)
+        m.get("smoothing").fail("the smoothed solution is measured by the field error (paper 000 eq. 48), and " + problem +
+                                " has no `reference` field");
   return w;
 }
 }  // namespace
 
 std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
-                      int count) {
+                      int count, const std::string& smoothing) {
   std::string key = problem + "|" + law + "|" + influence + "|" + std::to_string(ratio);
-  return count > 0 ? key + "|" + std::to_string(count) : key;
+  if (count > 0) key += "|" + std::to_string(count);
+  return smoothing.empty() ? key : key + "|smoothed " + smoothing;
 }
 
 StudySpec read_study(const std::string& path) {
@@ -75,16 +91,16 @@ StudySpec read_study(const std::string& path) {
     require_list(list);
     for (std::size_t i = 0; i < list.node.size(); ++i) {
       MapReader w(list.element(list.node[i], i));
-      s.sweeps.push_back(read_sweep(w, true));
+      s.sweeps.push_back(read_sweep(w, true, s.problems));
       w.finish();
     }
     if (s.sweeps.empty()) list.fail("the list is empty");
   } else {
-    s.sweeps.push_back(read_sweep(m, true));
+    s.sweeps.push_back(read_sweep(m, true, s.problems));
   }
   if (m.has("quick")) {
     MapReader q(m.get("quick"));
-    s.quick = read_sweep(q, false);
+    s.quick = read_sweep(q, false, s.problems);
     q.finish();
   }
   s.matrix_free_from_bonds = m.number("matrix_free_from_bonds", 0.0);
@@ -97,7 +113,11 @@ StudySpec read_study(const std::string& path) {
     for (std::size_t i = 0; i < list.node.size(); ++i) {
       MapReader e(list.element(list.node[i], i));
       const int count = e.integer("count", 0);
-      const std::string key = paper_key(e.text("problem"), e.text("law"), e.text("influence"), e.number("ratio"), count);
+      const std::string smoothing = e.has("smoothing") ? e.text("smoothing") : "";
+      if (!smoothing.empty() && !abi::find_influence(smoothing))
+        e.get("smoothing").fail("unknown influence function '" + smoothing + "'");
+      const std::string key =
+          paper_key(e.text("problem"), e.text("law"), e.text("influence"), e.number("ratio"), count, smoothing);
       PaperValues& v = s.paper[key];
       for (auto [name, slot] : {std::pair{"order", &v.order}, {"min_error", &v.min_error}, {"error", &v.error}})
         if (e.has(name)) *slot = e.number(name);

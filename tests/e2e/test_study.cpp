@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
+#include "run/simulation.hpp"
 #include "study/study.hpp"
 
 namespace {
@@ -87,16 +89,96 @@ TEST(Study, CrackStudyFileHasThePapersTables) {
   const auto spec = pd::read_study(std::string(PD_SOURCE_DIR) + "/studies/crack.yaml");
   ASSERT_EQ(spec.problems.size(), 1u);
   EXPECT_GE(spec.sweeps.size(), 3u);
-  EXPECT_GT(spec.matrix_free_from_bonds, 0);
-  // Table 7 (five points) and Table 8 (three series).
+  // Table 7 (five points, unsmoothed and smoothed three ways) and Table 8 (four series).
   int points = 0, series = 0;
   for (const auto& [key, v] : spec.paper) points += v.error.has_value(), series += v.order.has_value();
-  EXPECT_EQ(points, 5);
-  EXPECT_EQ(series, 3);
+  EXPECT_EQ(points, 20);
+  EXPECT_EQ(series, 4);
   const auto it = spec.paper.find(pd::paper_key("crack", "silling_plane_strain", "cubic", 3.5));
   ASSERT_NE(it, spec.paper.end());
   EXPECT_DOUBLE_EQ(*it->second.order, 1.8022);
   EXPECT_DOUBLE_EQ(*it->second.min_error, 0.022);
+  const auto smoothed = spec.paper.find(pd::paper_key("crack", "correspondence_plane_strain", "cubic", 2.0, 200, "linear"));
+  ASSERT_NE(smoothed, spec.paper.end());
+  EXPECT_DOUBLE_EQ(*smoothed->second.error, 0.0429);
+  // Table 7's sweep asks for the three smoothings.
+  bool table7 = false;
+  for (const auto& w : spec.sweeps)
+    table7 = table7 || (w.counts == std::vector<int>{200} && w.smoothing == std::vector<std::string>{"const", "linear", "cubic"});
+  EXPECT_TRUE(table7);
+}
+
+// A smoothed sweep records eq. (48) of the smoothed solution: the same number a scene run
+// with output.smoothing reports (the runtime's own path through Simulation::smooth), and,
+// for the deformation-gradient law on the crack, below the unsmoothed error (paper 000
+// Table 7: smoothing removes the law's oscillation). A point cached without a smoothing
+// the study now asks for runs again; with it, it comes from the cache.
+TEST(Study, SmoothedErrorsAreRecordedAndCached) {
+  const std::string scene_path = std::string(PD_SOURCE_DIR) + "/scenes/crack.yaml";
+  const std::string sweep = "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [40]\n";
+  const std::string out = testing::TempDir() + "/pd_study_smoothed";
+  std::filesystem::remove_all(out);
+  const auto plain = pd::read_study(write_study("plain.yaml", "problems: [" + scene_path + "]\n" + sweep));
+  const auto first = pd::run_study(plain, out, false, [](const std::string&) {});
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_TRUE(first[0].smoothing.empty());
+
+  const auto spec = pd::read_study(write_study("smoothed.yaml", "problems: [" + scene_path + "]\n" + sweep +
+                                                                    "smoothing: [linear, cubic]\n"));
+  std::vector<std::string> lines;
+  const auto orders = pd::run_study(spec, out, false, [&](const std::string& l) { lines.push_back(l); });
+  ASSERT_EQ(orders.size(), 3u);  // unsmoothed, linear, cubic
+  EXPECT_EQ(orders[1].smoothing, "linear");
+  EXPECT_EQ(orders[2].smoothing, "cubic");
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("smoothed (linear)"), std::string::npos) << lines[0];
+
+  // The same point as a scene run with output.smoothing.
+  pd::Scene scene = pd::read_scene(scene_path);
+  scene.law = "correspondence_plane_strain";
+  scene.influence = "cubic";
+  scene.horizon_ratio = 3.0;
+  scene.horizon_length = 0;
+  scene.h = (scene.hi[0] - scene.lo[0]) / 40;
+  scene.output.smoothing_influence = "linear";
+  pd::Simulation sim(scene, [](const std::string&) {});
+  const pd::RunSummary r = sim.run(false);
+  EXPECT_NEAR(orders[0].min_error, r.field_error, 1e-12 * r.field_error);
+  EXPECT_NEAR(orders[1].min_error, r.smoothed_field_error, 1e-12 * r.smoothed_field_error);
+  EXPECT_LT(orders[1].min_error, orders[0].min_error);
+
+  // Now cached with both smoothings: a third run reads it (the log line is identical).
+  std::vector<std::string> again;
+  pd::run_study(spec, out, false, [&](const std::string& l) { again.push_back(l); });
+  EXPECT_EQ(again, lines);
+  std::ifstream in(out + "/points.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find("error_smoothed_linear"), std::string::npos);
+  EXPECT_NE(header.find("error_smoothed_cubic"), std::string::npos);
+}
+
+TEST(Study, SmoothingNeedsABoundedInfluenceAndAReference) {
+  const std::string crack = std::string(PD_SOURCE_DIR) + "/scenes/crack.yaml";
+  const std::string uniaxial = std::string(PD_SOURCE_DIR) + "/scenes/uniaxial.yaml";
+  const std::string sweep = "laws: [silling_plane_strain]\ninfluences: [cubic]\nratios: [3]\ncounts: [10]\n";
+  auto message = [&](const std::string& name, const std::string& text) {
+    try {
+      pd::read_study(write_study(name, text));
+    } catch (const pd::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string singular = message("smooth_inv.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [inv]\n");
+  EXPECT_NE(singular.find("smooth_inv.yaml:6"), std::string::npos) << singular;
+  EXPECT_NE(singular.find("singular at r = 0"), std::string::npos) << singular;
+  const std::string unknown = message("smooth_unknown.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [gauss]\n");
+  EXPECT_NE(unknown.find("unknown influence function 'gauss'"), std::string::npos) << unknown;
+  const std::string no_reference =
+      message("smooth_noref.yaml", "problems: [" + uniaxial + "]\n" + sweep + "smoothing: [linear]\n");
+  EXPECT_NE(no_reference.find("smoothing"), std::string::npos) << no_reference;
+  EXPECT_NE(no_reference.find("has no `reference` field"), std::string::npos) << no_reference;
 }
 
 // Overlapping sweeps run each point once; points at or above matrix_free_from_bonds run
