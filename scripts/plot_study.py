@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Plots of a study directory (pd study): error against h with fitted orders, and error
-against wall time (the accuracy/cost frontier, non-dominated points starred).
+"""Plots of a study directory (pd study): error against h with fitted orders (smoothed
+errors, eq. 49, dashed where recorded), and error against wall time (the accuracy/cost frontier, non-dominated points starred).
 
 A problem with few series (the crack study) gets one line plot of each kind. A sweep with
 many series (the constant-strain study: 75 per problem) is faceted like paper 000's Figs.
@@ -19,6 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import NullFormatter  # noqa: E402
 
 FEW_SERIES = 12
+SMOOTHED_STYLE = {"const": ":", "linear": "--", "cubic": "-."}
 
 
 def order(xs, es):
@@ -52,6 +53,14 @@ def line_plots(out, problem, pts):
             if kind == "convergence" and len(s) >= 2:
                 label += " (order %.2f)" % order(x, e)
             (line,) = ax.loglog(x, e, marker="o", ms=3, lw=1, label=label)
+            # Smoothed errors (eq. 49), where the study recorded them: dashed, in the series' colour.
+            for column in [c for c in s[0] if c.startswith("error_smoothed_")] if kind == "convergence" else []:
+                xs = [(float(r["h"]), float(r[column])) for r in s if r.get(column)]
+                if len(xs) >= 2:
+                    label = "%s %s %.1f, smoothed %s (order %.2f)" % (short(law), inf, ratio, column[15:],
+                                                                       order([a for a, _ in xs], [b for _, b in xs]))
+                    ax.loglog([a for a, _ in xs], [b for _, b in xs], ls=SMOOTHED_STYLE.get(column[15:], "--"), marker="x", ms=3, lw=0.8,
+                              label=label, color=line.get_color(), alpha=0.8)
             if kind == "cost":
                 nd = [(float(r["total_s"]), float(r["error"])) for r in s if r["non_dominated"] == "1"]
                 if nd:

@@ -1,5 +1,6 @@
 // `pd study STUDY.yaml [--out DIR] [--quick]`: a convergence/cost study (runtime/study).
 #include <cmath>
+#include <cstdio>
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
@@ -35,11 +36,15 @@ int study_command(const Args& args) {
     fmt::print(stderr, "pd study: {}\n", e.what());
     return 2;
   }
-  const auto orders = run_study(spec, out, quick, [](const std::string& l) { fmt::print("{}\n", l); });
+  // Flushed per point: a long study run into a file or a pipe shows its progress.
+  const auto orders = run_study(spec, out, quick, [](const std::string& l) {
+    fmt::print("{}\n", l);
+    std::fflush(stdout);
+  });
   fmt::print("\norders of convergence (least squares on log e vs log h):\n");
   for (const auto& o : orders)
-    fmt::print("  {:<10} {:<32} {:<10} delta/h={:<4} order {:7.3f}{}\n", o.problem, o.law, o.influence, o.ratio, o.order,
-               o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
+    fmt::print("  {:<10} {:<32} {:<10} delta/h={:<4} {:<18} order {:7.3f}{}\n", o.problem, o.law, o.influence, o.ratio,
+               o.smoothing.empty() ? "" : "smoothed " + o.smoothing, o.order, o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
   fmt::print("results: {}/points.csv, {}/orders.md, {}/*.png\n", out, out, out);
   return 0;
 }
