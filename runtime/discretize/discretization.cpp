@@ -137,6 +137,29 @@ Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, d
   return b;
 }
 
+int drop_negligible_bonds(Bonds& b) {
+  const int n = b.particle_count(), d = b.dim;
+  const double negligible = 1e-12 * (b.w.empty() ? 0.0 : *std::max_element(b.w.begin(), b.w.end()));
+  int kept = 0, dropped = 0;
+  for (int p = 0; p < n; ++p) {
+    const int begin = b.offsets[p], end = b.offsets[p + 1];
+    b.offsets[p] = kept;
+    for (int k = begin; k < end; ++k) {
+      if (b.w[k] <= negligible) {
+        ++dropped;
+        continue;
+      }
+      b.neighbor[kept] = b.neighbor[k], b.length[kept] = b.length[k], b.w[kept] = b.w[k], b.alpha[kept] = b.alpha[k];
+      for (int c = 0; c < d; ++c) b.xi[static_cast<std::size_t>(kept) * d + c] = b.xi[static_cast<std::size_t>(k) * d + c];
+      ++kept;
+    }
+  }
+  b.offsets[n] = kept;
+  b.neighbor.resize(kept), b.length.resize(kept), b.w.resize(kept), b.alpha.resize(kept);
+  b.xi.resize(static_cast<std::size_t>(kept) * d);
+  return dropped;
+}
+
 namespace {
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 

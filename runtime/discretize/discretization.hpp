@@ -21,6 +21,16 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
 // compressed rows sorted by neighbour index; w from the influence function; alpha = 1.
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double r, double delta));
 
+// Removes the bonds whose influence weight is negligible, w <= 1e-12 max w (the ring
+// exactly delta away for an influence function that vanishes at r = delta -- linear,
+// quadratic, cubic -- where rounding of |xi| leaves w at 1e-48 rather than 0), keeping
+// the compressed rows. Close to exact for every law whose force state carries w (all of
+// laws/), but a law may ignore w, so only approximations use it: the short-horizon
+// preconditioner, where at delta = 2h that ring is a third of the family and its
+// couplings widen the factor's fill (the 400^2 crack with Oterkus's law: UMFPACK ran out
+// of memory). Returns the count.
+int drop_negligible_bonds(Bonds& bonds);
+
 // Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
 // broken bonds (each counted once per direction).
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);

@@ -63,6 +63,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
     const double short_delta = std::min(scene_.delta(), scene_.solver.preconditioner_ratio * scene_.h);
     short_bonds_ = find_bonds(particles_, short_delta, influence->weight);
+    drop_negligible_bonds(short_bonds_);
     const int cut = cut_bonds(scene_.cracks, particles_, short_bonds_);
     AssemblerOptions short_options;
     short_options.intact = cut == 0 && !scene_.damage;

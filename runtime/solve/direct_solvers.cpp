@@ -1,6 +1,7 @@
 // CHOLMOD (supernodal Cholesky) and UMFPACK (LU) through Eigen's SuiteSparse wrappers.
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
+#include <string>
 
 #include "solve/linear_solver.hpp"
 
@@ -49,7 +50,14 @@ class UmfpackSolver final : public SparseSolver {
     if (!analysed_) analyse(A);
     lu_.factorize(A);
     if (lu_.info() == Eigen::Success) return true;
-    failure_ = "UMFPACK: the matrix is singular (an unconstrained rigid-body mode?)";
+    // Eigen reports every failure alike; UMFPACK's status says which it was (an
+    // out-of-memory once passed for a singular matrix in the run log).
+    const int status = lu_.umfpackFactorizeReturncode();
+    failure_ = status == UMFPACK_WARNING_singular_matrix
+                   ? "UMFPACK: the matrix is singular (an unconstrained rigid-body mode?)"
+               : status == UMFPACK_ERROR_out_of_memory
+                   ? "UMFPACK: out of memory in the numeric factorisation"
+                   : "UMFPACK: the numeric factorisation failed with status " + std::to_string(status);
     return false;
   }
   LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {

@@ -249,3 +249,41 @@ TEST(Neighbours, LatticeFamiliesAtIntegerRatiosAreComplete) {
       }
     }
 }
+
+// The short-horizon preconditioner drops the bonds of negligible weight: at delta/h = 2 with
+// the cubic influence, the ring 2h away (4 of 12 neighbours; rounding leaves some of them
+// at w ~ 1e-48 instead of 0). What stays is every other bond, with its data, in order.
+TEST(Neighbours, NegligibleBondsAreDroppedAndTheRestKept) {
+  pd::Scene s = box_scene(2, 0.1);
+  s.horizon_ratio = 2.0;
+  const pd::Particles p = pd::discretize(s);
+  // The cubic spline's shape: zero at r = delta, positive inside.
+  auto weight = [](double r, double delta) { return r >= delta ? 0.0 : std::pow(1 - r / delta, 3); };
+  const pd::Bonds all = pd::find_bonds(p, s.delta(), weight);
+  pd::Bonds kept = all;
+  const int dropped = pd::drop_negligible_bonds(kept);
+  int zero = 0;
+  for (double w : all.w) zero += w < 1e-30;
+  EXPECT_GT(zero, 0);
+  EXPECT_EQ(dropped, zero);
+  ASSERT_EQ(kept.bond_count(), all.bond_count() - zero);
+  for (int i = 0; i < p.size(); ++i) {
+    int k = kept.offsets[i];
+    for (int b = all.offsets[i]; b < all.offsets[i + 1]; ++b) {
+      if (all.w[b] < 1e-30) continue;
+      ASSERT_LT(k, kept.offsets[i + 1]);
+      EXPECT_EQ(kept.neighbor[k], all.neighbor[b]);
+      EXPECT_EQ(kept.w[k], all.w[b]);
+      EXPECT_EQ(kept.length[k], all.length[b]);
+      EXPECT_EQ(kept.xi[2 * k + 1], all.xi[2 * b + 1]);
+      ++k;
+    }
+    EXPECT_EQ(k, kept.offsets[i + 1]);
+    const double* x = p.position(i);
+    if (x[0] > 0.25 && x[0] < 1.75 && x[1] > 0.25 && x[1] < 1.25) {
+      EXPECT_EQ(kept.family_size(i), 8) << x[0] << ", " << x[1];  // 12 minus the ring at 2h
+    }
+  }
+  pd::Bonds constant = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
+  EXPECT_EQ(pd::drop_negligible_bonds(constant), 0);
+}

@@ -99,3 +99,30 @@ TEST(LinearSolvers, SingularMatrixThrows) {
   pd::AutoLinearSolver s(o, false);
   EXPECT_THROW(s.factor(A), std::runtime_error);
 }
+
+// UMFPACK's failure says what happened: a singular matrix is reported as singular (its
+// status, not Eigen's one code for every failure), and a regular one factors and solves.
+TEST(LinearSolvers, UmfpackNamesASingularMatrix) {
+  const int n = 400;
+  pd::SparseMatrix A(n, n);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 2.0 + (i % 3));
+    if (i + 1 < n) t.emplace_back(i, i + 1, 0.5), t.emplace_back(i + 1, i, 0.5);
+  }
+  A.setFromTriplets(t.begin(), t.end());
+  auto umfpack = pd::make_sparse_solver("umfpack", pd::LinearSolverOptions{});
+  umfpack->analyse(A);
+  ASSERT_TRUE(umfpack->factor(A)) << umfpack->failure();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  Eigen::VectorXd x;
+  umfpack->solve(b, x);
+  EXPECT_LT((A * x - b).norm(), 1e-12 * b.norm());
+
+  pd::SparseMatrix S = A;
+  S.coeffRef(n / 2, n / 2) = 0, S.coeffRef(n / 2, n / 2 + 1) = 0, S.coeffRef(n / 2, n / 2 - 1) = 0;  // a zero row
+  auto singular = pd::make_sparse_solver("umfpack", pd::LinearSolverOptions{});
+  singular->analyse(S);
+  EXPECT_FALSE(singular->factor(S));
+  EXPECT_NE(singular->failure().find("singular"), std::string::npos) << singular->failure();
+}
