@@ -3,10 +3,12 @@
 
   scripts/paper000_tables.py constant OUT   Tables 3, 4, 5 (+ the series the paper calls non-convergent)
   scripts/paper000_tables.py crack OUT      Tables 7, 8 and the cost of every point
+  scripts/paper000_tables.py crack_norm OUT the same with sqrt(eq. 48), the relative L2 norm
 
 Each cell is "ours (paper)"; the orders are read from OUT/orders.md (written by pd study,
 least squares on log e against log h, eq. 37), the costs from OUT/points.csv."""
 import csv
+import math
 import os
 import sys
 
@@ -83,40 +85,52 @@ def converging_frontier(out):
                       r["influence"], r["ratio"], r["count"], best, float(r["total_s"])))
 
 
-def crack(out):
+# Paper 000 Table 7 (F, NP = 200: unsmoothed, then smoothed with const, linear, cubic) and
+# Table 8 (order, minimum error; "F, smoothed" entered as the linear smoothing, its Fig. 14).
+PAPER7 = {1.5: (0.2105, 0.0836, 0.0708, 0.1810), 2.0: (0.3022, 0.0868, 0.0429, 0.1697),
+          2.5: (0.5409, 0.1080, 0.0670, 0.1628), 3.0: (1.0375, 0.1604, 0.1004, 0.1965),
+          3.5: (2.6741, 0.2684, 0.1452, 0.3302)}
+PAPER8 = {(SILLING, 3.5): (1.8022, 0.022), (OTERKUS, 3.5): (0.4622, 0.057), (F, 1.5): (1.0200, 0.117),
+          (F, 1.5, "linear"): (1.0836, 0.041)}
+
+
+def crack(out, norm=False):
+    """Tables 7 and 8 from a crack study. norm=True reports sqrt(eq. 48) -- the relative L2
+    norm of the displacement error -- and its order (half that of eq. 48)."""
     rows = read_orders(out)
     pts = list(csv.DictReader(open(os.path.join(out, "points.csv"))))
-    # Paper 000 Table 7: unsmoothed, then smoothed with const, linear, cubic.
-    paper7 = {1.5: (0.2105, 0.0836, 0.0708, 0.1810), 2.0: (0.3022, 0.0868, 0.0429, 0.1697),
-              2.5: (0.5409, 0.1080, 0.0670, 0.1628), 3.0: (1.0375, 0.1604, 0.1004, 0.1965),
-              3.5: (2.6741, 0.2684, 0.1452, 0.3302)}
+    problem = pts[0]["problem"]
+    measure = (lambda e: math.sqrt(e)) if norm else (lambda e: e)
+    slope = 0.5 if norm else 1.0
+    name = "√(eq. 48), the relative L2 norm of the displacement error" if norm else "field error eq. (48)"
     columns = ("error", "error_smoothed_const", "error_smoothed_linear", "error_smoothed_cubic")
-    print("**Table 7** — F, cubic influence, NP = 200: field error eq. (48), unsmoothed and smoothed (eq. 49) "
-          "with three influence functions, ours (paper)\n")
+    print("**Table 7** — F, cubic influence, NP = 200: %s, unsmoothed and smoothed (eq. 49) "
+          "with three influence functions, ours (paper)\n" % name)
     print("| δ/h | unsmoothed | const | linear | cubic |\n|---|---|---|---|---|")
-    for ratio, paper in paper7.items():
+    for ratio, paper in PAPER7.items():
         p = [r for r in pts if r["law"] == F and float(r["ratio"]) == ratio and r["count"] == "200"]
         values = []
         for column, value in zip(columns, paper):
             ours = "not run" if not p else "failed" if p[0]["converged"] != "1" else (
-                "%.4g" % float(p[0][column]) if p[0].get(column) else "not run")
+                "%.4g" % measure(float(p[0][column])) if p[0].get(column) else "not run")
             values.append("%s (%.4f)" % (ours, value))
         print("| %.1f | %s |" % (ratio, " | ".join(values)))
-    print("\n**Table 8** — order of the field error (all resolutions / the 3 finest) and the smallest error, "
-          "ours (paper)\n")
+    print("\n**Table 8** — order of the %s (all resolutions / the 3 finest) and the smallest, "
+          "ours (paper)\n" % name)
     print("| method | order | order, 3 finest | min. error |\n|---|---|---|---|")
     for label, key in (("Silling, δ/h 3.5", (SILLING, 3.5)), ("Oterkus, δ/h 3.5", (OTERKUS, 3.5)),
                        ("F unsmoothed, δ/h 1.5", (F, 1.5)), ("F smoothed (linear), δ/h 1.5", (F, 1.5, "linear")),
                        ("F smoothed (const), δ/h 1.5", (F, 1.5, "const")),
                        ("F smoothed (cubic), δ/h 1.5", (F, 1.5, "cubic")),
                        ("Silling, δ/h 1.5", (SILLING, 1.5)), ("Oterkus, δ/h 1.5", (OTERKUS, 1.5))):
-        r = rows.get(("crack", key[0], "cubic") + key[1:])
+        r = rows.get((problem, key[0], "cubic") + key[1:])
         if not r:
-            print("| %s | not run | | |" % label)
             continue
-        paper = " (%s)" % r["paper"] if r["paper"] else ""
-        paper_min = " (%.1f%%)" % (100 * float(r["paper_min"])) if r["paper_min"] else ""
-        print("| %s | %s%s | %s | %.3g%%%s |" % (label, r["order"], paper, r["fine"], 100 * float(r["min_error"]), paper_min))
+        paper = PAPER8.get(key)
+        fine = "%.3f" % (slope * float(r["fine"])) if r["fine"] else ""
+        print("| %s | %.3f%s | %s | %.3g%%%s |" % (
+            label, slope * float(r["order"]), " (%.4f)" % paper[0] if paper else "", fine,
+            100 * measure(float(r["min_error"])), " (%.1f%%)" % (100 * paper[1]) if paper else ""))
     print("\n**Cost of every point** — solver that reached it, Newton and Krylov iterations, nonzeros (of the "
           "tangent; matrix-free: of the short-horizon preconditioner), wall time, peak resident memory\n")
     print("| law | δ/h | n | particles | error | solver | Newton | Krylov | nonzeros | seconds | peak MiB |\n"
@@ -131,4 +145,4 @@ def crack(out):
 
 
 if __name__ == "__main__":
-    {"constant": constant, "crack": crack}[sys.argv[1]](sys.argv[2])
+    {"constant": constant, "crack": crack, "crack_norm": lambda out: crack(out, norm=True)}[sys.argv[1]](sys.argv[2])
