@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -216,4 +217,24 @@ TEST(Study, PaperEntriesNeedAValueAndSeriesValuesNeedNoCount) {
                                           head + "paper:\n  - {problem: x, law: l, influence: i, ratio: 3, count: 10, order: 1}\n")),
                pd::SceneError);
   EXPECT_THROW(pd::read_study(write_study("bad3.yaml", head + "fine_points: 1\n")), pd::SceneError);
+}
+
+// Paper 000's crack errors are the square root of its eq. (48), on a crack resolved by
+// L/h = 8.75 at NP = 200 (a 16 m box): there our F law gives Table 7's unsmoothed values
+// (docs/paper000.md section 3.3), while eq. (48) as printed is far below them.
+TEST(Study, PaperScaleCrackGivesTable7InTheNorm) {
+  const std::string scene = std::string(PD_SOURCE_DIR) + "/scenes/crack_wide.yaml";
+  const auto spec = pd::read_study(write_study("crack_wide_t7.yaml", "problems: [" + scene + "]\n"
+      "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [1.5, 2.0]\ncounts: [200]\n"));
+  const std::string out = testing::TempDir() + "/pd_study_crack_wide";
+  std::filesystem::remove_all(out);
+  const auto orders = pd::run_study(spec, out, false, [](const std::string&) {});
+  ASSERT_EQ(orders.size(), 2u);
+  const std::map<double, double> table7{{1.5, 0.2105}, {2.0, 0.3022}};
+  for (const auto& o : orders) {
+    const double paper = table7.at(o.ratio);
+    EXPECT_GT(std::sqrt(o.min_error), paper / 1.5) << "delta/h " << o.ratio;
+    EXPECT_LT(std::sqrt(o.min_error), paper * 1.5) << "delta/h " << o.ratio;
+    EXPECT_LT(o.min_error, paper / 3) << "delta/h " << o.ratio;  // eq. (48) as printed: far below
+  }
 }
