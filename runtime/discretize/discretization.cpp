@@ -160,6 +160,19 @@ int drop_negligible_bonds(Bonds& b) {
   return dropped;
 }
 
+double mean_short_family_size(const Bonds& b, double short_delta, double (*influence)(double, double)) {
+  const int n = b.particle_count();
+  if (n == 0) return 0;
+  const double reach = short_delta * (1 + 1e-12);  // find_bonds' reach
+  double largest = 0;
+  for (int k = 0; k < b.bond_count(); ++k)
+    if (b.length[k] <= reach) largest = std::max(largest, influence(b.length[k], short_delta));
+  long long count = 0;
+  for (int k = 0; k < b.bond_count(); ++k)
+    count += b.length[k] <= reach && influence(b.length[k], short_delta) > 1e-12 * largest;
+  return static_cast<double>(count) / n;
+}
+
 namespace {
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 

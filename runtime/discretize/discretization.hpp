@@ -31,6 +31,12 @@ Bonds find_bonds(const Particles& p, double delta, double (*influence)(double r,
 // of memory). Returns the count.
 int drop_negligible_bonds(Bonds& bonds);
 
+// The mean family size that find_bonds(p, short_delta, influence) followed by
+// drop_negligible_bonds would give, counted on existing bonds of a horizon >= short_delta
+// (without building the short families): what the solver-path rule estimates the
+// short-horizon preconditioner from.
+double mean_short_family_size(const Bonds& bonds, double short_delta, double (*influence)(double r, double delta));
+
 // Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
 // broken bonds (each counted once per direction).
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);

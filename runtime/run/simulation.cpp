@@ -48,9 +48,11 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   std::vector<std::vector<double>> params = std::move(body.params);
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
+  const double short_delta = std::min(scene_.delta(), scene_.solver.preconditioner_ratio * scene_.h);
   const SolverPath path = choose_solver_path(scene_.solver, particles_.size(),
                                              2.0 * static_cast<double>(summary_.bonds) / particles_.size(),
-                                             particles_.dim, scene_.delta() / scene_.h);
+                                             particles_.dim, scene_.delta() / scene_.h,
+                                             mean_short_family_size(bonds_, short_delta, influence->weight));
   scene_.solver.linear = path.linear;
   scene_.solver.preconditioner = path.preconditioner;
   summary_.solver_path = path.reason;
@@ -61,7 +63,6 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   if (matrix_free_preconditioner() == "approximate") {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
     // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
-    const double short_delta = std::min(scene_.delta(), scene_.solver.preconditioner_ratio * scene_.h);
     short_bonds_ = find_bonds(particles_, short_delta, influence->weight);
     drop_negligible_bonds(short_bonds_);
     const int cut = cut_bonds(scene_.cracks, particles_, short_bonds_);

@@ -12,7 +12,7 @@ std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, 
 }
 
 SolverPath choose_solver_path(const SolverSpec& solver, int particles, double mean_family_size, int dim,
-                              double delta_over_h) {
+                              double delta_over_h, double short_family_size) {
   if (solver.linear != "auto") return {solver.linear, solver.preconditioner, "linear: " + solver.linear + " (scene)"};
   if (solver.preconditioner != "auto")  // ic, ilut or diagonal name an assembled Krylov method
     return {"auto", solver.preconditioner, "assembled tangent (the scene's preconditioner " + solver.preconditioner + ")"};
@@ -21,10 +21,12 @@ SolverPath choose_solver_path(const SolverSpec& solver, int particles, double me
     return {"auto", solver.preconditioner,
             fmt::format("assembled tangent: about {:.3g} nonzeros, within direct_max_nonzeros {:.3g}",
                         static_cast<double>(k_estimate), static_cast<double>(solver.direct_max_nonzeros))};
-  // Families shrink with the horizon as (ratio / (delta/h))^dim on a uniform cloud.
+  // Without a count, families shrink with the horizon as (ratio / (delta/h))^dim on a
+  // uniform cloud (which overestimates where the influence vanishes on the rim).
   const double short_ratio = std::min(delta_over_h, solver.preconditioner_ratio);
-  const std::int64_t p_estimate =
-      estimated_tangent_nonzeros(particles, mean_family_size * std::pow(short_ratio / delta_over_h, dim), dim);
+  const double short_family =
+      short_family_size >= 0 ? short_family_size : mean_family_size * std::pow(short_ratio / delta_over_h, dim);
+  const std::int64_t p_estimate = estimated_tangent_nonzeros(particles, short_family, dim);
   const std::string over = fmt::format("assembled tangent would have about {:.3g} nonzeros (> direct_max_nonzeros {:.3g})",
                                        static_cast<double>(k_estimate), static_cast<double>(solver.direct_max_nonzeros));
   if (p_estimate <= solver.preconditioner_max_nonzeros) {

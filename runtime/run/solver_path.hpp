@@ -27,7 +27,9 @@ struct SolverPath {
 //  - above, matrix-free Newton-Krylov: preconditioned by the factorised stiffness on
 //    the horizon min(delta, preconditioner_ratio h) while its estimate fits
 //    preconditioner_max_nonzeros, else by Jacobi (the least memory).
+// short_family_size: the preconditioner's mean family size (mean_short_family_size);
+// negative: scaled from mean_family_size by the horizons' volume ratio.
 SolverPath choose_solver_path(const SolverSpec& solver, int particles, double mean_family_size, int dim,
-                              double delta_over_h);
+                              double delta_over_h, double short_family_size = -1);
 
 }  // namespace pd

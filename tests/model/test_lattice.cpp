@@ -286,4 +286,12 @@ TEST(Neighbours, NegligibleBondsAreDroppedAndTheRestKept) {
   }
   pd::Bonds constant = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
   EXPECT_EQ(pd::drop_negligible_bonds(constant), 0);
+
+  // The solver-path rule counts the same short families on the bonds of a longer horizon.
+  s.horizon_ratio = 3.5;
+  const pd::Bonds longer = pd::find_bonds(p, s.delta(), weight);
+  EXPECT_DOUBLE_EQ(pd::mean_short_family_size(longer, 2.0 * s.h, weight),
+                   static_cast<double>(kept.bond_count()) / p.size());
+  EXPECT_DOUBLE_EQ(pd::mean_short_family_size(longer, 2.0 * s.h, [](double, double) { return 1.0; }),
+                   static_cast<double>(all.bond_count()) / p.size());
 }

@@ -70,6 +70,18 @@ TEST(SolverPath, AutoFallsBackToJacobiWhenThePreconditionerCannotFit) {
   EXPECT_NE(path.reason.find("preconditioner_max_nonzeros"), std::string::npos) << path.reason;
 }
 
+// Given the preconditioner's counted family (8 at delta = 2h under the cubic influence,
+// which is zero on the ring 2h away), the estimate uses it instead of the volume ratio
+// (11.7 for a family of 35.9 at delta/h 3.5), and a limit between the two decides.
+TEST(SolverPath, ACountedShortFamilyReplacesTheVolumeScaling) {
+  pd::SolverSpec spec;
+  spec.preconditioner_max_nonzeros = 1.5e8;
+  EXPECT_EQ(pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5).preconditioner, "diagonal");  // about 1.9e8
+  const pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5, 8.0);
+  EXPECT_EQ(path.preconditioner, "short_horizon");
+  EXPECT_NE(path.reason.find("1.32e+08"), std::string::npos) << path.reason;  // 1e6 x (4 x 8 + 1) x 4
+}
+
 TEST(SolverPath, ExplicitChoicesAreKept) {
   pd::SolverSpec spec;
   spec.linear = "cholmod";
