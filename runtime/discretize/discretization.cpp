@@ -64,6 +64,14 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
   return out;
 }
 
+namespace {
+// A family holds the particles within delta (1 + 1e-12): the tolerance keeps a lattice
+// site exactly delta away (integer delta/h) whatever the rounding of |xi|.
+double family_reach(double delta) { return delta * (1 + 1e-12); }
+// A bond weighs nothing when its w is below this fraction of the largest in its bonds.
+constexpr double negligible_weight_fraction = 1e-12;
+}  // namespace
+
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
   // Cell list with cells a little larger than the reach delta (1 + 1e-12): neighbours then
@@ -98,7 +106,7 @@ Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, d
   b.dim = d;
   b.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
   b.delta.assign(static_cast<std::size_t>(n), delta);
-  const double reach2 = delta * delta * (1 + 1e-12) * (1 + 1e-12);
+  const double reach2 = family_reach(delta) * family_reach(delta);
   std::vector<int> found;
   for (int i = 0; i < n; ++i) {
     int ci[3];
@@ -139,7 +147,8 @@ Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, d
 
 int drop_negligible_bonds(Bonds& b) {
   const int n = b.particle_count(), d = b.dim;
-  const double negligible = 1e-12 * (b.w.empty() ? 0.0 : *std::max_element(b.w.begin(), b.w.end()));
+  const double negligible =
+      negligible_weight_fraction * (b.w.empty() ? 0.0 : *std::max_element(b.w.begin(), b.w.end()));
   int kept = 0, dropped = 0;
   for (int p = 0; p < n; ++p) {
     const int begin = b.offsets[p], end = b.offsets[p + 1];
@@ -163,13 +172,13 @@ int drop_negligible_bonds(Bonds& b) {
 double mean_short_family_size(const Bonds& b, double short_delta, double (*influence)(double, double)) {
   const int n = b.particle_count();
   if (n == 0) return 0;
-  const double reach = short_delta * (1 + 1e-12);  // find_bonds' reach
+  const double reach = family_reach(short_delta);
   double largest = 0;
   for (int k = 0; k < b.bond_count(); ++k)
     if (b.length[k] <= reach) largest = std::max(largest, influence(b.length[k], short_delta));
   long long count = 0;
   for (int k = 0; k < b.bond_count(); ++k)
-    count += b.length[k] <= reach && influence(b.length[k], short_delta) > 1e-12 * largest;
+    count += b.length[k] <= reach && influence(b.length[k], short_delta) > negligible_weight_fraction * largest;
   return static_cast<double>(count) / n;
 }
 

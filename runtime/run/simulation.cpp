@@ -49,10 +49,12 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
   const double short_delta = std::min(scene_.delta(), scene_.solver.preconditioner_ratio * scene_.h);
+  // Only `auto` sizes the preconditioner before choosing (a pass over every bond).
+  const bool deciding = scene_.solver.linear == "auto" && scene_.solver.preconditioner == "auto";
   const SolverPath path = choose_solver_path(scene_.solver, particles_.size(),
                                              2.0 * static_cast<double>(summary_.bonds) / particles_.size(),
                                              particles_.dim, scene_.delta() / scene_.h,
-                                             mean_short_family_size(bonds_, short_delta, influence->weight));
+                                             deciding ? mean_short_family_size(bonds_, short_delta, influence->weight) : -1);
   scene_.solver.linear = path.linear;
   scene_.solver.preconditioner = path.preconditioner;
   summary_.solver_path = path.reason;

@@ -48,6 +48,34 @@ std::set<const StudyPoint*> frontier(const std::vector<StudyPoint>& points) {
   }
   return out;
 }
+void add_once(std::vector<std::string>& list, const std::string& name) {
+  if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+}
+
+// The orders and smallest error of one series (points sorted coarse to fine), unsmoothed
+// or with one smoothing; points that lack that smoothing are left out.
+SeriesOrder fit_series(const StudySpec& spec, const std::vector<const StudyPoint*>& pts, const std::string& smoothing) {
+  std::vector<double> h, e;
+  for (const auto* p : pts) {
+    const double v = p->error_of(smoothing);
+    if (smoothing.empty() || std::isfinite(v)) h.push_back(p->h), e.push_back(v);
+  }
+  SeriesOrder o;
+  o.problem = pts[0]->problem, o.law = pts[0]->law, o.influence = pts[0]->influence, o.ratio = pts[0]->ratio;
+  o.smoothing = smoothing;
+  o.order = fit_order(h, e, &o.points);
+  o.fine_order = NAN;
+  if (spec.fine_points >= 2 && static_cast<int>(h.size()) > spec.fine_points) {
+    const std::size_t from = h.size() - static_cast<std::size_t>(spec.fine_points);
+    o.fine_order = fit_order({h.begin() + from, h.end()}, {e.begin() + from, e.end()});
+  }
+  o.min_error = NAN;
+  for (double v : e)
+    if (v > 0 && !(v >= o.min_error)) o.min_error = v;
+  if (auto it = spec.paper.find(paper_key(o.problem, o.law, o.influence, o.ratio, 0, smoothing)); it != spec.paper.end())
+    o.paper = it->second;
+  return o;
+}
 }  // namespace
 
 std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::vector<StudyPoint>& points,
@@ -68,33 +96,8 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
     std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->h > b->h; });
     std::vector<std::string> smoothings{""};
     for (const auto* p : pts)
-      for (const auto& name : p->smoothing) {
-        if (std::find(smoothings.begin(), smoothings.end(), name) == smoothings.end()) smoothings.push_back(name);
-        if (std::find(all_smoothings.begin(), all_smoothings.end(), name) == all_smoothings.end())
-          all_smoothings.push_back(name);
-      }
-    for (const auto& smoothing : smoothings) {
-      std::vector<double> h, e;
-      for (const auto* p : pts) {
-        const double v = p->error_of(smoothing);
-        if (smoothing.empty() || std::isfinite(v)) h.push_back(p->h), e.push_back(v);
-      }
-      SeriesOrder o;
-      o.problem = pts[0]->problem, o.law = pts[0]->law, o.influence = pts[0]->influence, o.ratio = pts[0]->ratio;
-      o.smoothing = smoothing;
-      o.order = fit_order(h, e, &o.points);
-      o.fine_order = NAN;
-      if (spec.fine_points >= 2 && static_cast<int>(h.size()) > spec.fine_points) {
-        const std::size_t from = h.size() - static_cast<std::size_t>(spec.fine_points);
-        o.fine_order = fit_order({h.begin() + from, h.end()}, {e.begin() + from, e.end()});
-      }
-      o.min_error = NAN;
-      for (double v : e)
-        if (v > 0 && !(v >= o.min_error)) o.min_error = v;
-      if (auto it = spec.paper.find(paper_key(o.problem, o.law, o.influence, o.ratio, 0, smoothing)); it != spec.paper.end())
-        o.paper = it->second;
-      orders.push_back(o);
-    }
+      for (const auto& name : p->smoothing) add_once(smoothings, name), add_once(all_smoothings, name);
+    for (const auto& smoothing : smoothings) orders.push_back(fit_series(spec, pts, smoothing));
   }
   const auto best = frontier(points);
   std::ostringstream csv;
