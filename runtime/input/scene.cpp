@@ -298,6 +298,12 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.h = (s.hi[0] - s.lo[0]) / n;
     }
     s.placement = d.choice("placement", "cell", {"cell", "node"});
+    if (d.has("quadrature")) {
+      const YamlAt q = d.get("quadrature");
+      const std::optional<Quadrature> choice = parse_quadrature(d.text("quadrature"));
+      if (!choice) q.fail("unknown quadrature (volume)");
+      s.quadrature = *choice;
+    }
     if (d.has("perturbation")) {
       MapReader p(d.get("perturbation"));
       s.perturbation = p.number("amplitude", 0.0);

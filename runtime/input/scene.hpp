@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "discretize/quadrature.hpp"
 #include "input/dynamics_spec.hpp"
 #include "input/region.hpp"
 #include "input/time_function.hpp"
@@ -111,6 +112,7 @@ struct Scene {
   std::string placement = "cell";  // cell: points at cell centers; node: on a lattice including the faces
   double perturbation = 0;         // fraction of h
   unsigned seed = 1;
+  Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
   std::vector<Shape> holes, inclusions;
   double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0
   double horizon_length = 0;

@@ -1,0 +1,27 @@
+// Scene spellings of the quadrature choices.
+#include "discretize/quadrature.hpp"
+
+#include <array>
+#include <utility>
+
+namespace pd {
+
+namespace {
+constexpr std::array<std::pair<Quadrature, std::string_view>, 1> kNames{{
+    {Quadrature::Volume, "volume"},
+}};
+}  // namespace
+
+std::string_view quadrature_name(Quadrature q) {
+  for (const auto& [value, name] : kNames)
+    if (value == q) return name;
+  return "unknown";
+}
+
+std::optional<Quadrature> parse_quadrature(std::string_view name) {
+  for (const auto& [value, spelling] : kNames)
+    if (spelling == name) return value;
+  return std::nullopt;
+}
+
+}  // namespace pd

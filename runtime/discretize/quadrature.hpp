@@ -1,0 +1,21 @@
+// The quadrature of the horizon integral: how much of each neighbour's volume a bond
+// carries (docs/scene_format.md, `domain.quadrature`). A property of the discretisation:
+// the kernels see it only through the per-bond volume V[k] (and, for weights that are
+// not symmetric, through the assembly of eq. 2.13 of paper 001).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace pd {
+
+enum class Quadrature {
+  Volume,  // a neighbour counts with its whole volume when its centre is inside the horizon
+};
+
+// The scene spelling of each choice, in the order of the enum.
+std::string_view quadrature_name(Quadrature q);
+std::optional<Quadrature> parse_quadrature(std::string_view name);
+
+}  // namespace pd
