@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# Runs every scene in scenes/ with two pd binaries and compares their summary.json files:
+# every number to a relative tolerance (default 1e-12), every string (solver path, linear
+# method, its choice sentence, effect list, ...) exactly. Wall-clock seconds, file names and
+# the scene path are skipped (they differ between any two runs).
+#
+#   scripts/compare_runs.sh BEFORE_PD AFTER_PD [SCENE.yaml ...]
+#
+# Scenes are run from a temporary copy in which `count:` is capped at PD_COMPARE_MAX_COUNT
+# (default 40, rounded down to an even number so that crack scenes keep their crack between
+# two rows), so that the whole comparison takes well under a minute; PD_COMPARE_MAX_STEPS, when
+# set, caps `steps:` too (not by default: for relaxation scenes it is an iteration limit). PD_COMPARE_RTOL overrides the tolerance. Exit status: 0 when every
+# scene agrees, 1 otherwise.
+set -euo pipefail
+
+if [[ $# -lt 2 ]]; then
+    echo "usage: $0 BEFORE_PD AFTER_PD [SCENE.yaml ...]" >&2
+    exit 2
+fi
+before=$1
+after=$2
+shift 2
+repo=$(cd "$(dirname "$0")/.." && pwd)
+if [[ $# -gt 0 ]]; then scenes=("$@"); else scenes=("$repo"/scenes/*.yaml); fi
+max_count=${PD_COMPARE_MAX_COUNT:-40}
+max_steps=${PD_COMPARE_MAX_STEPS:-0}
+rtol=${PD_COMPARE_RTOL:-1e-12}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+status=0
+for scene in "${scenes[@]}"; do
+    name=$(basename "$scene" .yaml)
+    copy="$work/$name.yaml"
+    # Cap count and steps in a copy; everything else (relative paths included) stays as written.
+    awk -v mc="$max_count" -v ms="$max_steps" '
+        match($0, /^( *)count: *[0-9]+/) {
+            n = substr($0, RSTART, RLENGTH); sub(/.*: */, "", n)
+            if (n + 0 > mc) { c = mc - mc % 2; sub(/count: *[0-9]+/, "count: " c) }
+        }
+        match($0, /^( *)steps: *[0-9]+/) {
+            n = substr($0, RSTART, RLENGTH); sub(/.*: */, "", n)
+            if (ms > 0 && n + 0 > ms) sub(/steps: *[0-9]+/, "steps: " ms)
+        }
+        { print }' "$scene" > "$copy"
+    for side in before after; do
+        pd=$before; [[ $side == after ]] && pd=$after
+        rc=0
+        (cd "$(dirname "$scene")" && "$pd" run "$copy" --out "$work/$name.$side") \
+            > "$work/$name.$side.log" 2>&1 || rc=$?
+        if [[ $rc -ne 0 ]]; then
+            echo "$name: $side run failed (exit status $rc); log:"; tail -5 "$work/$name.$side.log"
+            status=1
+            continue 2
+        fi
+    done
+    if ! /usr/bin/python3 - "$work/$name.before/summary.json" "$work/$name.after/summary.json" \
+            "$rtol" "$name" <<'EOF'
+import json, sys
+a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+rtol = float(sys.argv[3]); name = sys.argv[4]
+SKIP = {"seconds", "files", "scene", "peak_memory_mb", "output_directory"}
+diffs = []; count = [0, 0]; worst = [0.0]
+def walk(x, y, path):
+    if isinstance(x, dict) and isinstance(y, dict):
+        for k in sorted(set(x) | set(y)):
+            if k in SKIP: continue
+            if k not in x or k not in y: diffs.append(f"{path}/{k}: only in {'after' if k in y else 'before'}"); continue
+            walk(x[k], y[k], f"{path}/{k}")
+    elif isinstance(x, list) and isinstance(y, list):
+        if len(x) != len(y): diffs.append(f"{path}: length {len(x)} vs {len(y)}"); return
+        for i, (u, v) in enumerate(zip(x, y)): walk(u, v, f"{path}[{i}]")
+    elif isinstance(x, bool) or isinstance(y, bool) or isinstance(x, str) or isinstance(y, str) or x is None or y is None:
+        count[1] += 1
+        if x != y: diffs.append(f"{path}: {x!r} vs {y!r}")
+    else:
+        count[0] += 1
+        scale = max(abs(x), abs(y))
+        rel = abs(x - y) / scale if scale > 0 else 0.0
+        worst[0] = max(worst[0], rel)
+        if rel > rtol: diffs.append(f"{path}: {x!r} vs {y!r} (relative {rel:.2e})")
+walk(a, b, "")
+path = a.get("linear_solver", {}).get("method", a.get("method", "-"))
+if diffs:
+    print(f"{name}: DIFFERENT ({len(diffs)} of {count[0]} numbers / {count[1]} strings)")
+    for d in diffs[:20]: print("   ", d)
+    sys.exit(1)
+print(f"{name}: same ({count[0]} numbers, largest relative difference {worst[0]:.1e}; {count[1]} strings equal; solver {path})")
+EOF
+    then
+        status=1
+    fi
+done
+exit $status
