@@ -17,8 +17,8 @@ if [[ $# -lt 2 ]]; then
     echo "usage: $0 BEFORE_PD AFTER_PD [SCENE.yaml ...]" >&2
     exit 2
 fi
-before=$1
-after=$2
+before=$(realpath "$1")
+after=$(realpath "$2")
 shift 2
 repo=$(cd "$(dirname "$0")/.." && pwd)
 if [[ $# -gt 0 ]]; then scenes=("$@"); else scenes=("$repo"/scenes/*.yaml); fi
@@ -28,11 +28,9 @@ rtol=${PD_COMPARE_RTOL:-1e-12}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-status=0
-for scene in "${scenes[@]}"; do
-    name=$(basename "$scene" .yaml)
-    copy="$work/$name.yaml"
-    # Cap count and steps in a copy; everything else (relative paths included) stays as written.
+# A capped copy of SCENE as $work/NAME.yaml, with EXTRA (YAML lines) appended.
+prepare() {
+    local name=$1 scene=$2 extra=$3
     awk -v mc="$max_count" -v ms="$max_steps" '
         match($0, /^( *)count: *[0-9]+/) {
             n = substr($0, RSTART, RLENGTH); sub(/.*: */, "", n)
@@ -42,7 +40,30 @@ for scene in "${scenes[@]}"; do
             n = substr($0, RSTART, RLENGTH); sub(/.*: */, "", n)
             if (ms > 0 && n + 0 > ms) sub(/steps: *[0-9]+/, "steps: " ms)
         }
-        { print }' "$scene" > "$copy"
+        { print }' "$scene" > "$work/$name.yaml"
+    [[ -n $extra ]] && printf '%s\n' "$extra" >> "$work/$name.yaml"
+    names+=("$name"); sources+=("$scene")
+}
+names=(); sources=()
+for scene in "${scenes[@]}"; do prepare "$(basename "$scene" .yaml)" "$scene" ""; done
+# No scene in scenes/ takes the matrix-free or assembled-Krylov paths, so the crack scene
+# (which has no solver section) is also run on each of them: `auto` sent matrix-free by a
+# low direct_max_nonzeros (short-horizon preconditioner, then Jacobi), each named, and CG.
+if [[ $# -eq 0 && -f $repo/scenes/crack.yaml ]]; then
+    crack=$repo/scenes/crack.yaml
+    prepare crack+auto_short_horizon "$crack" "solver: {direct_max_nonzeros: 1000}"
+    prepare crack+auto_jacobi "$crack" "solver: {direct_max_nonzeros: 1000, preconditioner_max_nonzeros: 1000}"
+    prepare crack+matrix_free_diagonal "$crack" "solver: {linear: matrix_free, preconditioner: diagonal}"
+    prepare crack+matrix_free_short "$crack" "solver: {linear: matrix_free, preconditioner: short_horizon}"
+    prepare crack+cg_ic "$crack" "solver: {linear: cg, preconditioner: ic}"
+    prepare crack+bicgstab "$crack" "solver: {linear: bicgstab}"
+fi
+
+status=0
+for i in "${!names[@]}"; do
+    name=${names[$i]}
+    scene=${sources[$i]}
+    copy="$work/$name.yaml"
     for side in before after; do
         pd=$before; [[ $side == after ]] && pd=$after
         rc=0

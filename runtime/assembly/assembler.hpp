@@ -28,13 +28,6 @@ struct AssemblerOptions {
 // formed by pd::form_local_matrix and written straight into the family's precomputed
 // slots. Results do not depend on the thread count, bit for bit.
 //
-// Measured against the atomic-add assembler with a slot search per block
-// (the first runtime's assembler, since removed), Silling plane strain, best of 3, 2-core machine under
-// other load: 100^2 at delta/h = 3.5 (4.8e6 nonzeros, 15 colours) stiffness 171 ms vs
-// 560 ms on 1 thread (1001 ms on 2: atomics contend); 200^2 at delta/h = 1.5 (3.9e6
-// nonzeros, 4 colours) 85 ms vs 199 ms on 1 thread, 44 ms vs 119 ms on 2. Values agree
-// to 2e-15. The slot table costs a one-off 0.1-0.3 s to build.
-//
 // Every kernel output is checked before it is scattered; a NaN or Inf throws
 // std::runtime_error naming the stage, the law and the particle (the lowest one if
 // several families fail).

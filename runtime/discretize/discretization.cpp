@@ -230,6 +230,10 @@ bool segment_crosses_polygon(const double* p, const double* q, const std::vector
 }
 }  // namespace
 
+bool crack_crosses(const Crack& c, const double* xa, const double* xb, int dim) {
+  return dim == 2 ? segments_cross(xa, xb, c.points[0], c.points[1]) : segment_crosses_polygon(xa, xb, c.points);
+}
+
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds) {
   int broken = 0;
   const int d = p.dim;
@@ -241,7 +245,7 @@ int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds
       const double* xa = p.position(lo);
       const double* xb = p.position(hi);
       for (const Crack& c : cracks) {
-        const bool cross = d == 2 ? segments_cross(xa, xb, c.points[0], c.points[1]) : segment_crosses_polygon(xa, xb, c.points);
+        const bool cross = crack_crosses(c, xa, xb, d);
         if (cross && bonds.alpha[b] != 0.0) {
           bonds.alpha[b] = 0.0;
           ++broken;

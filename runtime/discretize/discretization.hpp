@@ -37,6 +37,10 @@ int drop_negligible_bonds(Bonds& bonds);
 // short-horizon preconditioner from.
 double mean_short_family_size(const Bonds& bonds, double short_delta, double (*influence)(double r, double delta));
 
+// Whether the segment from xa to xb crosses the crack (a segment in 2D, a planar
+// polygon in 3D). cut_bonds passes the lower-indexed particle as xa.
+bool crack_crosses(const Crack& crack, const double* xa, const double* xb, int dim);
+
 // Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
 // broken bonds (each counted once per direction).
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);

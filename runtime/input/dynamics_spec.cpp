@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "input/scene.hpp"
+#include "input/enum_choice.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace pd {
@@ -45,8 +46,8 @@ InitialCondition read_initial(const YamlAt& at, int dim) {
 DynamicsSpec read_dynamics(const YamlAt& at, int dim) {
   MapReader m(at);
   DynamicsSpec d;
-  d.method = m.choice("method", "explicit", {"explicit", "relaxation"});
-  const bool explicit_method = d.method == "explicit";
+  d.method = enum_choice(m, "method", DynamicsMethod::explicit_verlet);
+  const bool explicit_method = d.method == DynamicsMethod::explicit_verlet;
   if (explicit_method) {
     d.steps = m.integer("steps", 0);
     if (d.steps < 1) (m.has("steps") ? m.get("steps") : at).fail("steps (the number of time steps) must be at least 1");

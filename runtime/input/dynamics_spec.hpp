@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "input/region.hpp"
+#include "solve/solver_spec.hpp"  // all_values
 
 namespace pd {
 
@@ -22,8 +23,21 @@ struct InitialCondition {
   std::string where;  // "file:line: dynamics.initial[i]"
 };
 
+// explicit (velocity Verlet) | relaxation (adaptive dynamic relaxation)
+enum class DynamicsMethod { explicit_verlet, relaxation };
+constexpr std::string_view name_of(DynamicsMethod m) {
+  switch (m) {
+    case DynamicsMethod::explicit_verlet: return "explicit";
+    case DynamicsMethod::relaxation: return "relaxation";
+  }
+  return "?";
+}
+template <> struct all_values<DynamicsMethod> {
+  static constexpr std::array values{DynamicsMethod::explicit_verlet, DynamicsMethod::relaxation};
+};
+
 struct DynamicsSpec {
-  std::string method = "explicit";  // explicit (velocity Verlet) | relaxation (adaptive dynamic relaxation)
+  DynamicsMethod method = DynamicsMethod::explicit_verlet;
   int steps = 0;                    // explicit: time steps (required); relaxation: the iteration limit
   double dt = 0;                    // explicit: a fixed step; 0: the estimate times safety_factor
   double safety_factor = 0.8;       // fraction of the estimated stable step

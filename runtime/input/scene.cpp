@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
 #include "post/smoothing.hpp"
@@ -391,39 +392,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.cracks.push_back(crack);
     }
   }
-  if (m.has("solver")) {
-    MapReader sv(m.get("solver"));
-    s.solver.linear = sv.choice("linear", "auto", {"auto", "cholmod", "umfpack", "cg", "bicgstab", "matrix_free"});
-    s.solver.preconditioner = sv.choice("preconditioner", "auto", {"auto", "ic", "diagonal", "ilut", "short_horizon"});
-    s.solver.preconditioner_ratio = sv.number("preconditioner_ratio", 2.0);
-    if (!(s.solver.preconditioner_ratio >= 1.0)) sv.get("preconditioner_ratio").fail("must be at least 1 (a horizon of one spacing)");
-    if ((s.solver.linear == "cg" && s.solver.preconditioner == "ilut") ||
-        (s.solver.linear == "bicgstab" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "diagonal")) ||
-        ((s.solver.linear == "cholmod" || s.solver.linear == "umfpack") && s.solver.preconditioner != "auto") ||
-        (s.solver.linear != "matrix_free" && s.solver.preconditioner == "short_horizon") ||
-        (s.solver.linear == "matrix_free" && (s.solver.preconditioner == "ic" || s.solver.preconditioner == "ilut")))
-      sv.get("preconditioner").fail("preconditioner '" + s.solver.preconditioner + "' does not go with linear solver '" +
-                                    s.solver.linear + "' (cg: ic or diagonal; bicgstab: ilut; matrix_free: short_horizon or diagonal)");
-    s.solver.nonlinear = sv.choice("nonlinear", "newton", {"newton"});
-    s.solver.load_steps = sv.integer("load_steps", 1);
-    if (s.solver.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
-    s.solver.tolerance = sv.number("tolerance", 1e-10);
-    s.solver.max_iterations = sv.integer("max_iterations", 30);
-    s.solver.increment_tolerance = sv.number("increment_tolerance", 1e-9);
-    s.solver.krylov_tolerance = sv.number("krylov_tolerance", 1e-12);
-    s.solver.krylov_max_iterations = sv.integer("krylov_max_iterations", 0);
-    if (s.solver.krylov_max_iterations < 0) sv.get("krylov_max_iterations").fail("must be 0 (automatic) or positive");
-    const double direct_max = sv.number("direct_max_nonzeros", 2e6);
-    if (!(direct_max >= 0) || direct_max > 9e18) sv.get("direct_max_nonzeros").fail("must be a non-negative count");
-    s.solver.direct_max_nonzeros = static_cast<long long>(direct_max);
-    const double preconditioner_max = sv.number("preconditioner_max_nonzeros", 4e7);
-    if (!(preconditioner_max >= 0) || preconditioner_max > 9e18)
-      sv.get("preconditioner_max_nonzeros").fail("must be a non-negative count");
-    s.solver.preconditioner_max_nonzeros = static_cast<long long>(preconditioner_max);
-    if (s.solver.tolerance <= 0 || s.solver.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
-    if (s.solver.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
-    sv.finish();
-  }
+  if (m.has("solver")) s.solver = read_solver(m.get("solver"));
   if (m.has("output")) {
     MapReader o(m.get("output"));
     s.output.directory = o.text("directory", "out");
@@ -474,7 +443,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     for (const Crack& c : s.cracks)
       if (c.time) throw SceneError(c.time_where + ": time functions need a dynamics section (a static crack pressure follows the load factor)");
   }
-  if (s.dynamics && s.dynamics->method == "relaxation") {
+  if (s.dynamics && s.dynamics->method == DynamicsMethod::relaxation) {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
       if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
@@ -482,7 +451,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     for (const Crack& c : s.cracks)
       if (c.time) throw SceneError(c.time_where + ": relaxation solves the static problem: no time functions");
   }
-  if (s.dynamics && s.dynamics->method == "relaxation")
+  if (s.dynamics && s.dynamics->method == DynamicsMethod::relaxation)
     for (const InitialCondition& ic : s.dynamics->initial)
       if (ic.velocity != Point{}) throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");
   m.finish();

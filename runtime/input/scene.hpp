@@ -14,6 +14,7 @@
 #include "input/region.hpp"
 #include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
+#include "solve/solver_spec.hpp"
 
 namespace pd {
 
@@ -62,29 +63,6 @@ struct Crack {
   // Dynamic scenes: the pressure is scaled by f(t); without one it acts from t = 0.
   std::optional<TimeFunction> time;
   std::string time_where;  // "file:line: cracks[i].time_function"
-};
-
-struct SolverSpec {
-  // auto | cholmod | umfpack | cg | bicgstab | matrix_free (Newton-Krylov on the
-  // generated tangent-vector product, never forming K)
-  std::string linear = "auto";
-  std::string preconditioner = "auto";  // cg: ic | diagonal; bicgstab: ilut; matrix_free: short_horizon | diagonal
-  double preconditioner_ratio = 2.0;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
-  std::string nonlinear = "newton";  // the only nonlinear method so far; the key keeps scenes explicit
-  int load_steps = 1;
-  double tolerance = 1e-10;     // on the residual norm relative to the load
-  double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
-  int max_iterations = 30;
-  double krylov_tolerance = 1e-12;
-  int krylov_max_iterations = 0;  // 0: 2 x unknowns for assembled Krylov, 20000 matrix-free
-  // auto: the assembled tangent (a direct solver) up to this many estimated nonzeros,
-  // matrix-free above. On the crack at delta/h = 3.5 (one run, shared machine) CHOLMOD
-  // and the short-horizon matrix-free path broke even near 1.5e6 nonzeros (60^2: 1.10 s
-  // vs 0.86 s); at 100^2 (4.3e6) matrix-free took 3.9 s against CHOLMOD's 15 s.
-  long long direct_max_nonzeros = 2'000'000;
-  // auto, above direct_max_nonzeros: the short-horizon preconditioner while its stiffness
-  // has at most this many nonzeros (its factor must fit in memory), Jacobi above
-  long long preconditioner_max_nonzeros = 40'000'000;
 };
 
 struct OutputSpec {

@@ -14,31 +14,50 @@
 
 namespace pd {
 
+std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& particles) {
+  using K = BoundaryCondition::Kind;
+  const int d = particles.dim;
+  std::vector<int> entry(static_cast<std::size_t>(particles.size()) * d, -1);
+  std::vector<PrescribedDof> out;
+  for (std::size_t ci = 0; ci < scene.boundary.size(); ++ci) {
+    const BoundaryCondition& bc = scene.boundary[ci];
+    if (bc.kind == K::Traction || bc.kind == K::BodyForce) continue;
+    const auto ids = region_particles(bc.region, particles, scene);
+    if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
+    std::unique_ptr<AnalyticField> field;
+    if (bc.kind == K::Field) field = std::make_unique<AnalyticField>(bc.field, scene.materials[0].elastic);
+    for (int p : ids)
+      for (int c = 0; c < d; ++c) {
+        if (!bc.components[c]) continue;
+        const int dof = p * d + c;
+        const double value = bc.kind == K::Fixed ? 0.0 : field ? field->displacement(particles.position(p))[c] : bc.values[c];
+        const PrescribedDof q{dof, bc.kind, value, static_cast<int>(ci)};
+        if (entry[dof] < 0) entry[dof] = static_cast<int>(out.size()), out.push_back(q);
+        else out[entry[dof]] = q;
+      }
+  }
+  return out;
+}
+
 DofMap scene_constraints(const Scene& scene, const Particles& particles) {
   const int d = particles.dim;
   const std::size_t n = static_cast<std::size_t>(particles.size()) * d;
   std::vector<double> value(n, 0.0);
   std::vector<char> fixed(n, 0);
-  // The field condition that set each dof, when its values are not proportional to the load.
+  // The field condition that set each dof, when its values are not proportional to the
+  // load (a rotation: DofMap::set_load_path).
+  std::vector<std::shared_ptr<const AnalyticField>> rotation(scene.boundary.size());
+  for (std::size_t ci = 0; ci < scene.boundary.size(); ++ci) {
+    const BoundaryCondition& bc = scene.boundary[ci];
+    if (bc.kind != BoundaryCondition::Kind::Field) continue;
+    auto field = std::make_shared<const AnalyticField>(bc.field, scene.materials[0].elastic);
+    if (field->name() == "rotation") rotation[ci] = std::move(field);
+  }
   std::vector<std::shared_ptr<const AnalyticField>> path(n);
-  for (const BoundaryCondition& bc : scene.boundary) {
-    if (bc.kind != BoundaryCondition::Kind::Fixed && bc.kind != BoundaryCondition::Kind::Displacement &&
-        bc.kind != BoundaryCondition::Kind::Field)
-      continue;
-    const auto ids = region_particles(bc.region, particles, scene);
-    if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
-    std::shared_ptr<const AnalyticField> field;
-    if (bc.kind == BoundaryCondition::Kind::Field) field = std::make_shared<const AnalyticField>(bc.field, scene.materials[0].elastic);
-    const bool nonlinear_path = field && field->name() == "rotation";
-    for (int p : ids)
-      for (int c = 0; c < d; ++c) {
-        if (!bc.components[c]) continue;
-        fixed[p * d + c] = 1;
-        path[p * d + c] = nonlinear_path ? field : nullptr;
-        value[p * d + c] = bc.kind == BoundaryCondition::Kind::Fixed ? 0.0
-                           : field ? field->displacement(particles.position(p))[c]
-                                   : bc.values[c];
-      }
+  for (const PrescribedDof& q : prescribed_dofs(scene, particles)) {
+    fixed[q.dof] = 1;
+    value[q.dof] = q.value;
+    path[q.dof] = rotation[q.condition];
   }
   DofMap dofs(fixed, value);
   if (std::any_of(path.begin(), path.end(), [](const auto& f) { return f != nullptr; }))

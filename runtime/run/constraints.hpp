@@ -2,14 +2,30 @@
 // cluster of particles joined by intact bonds must have its rigid-body modes removed.
 #pragma once
 
+#include <vector>
+
 #include "input/scene.hpp"
 #include "particles.hpp"
 #include "solve/dof_map.hpp"
 
 namespace pd {
 
+// One constrained dof: the condition (index into scene.boundary) that sets it last, its
+// kind, and its value at full load (velocity conditions: the velocity).
+struct PrescribedDof {
+  int dof;
+  BoundaryCondition::Kind kind;
+  double value;
+  int condition;
+};
+
+// Every dof a fixed, displacement, field or velocity condition constrains, in the order
+// the conditions first reach them; a later condition on the same component overrides
+// an earlier one. Throws SceneError naming the condition whose region is empty.
+std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& particles);
+
 // The constrained dofs (fixed, prescribed and analytic-field conditions) with their
-// values at full load. Throws SceneError naming the condition whose region is empty.
+// values at full load, as the static solver's DofMap. Throws SceneError naming the condition whose region is empty.
 DofMap scene_constraints(const Scene& scene, const Particles& particles);
 
 // Throws std::runtime_error naming the particles of a cluster (or the whole body) whose

@@ -16,6 +16,8 @@
 #include "damage/critical_stretch.hpp"
 #include "output/particle_fields.hpp"
 #include "input/scene.hpp"
+#include "model/model.hpp"
+#include "run/constraints.hpp"
 #include "run/effects.hpp"
 #include "run/simulation.hpp"
 
@@ -40,12 +42,12 @@ class DynamicSimulation {
   // writing the checkpoints due). Throws on failure.
   RunSummary run(bool write_outputs = true, int stop_after = 0);
 
-  const Particles& particles() const { return particles_; }
-  const Bonds& bonds() const { return bonds_; }
+  const Particles& particles() const { return model_.particles; }
+  const Bonds& bonds() const { return model_.bonds; }
   const std::vector<double>& displacement() const { return u_; }
   const std::vector<double>& velocity() const { return v_; }
   const std::vector<SeriesRow>& series() const { return series_; }
-  const FamilyAssembler& assembler() const { return *assembler_; }
+  const FamilyAssembler& assembler() const { return *model_.assembler; }
   const CriticalStretchDamage* damage() const { return damage_.get(); }
   bool has_masses() const { return !mass_.empty(); }
   const Scene& scene() const { return scene_; }
@@ -54,12 +56,6 @@ class DynamicSimulation {
   struct TimedLoad {
     std::unique_ptr<Effect> effect;
     TimeFunction time;
-  };
-  struct Prescribed {
-    int dof;
-    BoundaryCondition::Kind kind;
-    double value;
-    int condition;  // index into scene_.boundary
   };
   void setup_constraints();
   void apply_initial_conditions();
@@ -76,18 +72,15 @@ class DynamicSimulation {
   void write_snapshot(int step, double t);
   std::vector<OutputField> output_fields() const;
   void write_results();
-  std::vector<ProbeResult> evaluate_probes() const;
   RunSummary run_explicit(bool write, int stop_after);
   RunSummary run_relaxation(bool write, int stop_after);
 
-  Scene scene_;
+  const Scene scene_;  // never changed after reading
   Log log_;
-  Particles particles_;
-  Bonds bonds_;
-  std::unique_ptr<FamilyAssembler> assembler_;
+  Model model_;
   std::unique_ptr<CriticalStretchDamage> damage_;
   std::vector<TimedLoad> loads_;
-  std::vector<Prescribed> prescribed_;
+  std::vector<PrescribedDof> prescribed_;
   std::vector<int> free_, constrained_;
   std::vector<std::vector<int>> probe_ids_;
   std::vector<double> mass_;             // explicit only: rho V per dof

@@ -3,10 +3,12 @@
 
 #include <string>
 
+#include "input/dynamics_spec.hpp"
+
 namespace pd {
 
 struct DynamicsReport {
-  std::string method;        // "explicit" (velocity Verlet) or "relaxation" (ADR)
+  DynamicsMethod method = DynamicsMethod::explicit_verlet;  // velocity Verlet or ADR
   int first_step = 0;        // 0, or the checkpoint's step on a restart
   int last_step = 0;         // the step (iteration) the run ended at
   double dt = 0;             // the step used (explicit); 1 for relaxation

@@ -131,10 +131,15 @@ std::unique_ptr<Effect> make_nodal_forces(std::vector<double> f, std::string des
 }
 
 std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) {
+  return make_external_loads(s, p, s.boundary);
+}
+
+std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p,
+                                            std::span<const BoundaryCondition> conditions) {
   const int d = s.dim;
   std::vector<double> f(static_cast<std::size_t>(p.size()) * d, 0.0);
   int tractions = 0, body = 0;
-  for (const BoundaryCondition& bc : s.boundary) {
+  for (const BoundaryCondition& bc : conditions) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
     const auto ids = region_particles(bc.region, p, s);
     if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
@@ -154,13 +159,15 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p) 
 }
 
 std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, const Bonds& bonds) {
+  return make_crack_pressure(s.cracks, s.h, p, bonds);
+}
+
+std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, double h, const Particles& p,
+                                            const Bonds& bonds) {
   std::vector<PressurePair> pairs;
-  const int d = s.dim;
-  for (const Crack& crack : s.cracks) {
+  const int d = p.dim;
+  for (const Crack& crack : cracks) {
     if (crack.pressure == 0) continue;
-    Bonds single = bonds;
-    std::fill(single.alpha.begin(), single.alpha.end(), 1.0);
-    cut_bonds({crack}, p, single);
     // The crack's unit normal and measure (length in 2D, polygon area in 3D).
     double normal[3] = {0, 0, 0}, measure = 0;
     if (d == 2) {
@@ -183,7 +190,7 @@ std::unique_ptr<Effect> make_crack_pressure(const Scene& s, const Particles& p, 
       for (int e = bonds.offsets[a]; e < bonds.offsets[a + 1]; ++e) {
         const int b = bonds.neighbor[e];
         // Nearest neighbours only (|xi| < 1.2 h): the particles facing each other across the crack.
-        if (b <= a || single.alpha[e] != 0.0 || bonds.length[e] > 1.2 * s.h) continue;
+        if (b <= a || bonds.length[e] > 1.2 * h || !crack_crosses(crack, p.position(a), p.position(b), d)) continue;
         const double magnitude = crack.pressure * p.volume[b] / bonds.length[e];
         double cosine = 0;
         for (int c = 0; c < d; ++c) cosine += normal[c] * bonds.xi[e * d + c] / bonds.length[e];

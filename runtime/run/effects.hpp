@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,21 @@ std::unique_ptr<Effect> make_nodal_forces(std::vector<double> f, std::string des
 // Dead loads: tractions on boundary particles (paper 000 eq. 34: the total force T x
 // face measure shared equally by the region's particles) and body forces (per volume).
 std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles& p);
+// The same for some of the scene's conditions only (a dynamic run scales each by its own
+// function of time); the others in `conditions` are skipped.
+std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles& p,
+                                            std::span<const BoundaryCondition> conditions);
 
 // Crack pressure on the broken bonds between nearest neighbours across a crack
 // (paper 000 eqs. 23, 30): a pair force of magnitude p V / |xi| along the deformed
 // bond, pushing the two particles apart (p h per face particle for |xi| = h in 2D). On a
 // perturbed cloud the pair forces are scaled so the total normal load on each face is
 // still p x crack length (area in 3D); on the paper's lattice the scale is exactly 1.
+// One effect for all the pressurised cracks given; h: the particle spacing (the pairs
+// are the nearest neighbours, |xi| < 1.2 h, whose bond the crack crosses). Reads the
+// bonds and particles without copying them.
+std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, double h, const Particles& p,
+                                            const Bonds& bonds);
 std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds);
 
 }  // namespace pd

@@ -3,9 +3,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run/simulation.hpp"
+#include "run/run_summary.hpp"
 
 namespace pd {
+
+void RunSummary::describe(const Scene& s, const Model& model) {
+  scene = s.file;
+  law = model.law->name;
+  influence = model.influence->name;
+  particles = model.particles.size();
+  bonds = model.bond_count;
+  broken_bonds = model.cut_by_cracks;
+}
 
 std::string RunSummary::json() const {
   nlohmann::ordered_json j;
@@ -20,16 +29,16 @@ std::string RunSummary::json() const {
   j["unknowns"] = newton.unknowns;
   if (dynamics) {
     const DynamicsReport& d = *dynamics;
-    nlohmann::ordered_json dj{{"method", d.method}, {"first_step", d.first_step}, {"last_step", d.last_step},
+    nlohmann::ordered_json dj{{"method", std::string(name_of(d.method))}, {"first_step", d.first_step}, {"last_step", d.last_step},
                               {"time", d.time}, {"dt", d.dt}};
-    if (d.method == "explicit") dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
-    if (d.method == "relaxation") dj["last_adaptive_coefficient"] = d.damping;
+    if (d.method == DynamicsMethod::explicit_verlet) dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
+    if (d.method == DynamicsMethod::relaxation) dj["last_adaptive_coefficient"] = d.damping;
     else if (d.damping > 0) dj["viscous_damping"] = d.damping;
     nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
     if (d.strain_available) energy["strain"] = d.strain;
     else energy["strain"] = "unavailable (the law has no energy kernel)";
-    if (d.method == "explicit") dj["energy"] = energy;
-    if (d.method == "relaxation") dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
+    if (d.method == DynamicsMethod::explicit_verlet) dj["energy"] = energy;
+    if (d.method == DynamicsMethod::relaxation) dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
     dj["bonds_broken"] = d.bonds_broken;
     if (!d.restarted_from.empty()) dj["restarted_from"] = d.restarted_from;
     dj["checkpoints"] = d.checkpoints;
@@ -76,10 +85,10 @@ std::string RunSummary::text() const {
   if (dynamics) {
     const DynamicsReport& d = *dynamics;
     s += fmt::format("unknowns: {}\n{}: steps {}..{}, t = {:.6g}, dt = {:.6g}{}\n", newton.unknowns,
-                     d.method == "explicit" ? "explicit dynamics (velocity Verlet)" : "adaptive dynamic relaxation",
+                     d.method == DynamicsMethod::explicit_verlet ? "explicit dynamics (velocity Verlet)" : "adaptive dynamic relaxation",
                      d.first_step, d.last_step, d.time, d.dt,
-                     d.method == "explicit" ? fmt::format(" ({}; stable estimate {:.6g})", d.dt_rule, d.dt_stable) : "");
-    if (d.method == "explicit")
+                     d.method == DynamicsMethod::explicit_verlet ? fmt::format(" ({}; stable estimate {:.6g})", d.dt_rule, d.dt_stable) : "");
+    if (d.method == DynamicsMethod::explicit_verlet)
       s += fmt::format("energy: kinetic {:.9g} strain {} external work {:.9g}\n", d.kinetic,
                        d.strain_available ? fmt::format("{:.9g}", d.strain) : std::string("unavailable (no energy kernel)"),
                        d.external_work);

@@ -1,8 +1,6 @@
 // The static run driver.
 #include "run/simulation.hpp"
 
-#include "run/solver_path.hpp"
-
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -22,73 +20,59 @@
 #include "output/vtu_writer.hpp"
 #include "damage/critical_stretch.hpp"
 #include "post/smoothing.hpp"
-#include "run/body_setup.hpp"
+#include "model/model.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
-#include "run/solver_path.hpp"
+#include "run/run_outputs.hpp"
+#include "solve/stopwatch.hpp"
+#include "solve/solver_plan.hpp"
 
 namespace pd {
-
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 Simulation::~Simulation() = default;
 
 Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(std::move(log)) {
   const auto t0 = std::chrono::steady_clock::now();
-  BodySetup body = set_up_body(scene_, summary_);
-  const abi::LawDescriptor* law = body.law;
-  const abi::InfluenceDescriptor* influence = body.influence;
-  particles_ = std::move(body.particles);
-  bonds_ = std::move(body.bonds);
-  const FamilyQualityReport& quality = body.quality;
-  std::vector<std::vector<double>> params = std::move(body.params);
+  model_ = build_model(scene_);
+  summary_.describe(scene_, model_);
+  const abi::LawDescriptor* law = model_.law;
+  const abi::InfluenceDescriptor* influence = model_.influence;
+  const FamilyQualityReport& quality = model_.quality;
   // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
   // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
   const double short_delta = std::min(scene_.delta(), scene_.solver.preconditioner_ratio * scene_.h);
   // Only `auto` sizes the preconditioner before choosing (a pass over every bond).
-  const bool deciding = scene_.solver.linear == "auto" && scene_.solver.preconditioner == "auto";
-  const SolverPath path = choose_solver_path(scene_.solver, particles_.size(),
-                                             2.0 * static_cast<double>(summary_.bonds) / particles_.size(),
-                                             particles_.dim, scene_.delta() / scene_.h,
-                                             deciding ? mean_short_family_size(bonds_, short_delta, influence->weight) : -1);
-  scene_.solver.linear = path.linear;
-  scene_.solver.preconditioner = path.preconditioner;
-  summary_.solver_path = path.reason;
-  AssemblerOptions options;
-  // A scene with damage needs the damaged variant from the start: bonds may break.
-  options.intact = summary_.broken_bonds == 0 && !scene_.damage;
-  options.matrix = scene_.solver.linear != "matrix_free";
-  if (matrix_free_preconditioner() == "approximate") {
+  const double short_family =
+      plan_needs_short_family_size(scene_.solver) ? mean_short_family_size(model_.bonds, short_delta, influence->weight) : -1;
+  plan_ = plan_solver(scene_.solver, model_.size(scene_, short_family));
+  summary_.solver_path = plan_.reason;
+  if (plan_.short_horizon_preconditioner()) {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
     // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
-    short_bonds_ = find_bonds(particles_, short_delta, influence->weight);
+    short_bonds_ = find_bonds(model_.particles, short_delta, influence->weight);
     drop_negligible_bonds(short_bonds_);
-    const int cut = cut_bonds(scene_.cracks, particles_, short_bonds_);
+    const int cut = cut_bonds(scene_.cracks, model_.particles, short_bonds_);
     AssemblerOptions short_options;
     short_options.intact = cut == 0 && !scene_.damage;
-    approximation_ = std::make_unique<FamilyAssembler>(particles_, short_bonds_, *law, params, short_options);
+    approximation_ = std::make_unique<FamilyAssembler>(model_.particles, short_bonds_, *law, model_.params, short_options);
   }
-  assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, std::move(params), options);
-  const StrainModeReport modes = check_strain_modes(*assembler_, influence->name, scene_.delta() / scene_.h);
+  const AssemblerOptions options = attach_assembler(model_, scene_, !plan_.matrix_free());
+  const StrainModeReport modes = check_strain_modes(*model_.assembler, influence->name, scene_.delta() / scene_.h);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
                                          influence->name));
-  if (auto e = make_external_loads(scene_, particles_)) effects_.push_back(std::move(e));
-  if (auto e = make_crack_pressure(scene_, particles_, bonds_)) effects_.push_back(std::move(e));
+  if (auto e = make_external_loads(scene_, model_.particles)) effects_.push_back(std::move(e));
+  if (auto e = make_crack_pressure(scene_, model_.particles, model_.bonds)) effects_.push_back(std::move(e));
   for (const auto& e : effects_) summary_.effects.push_back(e->describe());
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
     const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
-    damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
-    if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(particles_, short_bonds_, s0, scene_.damage->tension_only);
+    damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, model_.bonds, s0, scene_.damage->tension_only);
+    if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, short_bonds_, s0, scene_.damage->tension_only);
     summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim) +
                                fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
   }
-  u_.assign(static_cast<std::size_t>(particles_.size()) * particles_.dim, 0.0);
+  u_.assign(static_cast<std::size_t>(model_.particles.size()) * model_.particles.dim, 0.0);
   summary_.setup_seconds = seconds_since(t0);
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
                    summary_.particles, summary_.bonds, scene_.delta(), scene_.delta() / scene_.h, summary_.setup_seconds));
@@ -112,11 +96,6 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
                      modes.blind.size(), modes.blind.front()));
 }
 
-std::string Simulation::matrix_free_preconditioner() const {
-  if (scene_.solver.linear != "matrix_free") return "";
-  return scene_.solver.preconditioner == "diagonal" ? "diagonal" : "approximate";
-}
-
 NewtonSettings Simulation::newton_settings() const {
   const SolverSpec& sv = scene_.solver;
   NewtonSettings s;
@@ -124,10 +103,11 @@ NewtonSettings Simulation::newton_settings() const {
   s.max_iterations = sv.max_iterations;
   s.relative_tolerance = sv.tolerance;
   s.increment_tolerance = sv.increment_tolerance;
-  s.matrix_free = sv.linear == "matrix_free";
-  s.matrix_free_preconditioner = matrix_free_preconditioner();
-  s.linear.method = s.matrix_free ? "auto" : sv.linear;
-  s.linear.preconditioner = sv.preconditioner;
+  s.matrix_free = plan_.matrix_free();
+  s.matrix_free_preconditioner = plan_.short_horizon_preconditioner() ? MatrixFreePreconditioner::approximate_tangent
+                                                                      : MatrixFreePreconditioner::jacobi;
+  s.linear.method = s.matrix_free ? LinearMethod::automatic : plan_.linear;
+  s.linear.preconditioner = plan_.preconditioner;
   s.linear.tolerance = sv.krylov_tolerance;
   s.linear.max_iterations = sv.krylov_max_iterations;
   s.linear.direct_max_nonzeros = sv.direct_max_nonzeros;
@@ -137,63 +117,29 @@ NewtonSettings Simulation::newton_settings() const {
   return s;
 }
 
-std::vector<ProbeResult> Simulation::evaluate_probes() const {
-  std::vector<ProbeResult> out;
-  for (const Probe& pr : scene_.probes) {
-    ProbeResult r;
-    r.name = pr.name;
-    const auto ids = region_particles(pr.region, particles_, scene_);
-    if (ids.empty()) throw SceneError(pr.where + ": the region holds no particle");
-    r.particles = static_cast<int>(ids.size());
-    std::unique_ptr<AnalyticField> field;
-    if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene_.materials[0].elastic);
-    for (int p : ids) {
-      r.value += u_[p * particles_.dim + pr.component];
-      if (field) r.reference += field->displacement(particles_.position(p))[pr.component];
-    }
-    r.value /= static_cast<double>(ids.size());
-    r.reference /= static_cast<double>(ids.size());
-    r.has_reference = static_cast<bool>(field);
-    r.error = std::fabs(r.value - r.reference);
-    out.push_back(r);
-  }
-  return out;
-}
-
-double Simulation::field_error(const FieldSpec& reference, const std::vector<double>& u) const {
-  const AnalyticField field(reference, scene_.materials[0].elastic);
-  double num = 0, den = 0;
-  const int d = particles_.dim;
-  for (int p = 0; p < particles_.size(); ++p) {
-    const auto ua = field.displacement(particles_.position(p));
-    for (int c = 0; c < d; ++c) num += std::pow(ua[c] - u[p * d + c], 2), den += ua[c] * ua[c];
-  }
-  return den > 0 ? num / den : num;
-}
-
 double Simulation::reference_error(const std::vector<double>& u) const {
   if (!scene_.reference) throw std::logic_error("reference_error: the scene has no reference field");
-  return field_error(*scene_.reference, u);
+  return field_error(scene_, *scene_.reference, model_.particles, u);
 }
 
 void Simulation::smooth() {
   const abi::InfluenceDescriptor* w = abi::find_influence(scene_.output.smoothing_influence);
-  u_smooth_ = smooth_field(particles_, bonds_, w->weight, u_, particles_.dim);
+  u_smooth_ = smooth_field(model_.particles, model_.bonds, w->weight, u_, model_.particles.dim);
   double num = 0, den = 0;
   for (std::size_t i = 0; i < u_.size(); ++i) num += std::pow(u_[i] - u_smooth_[i], 2), den += u_[i] * u_[i];
   summary_.smoothing = w->name;
   summary_.oscillation = den > 0 ? std::sqrt(num / den) : 0.0;
   log_(fmt::format("  smoothing (paper 000 eq. 49, influence {}): |u - u_s| / |u| = {:.6e}", w->name, summary_.oscillation));
   if (scene_.reference) {
-    summary_.smoothed_field_error = field_error(*scene_.reference, u_smooth_);
+    summary_.smoothed_field_error = field_error(scene_, *scene_.reference, model_.particles, u_smooth_);
     log_(fmt::format("  field error of the smoothed solution (eq. 48): {:.6e}", summary_.smoothed_field_error));
   }
 }
 
 RunSummary Simulation::run(bool write) {
   const auto t0 = std::chrono::steady_clock::now();
-  const DofMap dofs = scene_constraints(scene_, particles_);
-  check_held(particles_, bonds_, dofs);
+  const DofMap dofs = scene_constraints(scene_, model_.particles);
+  check_held(model_.particles, model_.bonds, dofs);
   // No load at all: the solution is zero (and the residual is rounding noise).
   bool loaded = !effects_.empty();
   for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
@@ -201,9 +147,9 @@ RunSummary Simulation::run(bool write) {
 
   std::vector<const Effect*> effects;
   for (const auto& e : effects_) effects.push_back(e.get());
-  PeridynamicSystem system(*assembler_, effects, approximation_.get());
+  PeridynamicSystem system(*model_.assembler, effects, approximation_.get());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u_.size()));
-  const long long broken_before = broken_bond_count(bonds_);
+  const long long broken_before = broken_bond_count(model_.bonds);
   if (loaded) {
     NewtonSettings settings = newton_settings();
     if (damage_) {
@@ -217,27 +163,24 @@ RunSummary Simulation::run(bool write) {
   }
   summary_.solve_seconds = seconds_since(t0);
   if (damage_) {
-    summary_.bonds_broken_by_damage = broken_bond_count(bonds_) - broken_before;
-    summary_.broken_bonds = static_cast<int>(broken_bond_count(bonds_));
+    summary_.bonds_broken_by_damage = broken_bond_count(model_.bonds) - broken_before;
+    summary_.broken_bonds = static_cast<int>(broken_bond_count(model_.bonds));
   }
   if (!summary_.newton.linear_choice.empty())
     log_(fmt::format("  linear solver: {} ({})", summary_.newton.linear_solver, summary_.newton.linear_choice));
   if (!summary_.newton.converged) throw std::runtime_error(summary_.newton.message);
   for (Eigen::Index i = 0; i < u.size(); ++i)
     if (!std::isfinite(u[i]))
-      throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / particles_.dim, summary_.law));
+      throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / model_.particles.dim, summary_.law));
   u_.assign(u.data(), u.data() + u.size());
-  summary_.probes = evaluate_probes();
+  summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_);
   if (scene_.reference) {
     summary_.has_field_error = true;
-    summary_.field_error = field_error(*scene_.reference, u_);
+    summary_.field_error = field_error(scene_, *scene_.reference, model_.particles, u_);
     log_(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene_.reference->solution, summary_.field_error));
   }
   if (!scene_.output.smoothing_influence.empty()) smooth();
-  for (const auto& p : summary_.probes)
-    log_(p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
-                                       p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))
-                         : fmt::format("  probe {}: {:.9g}", p.name, p.value));
+  for (const auto& p : summary_.probes) log_(probe_log_line(p));
   if (write) write_outputs();
   return summary_;
 }
@@ -249,39 +192,33 @@ RunSummary Simulation::run(bool write) {
 long long Simulation::after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs) {
   const int broken = damage_->break_bonds(u.data());
   if (broken == 0) return 0;
-  assembler_->update_moments();
+  model_.assembler->update_moments();
   if (short_damage_ && short_damage_->break_bonds(u.data()) > 0) approximation_->update_moments();
   log_(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
-                   scene_.solver.load_steps, broken, broken_bond_count(bonds_)));
+                   scene_.solver.load_steps, broken, broken_bond_count(model_.bonds)));
   // A piece cut loose by the new crack faces would make K singular: say which.
-  check_held(particles_, bonds_, dofs);
+  check_held(model_.particles, model_.bonds, dofs);
   return broken;
 }
 
 void Simulation::write_outputs() {
   const auto t1 = std::chrono::steady_clock::now();
-  const int n = particles_.size(), d = particles_.dim;
+  const int d = model_.particles.dim;
   std::vector<OutputField> fields;
-  std::vector<double> material(particles_.material.begin(), particles_.material.end());
+  std::vector<double> material(model_.particles.material.begin(), model_.particles.material.end());
   fields.push_back({"material", 1, material});
-  fields.push_back({"damage", 1, particle_damage(bonds_)});
+  fields.push_back({"damage", 1, particle_damage(model_.bonds)});
   std::vector<double> force(u_.size());
-  assembler_->internal_forces(u_.data(), force.data());
+  model_.assembler->internal_forces(u_.data(), force.data());
   fields.push_back({"internal_force", d, force});
   if (!u_smooth_.empty()) fields.push_back({"smoothed_displacement", d, u_smooth_});
-  const auto& law = assembler_->law();
-  const std::vector<double> outputs = assembler_->particle_outputs(u_.data());
-  for (int k = 0; k < law.n_outputs; ++k) {
-    std::vector<double> v(static_cast<std::size_t>(n));
-    for (int p = 0; p < n; ++p) v[p] = outputs[static_cast<std::size_t>(p) * law.n_outputs + k];
-    fields.push_back({law.output_names[k], 1, v});
-  }
+  append_law_outputs(*model_.assembler, model_.particles, u_, fields);
   const std::string dir = scene_.output.directory;
   // The files form one result: when a signal stops the writing half-way, the files this
   // run already renamed into place go too (a result without its summary is partial).
   try {
-    if (scene_.output.vtu) write_vtu_file(dir + "/result.vtu", particles_, u_, fields), summary_.files.push_back(dir + "/result.vtu");
-    if (scene_.output.csv) write_csv_file(dir + "/result.csv", particles_, u_, fields), summary_.files.push_back(dir + "/result.csv");
+    if (scene_.output.vtu) write_vtu_file(dir + "/result.vtu", model_.particles, u_, fields), summary_.files.push_back(dir + "/result.vtu");
+    if (scene_.output.csv) write_csv_file(dir + "/result.csv", model_.particles, u_, fields), summary_.files.push_back(dir + "/result.csv");
     summary_.files.push_back(dir + "/summary.json");
     summary_.output_seconds = seconds_since(t1);
     write_file_atomically(dir + "/summary.json", summary_.json());

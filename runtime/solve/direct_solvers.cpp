@@ -15,7 +15,7 @@ class CholmodSolver final : public SparseSolver {
     // reports the failure (and the fallback) in the run log instead.
     llt_.cholmod().print = 0;
   }
-  std::string name() const override { return "cholmod"; }
+  std::string name() const override { return std::string(name_of(LinearMethod::cholmod)); }
   void analyse(const SparseMatrix& A) override {
     llt_.analyzePattern(A);
     analysed_ = true;
@@ -41,7 +41,7 @@ class CholmodSolver final : public SparseSolver {
 
 class UmfpackSolver final : public SparseSolver {
  public:
-  std::string name() const override { return "umfpack"; }
+  std::string name() const override { return std::string(name_of(LinearMethod::umfpack)); }
   void analyse(const SparseMatrix& A) override {
     lu_.analyzePattern(A);
     analysed_ = true;

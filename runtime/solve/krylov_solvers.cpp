@@ -44,13 +44,14 @@ using CgDiagonal = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::
 using BicgstabIlut = Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>>;
 }  // namespace
 
-std::unique_ptr<SparseSolver> make_krylov_solver(const std::string& method, const LinearSolverOptions& o) {
-  const std::string& pre = o.preconditioner;
-  if (method == "cg") {
-    if (pre == "auto" || pre == "ic") return std::make_unique<KrylovSolver<CgIc>>("cg+ic", o);
-    if (pre == "diagonal") return std::make_unique<KrylovSolver<CgDiagonal>>("cg+diagonal", o);
-  } else if (method == "bicgstab") {
-    if (pre == "auto" || pre == "ilut") return std::make_unique<KrylovSolver<BicgstabIlut>>("bicgstab+ilut", o);
+std::unique_ptr<SparseSolver> make_krylov_solver(LinearMethod method, const LinearSolverOptions& o) {
+  const Preconditioner pre = o.preconditioner;
+  if (method == LinearMethod::cg) {
+    if (pre == Preconditioner::automatic || pre == Preconditioner::ic) return std::make_unique<KrylovSolver<CgIc>>("cg+ic", o);
+    if (pre == Preconditioner::diagonal) return std::make_unique<KrylovSolver<CgDiagonal>>("cg+diagonal", o);
+  } else if (method == LinearMethod::bicgstab) {
+    if (pre == Preconditioner::automatic || pre == Preconditioner::ilut)
+      return std::make_unique<KrylovSolver<BicgstabIlut>>("bicgstab+ilut", o);
   }
   return nullptr;
 }

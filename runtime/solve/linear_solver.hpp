@@ -1,4 +1,4 @@
-// Sparse linear solvers behind one interface, and the rule that picks one.
+// Sparse linear solvers behind one interface (the rule that picks one: solve/solver_plan.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +8,8 @@
 #include <string>
 
 #include "assembly/sparsity_pattern.hpp"
+#include "solve/solver_plan.hpp"
+#include "solve/solver_spec.hpp"
 
 namespace pd {
 
@@ -36,36 +38,22 @@ class SparseSolver {
 };
 
 struct LinearSolverOptions {
-  std::string method = "auto";  // auto | cholmod | umfpack | cg | bicgstab
-  std::string preconditioner = "auto";  // cg: ic | diagonal (auto: ic); bicgstab: ilut
+  LinearMethod method = LinearMethod::automatic;  // automatic | cholmod | umfpack | cg | bicgstab
+  Preconditioner preconditioner = Preconditioner::automatic;  // cg: ic | diagonal (automatic: ic); bicgstab: ilut
   double tolerance = 1e-10;     // Krylov relative residual
   int max_iterations = 0;       // Krylov; 0: Eigen's default (2 n)
-  // Direct factorisation up to this many nonzeros of the (reduced) matrix. CHOLMOD on
-  // the delta/h = 3.5 tangent took 74 s and 2.4 GB at 200^2 particles (about 2.5e7
-  // nonzeros) and did not finish at 400^2 (issue 7), while delta/h = 1.5 at 200^2
-  // (about 4.6e6) factors in seconds; 8e6 keeps direct solves to a few seconds.
-  std::int64_t direct_max_nonzeros = 8'000'000;
+  // automatic: a direct factorisation up to this many nonzeros of the (reduced) matrix
+  // (choose_linear_solver in solve/solver_plan.hpp); the scene's default.
+  std::int64_t direct_max_nonzeros = SolverSpec{}.direct_max_nonzeros;
 };
 
-struct SolverChoice {
-  std::string method;  // the concrete method
-  std::string reason;  // one line for the run log
-};
+// One concrete solver (cholmod, umfpack, cg, bicgstab with o.preconditioner). Throws
+// std::invalid_argument on a method/preconditioner pair that does not exist.
+std::unique_ptr<SparseSolver> make_sparse_solver(LinearMethod method, const LinearSolverOptions& options);
 
-// The automatic rule (method == "auto"): a direct solver while the matrix has at most
-// direct_max_nonzeros nonzeros -- CHOLMOD when symmetric (the caller asserts
-// positive definiteness; a failure falls back to UMFPACK), UMFPACK otherwise -- and a
-// preconditioned Krylov method above -- CG with incomplete Cholesky when symmetric,
-// BiCGSTAB with ILUT otherwise. A named method is taken as given.
-SolverChoice choose_linear_solver(const LinearSolverOptions& options, std::int64_t unknowns, std::int64_t nonzeros,
-                                  bool symmetric);
-
-// One concrete solver by name (cholmod, umfpack, cg, bicgstab). Throws on an unknown name.
-std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& method, const LinearSolverOptions& options);
-
-// The solver a caller should use: chooses on the first factor(), and when a
-// factorisation fails falls back -- CHOLMOD to UMFPACK, CG's incomplete Cholesky to
-// a diagonal preconditioner -- telling `log` why. Throws when no fallback is left.
+// The solver a caller should use: chooses on the first factor() (choose_linear_solver),
+// and when a factorisation fails falls back (fallback_after_failure), telling `log`
+// why. Throws when no fallback is left.
 class AutoLinearSolver final : public SparseSolver {
  public:
   AutoLinearSolver(LinearSolverOptions options, bool symmetric, std::function<void(const std::string&)> log = {});
@@ -73,12 +61,13 @@ class AutoLinearSolver final : public SparseSolver {
   void analyse(const SparseMatrix& A) override;
   bool factor(const SparseMatrix& A) override;  // throws instead of returning false
   LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
-  const SolverChoice& choice() const { return choice_; }
+  const SolverChoice& choice() const { return choice_; }  // after the first analyse()/factor()
 
  private:
   LinearSolverOptions options_;
   bool symmetric_;
   std::function<void(const std::string&)> log_;
+  bool chosen_ = false;
   SolverChoice choice_;
   std::unique_ptr<SparseSolver> solver_;
 };

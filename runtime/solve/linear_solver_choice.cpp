@@ -1,4 +1,5 @@
-// The automatic solver rule, the factory, and the fallback on a failed factorisation.
+// The factory, and AutoLinearSolver: the plan's choice on the first factorisation and
+// its fallback on a failed one (both decided in solve/solver_plan.cpp).
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -9,34 +10,36 @@ namespace pd {
 
 std::unique_ptr<SparseSolver> make_cholmod_solver();
 std::unique_ptr<SparseSolver> make_umfpack_solver();
-std::unique_ptr<SparseSolver> make_krylov_solver(const std::string& method, const LinearSolverOptions& options);
+std::unique_ptr<SparseSolver> make_krylov_solver(LinearMethod method, const LinearSolverOptions& options);
 
-SolverChoice choose_linear_solver(const LinearSolverOptions& o, std::int64_t unknowns, std::int64_t nonzeros,
-                                  bool symmetric) {
-  if (o.method != "auto") return {o.method, "named in the options"};
-  const bool direct = nonzeros <= o.direct_max_nonzeros;
-  const std::string method = direct ? (symmetric ? "cholmod" : "umfpack") : (symmetric ? "cg" : "bicgstab");
-  return {method, fmt::format("{} unknowns, {} nonzeros, {} -> {} ({} {} nonzeros)", unknowns, nonzeros,
-                              symmetric ? "symmetric" : "non-symmetric", method, direct ? "direct up to" : "Krylov above",
-                              o.direct_max_nonzeros)};
-}
-
-std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& method, const LinearSolverOptions& o) {
-  if (method == "cholmod") return make_cholmod_solver();
-  if (method == "umfpack") return make_umfpack_solver();
-  if (auto s = make_krylov_solver(method, o)) return s;
-  throw std::invalid_argument("unknown linear solver '" + method + "' with preconditioner '" + o.preconditioner +
-                              "' (methods: auto, cholmod, umfpack, cg [ic|diagonal], bicgstab [ilut])");
+std::unique_ptr<SparseSolver> make_sparse_solver(LinearMethod method, const LinearSolverOptions& o) {
+  std::unique_ptr<SparseSolver> s;
+  switch (method) {
+    case LinearMethod::cholmod: s = make_cholmod_solver(); break;
+    case LinearMethod::umfpack: s = make_umfpack_solver(); break;
+    case LinearMethod::cg:
+    case LinearMethod::bicgstab: s = make_krylov_solver(method, o); break;
+    case LinearMethod::automatic:
+    case LinearMethod::matrix_free: break;
+  }
+  if (!s)
+    throw std::invalid_argument(fmt::format("no assembled linear solver '{}' with preconditioner '{}' (methods: "
+                                            "cholmod, umfpack, cg [ic|diagonal], bicgstab [ilut])",
+                                            name_of(method), name_of(o.preconditioner)));
+  return s;
 }
 
 AutoLinearSolver::AutoLinearSolver(LinearSolverOptions options, bool symmetric, std::function<void(const std::string&)> log)
     : options_(std::move(options)), symmetric_(symmetric), log_(std::move(log)) {
-  if (options_.method != "auto") solver_ = make_sparse_solver(options_.method, options_);  // fail early on a bad name
+  if (options_.method != LinearMethod::automatic)
+    solver_ = make_sparse_solver(options_.method, options_);  // fail early on a bad pair
 }
 
 void AutoLinearSolver::analyse(const SparseMatrix& A) {
-  if (choice_.method.empty()) {
-    choice_ = choose_linear_solver(options_, A.rows(), A.nonZeros(), symmetric_);
+  if (!chosen_) {
+    choice_ = choose_linear_solver(options_.method, options_.preconditioner, options_.direct_max_nonzeros, A.rows(),
+                                   A.nonZeros(), symmetric_);
+    chosen_ = true;
     if (!solver_) solver_ = make_sparse_solver(choice_.method, options_);
     if (log_) log_("linear solver: " + solver_->name() + " (" + choice_.reason + ")");
   }
@@ -44,18 +47,18 @@ void AutoLinearSolver::analyse(const SparseMatrix& A) {
 }
 
 bool AutoLinearSolver::factor(const SparseMatrix& A) {
-  if (choice_.method.empty()) analyse(A);
+  if (!chosen_) analyse(A);
   while (!solver_->factor(A)) {
-    std::string next;
-    if (solver_->name() == "cholmod") next = "umfpack";
-    else if (solver_->name() == "cg+ic") next = "cg+diagonal";
-    if (next.empty()) throw std::runtime_error(solver_->failure());
+    const std::optional<SolverChoice> next = fallback_after_failure(choice_);
+    if (!next) throw std::runtime_error(solver_->failure());
     const std::string why = solver_->failure();
     LinearSolverOptions o = options_;
-    if (next == "cg+diagonal") o.preconditioner = "diagonal";
-    solver_ = make_sparse_solver(next == "umfpack" ? "umfpack" : "cg", o);
-    choice_.reason += "; fell back to " + next + ": " + why;
-    if (log_) log_(why + " -- falling back to " + next);
+    o.preconditioner = next->preconditioner;
+    solver_ = make_sparse_solver(next->method, o);
+    choice_.method = next->method;
+    choice_.preconditioner = next->preconditioner;
+    choice_.reason += "; fell back to " + next->reason + ": " + why;
+    if (log_) log_(why + " -- falling back to " + next->reason);
     solver_->analyse(A);
   }
   return true;

@@ -1,24 +1,16 @@
-// Newton loop: per load step, solve K_ff du = r_f (direct/Krylov or matrix-free), backtrack on |r_f|.
+// Newton loop: per load step, solve K_ff du = r_f (a LinearStep: solve/linear_step.hpp), backtrack on |r_f|.
 #include "solve/newton.hpp"
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 
 #include "interrupt.hpp"
-#include "solve/matrix_free_krylov.hpp"
+#include "solve/linear_step.hpp"
 
 namespace pd {
-
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 void NonlinearSystem::jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd&, Eigen::VectorXd&) {
   throw std::logic_error("this nonlinear system has no matrix-free product");
@@ -58,124 +50,10 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
 
   res.unknowns = dofs.free_count();
-  SparseMatrix K;
-  std::unique_ptr<ReducedSystem> reduced;
-  AutoLinearSolver linear(s_.linear, sys.symmetric(), log_);
-  Eigen::VectorXd r(n), r_trial(n), trial(n), du(n), v_full(n), Kv_full(n), diag(n);
-  // The matrix-free preconditioner: Jacobi, or a factorised approximate tangent.
-  if (s_.matrix_free && s_.matrix_free_preconditioner != "diagonal" && s_.matrix_free_preconditioner != "approximate")
-    throw std::invalid_argument("Newton: unknown matrix-free preconditioner '" + s_.matrix_free_preconditioner + "'");
-  const bool approximate = s_.matrix_free && s_.matrix_free_preconditioner == "approximate";
-  if (approximate && !sys.has_approximate_tangent())
-    throw std::invalid_argument("Newton: the approximate-tangent preconditioner needs the system's approximate_tangent()");
-  SparseMatrix P;
-  std::unique_ptr<ReducedSystem> reduced_P;
-  LinearSolverOptions p_options;  // a direct factorisation, whatever its size
-  p_options.direct_max_nonzeros = std::numeric_limits<std::int64_t>::max();
-  AutoLinearSolver P_solver(p_options, sys.symmetric(), log_);
-  LinearOperator jacobi;
-  const LinearOperator approximate_solve = [&](const Eigen::VectorXd& rf, Eigen::VectorXd& z) { P_solver.solve(rf, z); };
+  const std::unique_ptr<LinearStep> linear_step =
+      s_.matrix_free ? make_matrix_free_step(s_, sys, log_) : make_assembled_step(s_, sys.symmetric(), log_);
+  Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
   double reference = 0;
-  bool use_cg = sys.symmetric();  // matrix-free: CG until the system shows it is indefinite
-
-  // Newton step on the free dofs: K_ff du_f = r_f (du_c = 0: the constrained values
-  // were already set at the start of the load step).
-  // The Krylov tolerance of this Newton step (matrix-free path).
-  double previous_norm = 0, previous_forcing = 0;
-  auto forcing = [&](double norm, int iteration) {
-    if (!s_.adaptive_forcing) return s_.krylov_tolerance;
-    double eta = s_.max_forcing;
-    if (iteration > 1 && previous_norm > 0) {
-      eta = 0.9 * std::pow(norm / previous_norm, 2);
-      const double safeguard = 0.9 * previous_forcing * previous_forcing;
-      if (safeguard > 0.1) eta = std::max(eta, safeguard);
-    }
-    // No tighter than what brings |r| to the tolerance, nor than krylov_tolerance.
-    eta = std::min(eta, s_.max_forcing);
-    eta = std::max(eta, 0.5 * s_.relative_tolerance * reference / std::max(norm, 1e-300));
-    return std::max(eta, s_.krylov_tolerance);
-  };
-  auto newton_direction = [&](const Eigen::VectorXd& rf, double load, NewtonRecord& rec) -> Eigen::VectorXd {
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs.free_count());
-    if (!s_.matrix_free) {
-      auto t0 = std::chrono::steady_clock::now();
-      sys.tangent(u, load, K, nullptr);
-      if (!reduced) reduced = std::make_unique<ReducedSystem>(dofs, K);
-      reduced->update(K);
-      res.assembly_seconds += seconds_since(t0);
-      res.nonzeros = reduced->Kff().nonZeros();
-      t0 = std::chrono::steady_clock::now();
-      linear.factor(reduced->Kff());
-      const LinearSolveStats st = linear.solve(rf, x);
-      res.linear_seconds += seconds_since(t0);
-      res.linear_solver = st.method;
-      res.linear_choice = linear.choice().reason;
-      rec.linear_iterations = st.iterations;
-      rec.linear_error = st.estimated_error;
-      if (!st.converged)
-        throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})", st.method,
-                                             st.iterations, st.estimated_error));
-      return x;
-    }
-    auto t0 = std::chrono::steady_clock::now();
-    if (approximate) {
-      if (rec.iteration == 1) {  // once per load step
-        sys.approximate_tangent(u, load, P);
-        if (!reduced_P) reduced_P = std::make_unique<ReducedSystem>(dofs, P);
-        reduced_P->update(P);
-        res.assembly_seconds += seconds_since(t0);
-        res.nonzeros = reduced_P->Kff().nonZeros();
-        t0 = std::chrono::steady_clock::now();
-        P_solver.factor(reduced_P->Kff());
-        res.linear_seconds += seconds_since(t0);
-        t0 = std::chrono::steady_clock::now();
-      }
-    } else {
-      sys.diagonal(u, load, diag);
-      jacobi = diagonal_preconditioner(safe_inverse_diagonal(dofs.restrict_free(diag)));
-      res.assembly_seconds += seconds_since(t0);
-      t0 = std::chrono::steady_clock::now();
-    }
-    const LinearOperator& precondition = approximate ? approximate_solve : jacobi;
-    const LinearOperator op = [&](const Eigen::VectorXd& xf, Eigen::VectorXd& yf) {
-      v_full.setZero();
-      dofs.expand_free(xf, v_full);
-      sys.jvp(u, load, v_full, Kv_full);
-      yf = dofs.restrict_free(Kv_full);
-    };
-    // CG needs K and the preconditioner positive definite: a factorisation that found
-    // the approximate tangent indefinite (CHOLMOD fell back to LU) rules it out.
-    if (use_cg && approximate && P_solver.name() != "cholmod") {
-      say(fmt::format("  the approximate tangent is not positive definite ({}): GMRES from here on", P_solver.name()));
-      use_cg = false;
-    }
-    const double eta = forcing(rf.norm(), rec.iteration);
-    previous_forcing = eta;
-    KrylovResult kr;
-    if (use_cg) {
-      kr = preconditioned_cg(op, precondition, rf, x, eta, s_.krylov_max_iterations);
-      if (kr.indefinite) {
-        // Negative curvature: the tangent is indefinite here (softening, or a follower
-        // load's stiffness). GMRES does not need definiteness; restart it from zero.
-        say(fmt::format("  CG met negative curvature after {} iterations (the tangent is not positive definite): "
-                        "GMRES from here on", kr.iterations));
-        use_cg = false;
-        x.setZero();
-      }
-    }
-    if (!use_cg)
-      kr = preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart, s_.krylov_max_iterations);
-    res.linear_seconds += seconds_since(t0);
-    res.linear_solver = fmt::format("matrix-free {}+{}", use_cg ? "cg" : "gmres", approximate ? P_solver.name() : "jacobi");
-    res.linear_choice = approximate ? "matrix-free Newton-Krylov preconditioned by a factorised approximate tangent"
-                                    : "matrix-free Newton-Krylov";
-    rec.linear_iterations = kr.iterations;
-    rec.linear_error = kr.relative_residual;
-    if (!kr.converged)
-      throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})",
-                                           res.linear_solver, kr.iterations, kr.relative_residual));
-    return x;
-  };
 
   // Newton iterations of one load step (round > 0: solved again after after_step
   // changed the system); false with res.message set when they fail.
@@ -224,8 +102,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       const Eigen::VectorXd rf = dofs.restrict_free(r);
       Eigen::VectorXd dx;
       try {
-        dx = newton_direction(rf, load, rec);
-        previous_norm = norm;
+        dx = linear_step->direction({sys, dofs, u, load, rec.iteration, reference}, rf, rec, res);
       } catch (const std::runtime_error& e) {
         res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load,
                                   it + 1, e.what());

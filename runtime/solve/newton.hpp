@@ -36,6 +36,10 @@ class NonlinearSystem {
   virtual void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P);
 };
 
+// The matrix-free path's preconditioner: Jacobi (from NonlinearSystem::diagonal) or a
+// direct factorisation of NonlinearSystem::approximate_tangent.
+enum class MatrixFreePreconditioner { jacobi, approximate_tangent };
+
 struct NewtonSettings {
   int load_steps = 1;
   int max_iterations = 25;           // per load step
@@ -55,11 +59,10 @@ struct NewtonSettings {
   LinearSolverOptions linear;
   // Matrix-free Newton-Krylov: the linear systems are solved by preconditioned CG
   // (symmetric) or GMRES through NonlinearSystem::jvp, never forming K. The
-  // preconditioner: "diagonal" (Jacobi, from NonlinearSystem::diagonal) or
-  // "approximate" (a direct factorisation of NonlinearSystem::approximate_tangent,
-  // formed once per load step: its cost is amortised over the Krylov iterations).
+  // preconditioner: Jacobi, or the approximate tangent's factorisation, formed once per
+  // load step: its cost is amortised over the Krylov iterations.
   bool matrix_free = false;
-  std::string matrix_free_preconditioner = "diagonal";
+  MatrixFreePreconditioner matrix_free_preconditioner = MatrixFreePreconditioner::jacobi;
   double krylov_tolerance = 1e-8;  // forcing term: |K du - r| <= tol |r|
   // Eisenstat-Walker forcing (their choice 2, gamma 0.9, exponent 2) for the matrix-
   // free path: solve loosely while far from the solution, tightly near it, never

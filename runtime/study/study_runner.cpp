@@ -70,8 +70,8 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   double particles = 1;
   for (int c = 0; c < s.dim; ++c) particles *= (s.hi[c] - s.lo[c]) / s.h;
   if (spec.matrix_free_from_bonds > 0 && particles * std::numbers::pi * id.ratio * id.ratio >= spec.matrix_free_from_bonds) {
-    s.solver.linear = "matrix_free";
-    s.solver.preconditioner = "short_horizon";
+    s.solver.linear = LinearMethod::matrix_free;
+    s.solver.preconditioner = Preconditioner::short_horizon;
   }
   const bool measured = reset_peak_memory();
   const auto t0 = std::chrono::steady_clock::now();

@@ -16,7 +16,7 @@ void quiet(const std::string&) {}
 pd::Scene relaxation_scene(const char* name) {
   pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/scenes/notched_plate_static.yaml");
   pd::DynamicsSpec d;
-  d.method = "relaxation";
+  d.method = pd::DynamicsMethod::relaxation;
   d.steps = 100000;
   d.output_every = 100;
   d.progress_seconds = 0;

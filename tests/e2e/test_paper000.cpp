@@ -73,7 +73,7 @@ TEST(Paper000, PressurisedCrackSolvesWithQuadraticNewtonAndSmallFieldError) {
 // on the crack scene (80 x 80, delta/h = 3), and the short-horizon preconditioner needs
 // under half the Krylov iterations of Jacobi (the gap widens with n: 158 vs ~900 at 200 x 200).
 TEST(Paper000, MatrixFreeCrackSolvesAgreeWithCholmod) {
-  auto solve = [](const std::string& linear, const std::string& preconditioner, std::vector<double>& u) {
+  auto solve = [](pd::LinearMethod linear, pd::Preconditioner preconditioner, std::vector<double>& u) {
     pd::Scene s = pd::read_scene(scene_path("crack.yaml"));
     s.h = (s.hi[0] - s.lo[0]) / 80;
     s.solver.linear = linear;
@@ -84,9 +84,9 @@ TEST(Paper000, MatrixFreeCrackSolvesAgreeWithCholmod) {
     return r;
   };
   std::vector<double> u_direct, u_jacobi, u_shorter;
-  const pd::RunSummary direct = solve("cholmod", "auto", u_direct);
-  const pd::RunSummary jacobi = solve("matrix_free", "diagonal", u_jacobi);
-  const pd::RunSummary shorter = solve("matrix_free", "short_horizon", u_shorter);
+  const pd::RunSummary direct = solve(pd::LinearMethod::cholmod, pd::Preconditioner::automatic, u_direct);
+  const pd::RunSummary jacobi = solve(pd::LinearMethod::matrix_free, pd::Preconditioner::diagonal, u_jacobi);
+  const pd::RunSummary shorter = solve(pd::LinearMethod::matrix_free, pd::Preconditioner::short_horizon, u_shorter);
   for (const pd::RunSummary* r : {&direct, &jacobi, &shorter}) ASSERT_TRUE(r->newton.converged) << r->newton.message;
   EXPECT_EQ(jacobi.newton.linear_solver, "matrix-free cg+jacobi");
   EXPECT_EQ(shorter.newton.linear_solver.rfind("matrix-free cg+", 0), 0u);
@@ -123,8 +123,8 @@ TEST(Paper000, ShortHorizonPreconditionerLeavesOutTheWeightlessRing) {
     s.h = (s.hi[0] - s.lo[0]) / 40;
     s.horizon_ratio = 3.0;
     s.influence = influence;
-    s.solver.linear = "matrix_free";
-    s.solver.preconditioner = "short_horizon";
+    s.solver.linear = pd::LinearMethod::matrix_free;
+    s.solver.preconditioner = pd::Preconditioner::short_horizon;
     pd::Simulation sim(s, [](const std::string&) {});
     const pd::RunSummary r = sim.run(false);
     EXPECT_TRUE(r.newton.converged) << influence << ": " << r.newton.message;

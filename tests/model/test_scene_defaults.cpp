@@ -30,8 +30,8 @@ TEST(SceneDefaults, MinimalSceneGetsTheDocumentedDefaults) {
   EXPECT_EQ(s.materials[0].density, 1.0);
   EXPECT_TRUE(s.boundary.empty() && s.cracks.empty() && s.probes.empty());
   EXPECT_FALSE(s.reference.has_value());
-  EXPECT_EQ(s.solver.linear, "auto");
-  EXPECT_EQ(s.solver.nonlinear, "newton");
+  EXPECT_EQ(s.solver.linear, pd::LinearMethod::automatic);
+  EXPECT_EQ(s.solver.nonlinear, pd::NonlinearMethod::newton);
   EXPECT_EQ(s.solver.load_steps, 1);
   EXPECT_EQ(s.solver.tolerance, 1e-10);
   EXPECT_EQ(s.solver.max_iterations, 30);
@@ -53,7 +53,7 @@ boundary:
   const pd::Scene s = pd::parse_scene(text, "o.yaml");
   EXPECT_DOUBLE_EQ(s.delta(), 0.25);
   EXPECT_EQ(s.influence, "cubic");
-  EXPECT_EQ(s.solver.linear, "cg");
+  EXPECT_EQ(s.solver.linear, pd::LinearMethod::cg);
   EXPECT_EQ(s.solver.load_steps, 3);
   EXPECT_EQ(s.solver.tolerance, 1e-8);
   EXPECT_EQ(s.solver.max_iterations, 7);

@@ -69,7 +69,7 @@ TEST(SceneReader, ReadsEveryPartOfAValidScene) {
   EXPECT_DOUBLE_EQ(s.boundary[1].values[1], -0.001);
   ASSERT_EQ(s.cracks.size(), 1u);
   EXPECT_DOUBLE_EQ(s.cracks[0].pressure, 0.1);
-  EXPECT_EQ(s.solver.linear, "cholmod");
+  EXPECT_EQ(s.solver.linear, pd::LinearMethod::cholmod);
   EXPECT_EQ(s.solver.load_steps, 2);
   EXPECT_EQ(s.output.directory, "out");  // default
   ASSERT_EQ(s.probes.size(), 1u);

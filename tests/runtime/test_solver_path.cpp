@@ -4,7 +4,8 @@
 
 #include "assembly/sparsity_pattern.hpp"
 #include "discretize/discretization.hpp"
-#include "run/solver_path.hpp"
+#include "input/scene.hpp"
+#include "solve/solver_plan.hpp"
 
 namespace {
 pd::Scene square(double ratio, int count) {
@@ -36,37 +37,37 @@ TEST(SolverPath, NonzeroEstimateIsCloseToTheRealPattern) {
 
 TEST(SolverPath, AutoKeepsSmallProblemsAssembled) {
   pd::SolverSpec spec;
-  const pd::SolverPath path = pd::choose_solver_path(spec, 2500, 35.0, 2, 3.5);  // 50^2: about 1.4e6 nonzeros
-  EXPECT_EQ(path.linear, "auto");
+  const pd::SolverPlan path = pd::plan_solver(spec, {2500, 35.0, 2, 3.5});  // 50^2: about 1.4e6 nonzeros
+  EXPECT_EQ(path.linear, pd::LinearMethod::automatic);
   EXPECT_NE(path.reason.find("within direct_max_nonzeros"), std::string::npos) << path.reason;
 }
 
 TEST(SolverPath, AutoGoesMatrixFreeWithTheShortHorizonAboveTheDirectLimit) {
   pd::SolverSpec spec;
-  const pd::SolverPath path = pd::choose_solver_path(spec, 160000, 35.7, 2, 3.5);  // the 400^2 crack
-  EXPECT_EQ(path.linear, "matrix_free");
-  EXPECT_EQ(path.preconditioner, "short_horizon");
+  const pd::SolverPlan path = pd::plan_solver(spec, {160000, 35.7, 2, 3.5});  // the 400^2 crack
+  EXPECT_EQ(path.linear, pd::LinearMethod::matrix_free);
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::short_horizon);
   EXPECT_NE(path.reason.find("delta/h = 2"), std::string::npos) << path.reason;
 }
 
 TEST(SolverPath, AShortHorizonAlreadyFactorisesTheTangentItself) {
   pd::SolverSpec spec;
   // 200^2 at delta/h = 1.5: the preconditioner's horizon is delta itself.
-  const pd::SolverPath path = pd::choose_solver_path(spec, 40000, 7.9, 2, 1.5);
-  EXPECT_EQ(path.linear, "matrix_free");
-  EXPECT_EQ(path.preconditioner, "short_horizon");
+  const pd::SolverPlan path = pd::plan_solver(spec, {40000, 7.9, 2, 1.5});
+  EXPECT_EQ(path.linear, pd::LinearMethod::matrix_free);
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::short_horizon);
   EXPECT_NE(path.reason.find("own factorisation"), std::string::npos) << path.reason;
 }
 
 TEST(SolverPath, AutoFallsBackToJacobiWhenThePreconditionerCannotFit) {
   pd::SolverSpec spec;
   // 1000^2 at delta/h = 1.5: even the tangent itself exceeds the limit.
-  pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 7.9, 2, 1.5);
-  EXPECT_EQ(path.linear, "matrix_free");
-  EXPECT_EQ(path.preconditioner, "diagonal");
+  pd::SolverPlan path = pd::plan_solver(spec, {1000000, 7.9, 2, 1.5});
+  EXPECT_EQ(path.linear, pd::LinearMethod::matrix_free);
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::diagonal);
   // 1000^2 at delta/h = 3.5: the delta/h = 2 stiffness alone would exceed the limit.
-  path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5);
-  EXPECT_EQ(path.preconditioner, "diagonal");
+  path = pd::plan_solver(spec, {1000000, 35.9, 2, 3.5});
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::diagonal);
   EXPECT_NE(path.reason.find("preconditioner_max_nonzeros"), std::string::npos) << path.reason;
 }
 
@@ -76,19 +77,19 @@ TEST(SolverPath, AutoFallsBackToJacobiWhenThePreconditionerCannotFit) {
 TEST(SolverPath, ACountedShortFamilyReplacesTheVolumeScaling) {
   pd::SolverSpec spec;
   spec.preconditioner_max_nonzeros = 1.5e8;
-  EXPECT_EQ(pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5).preconditioner, "diagonal");  // about 1.9e8
-  const pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5, 8.0);
-  EXPECT_EQ(path.preconditioner, "short_horizon");
+  EXPECT_EQ(pd::plan_solver(spec, {1000000, 35.9, 2, 3.5}).preconditioner, pd::Preconditioner::diagonal);  // about 1.9e8
+  const pd::SolverPlan path = pd::plan_solver(spec, {1000000, 35.9, 2, 3.5, 8.0});
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::short_horizon);
   EXPECT_NE(path.reason.find("1.32e+08"), std::string::npos) << path.reason;  // 1e6 x (4 x 8 + 1) x 4
 }
 
 TEST(SolverPath, ExplicitChoicesAreKept) {
   pd::SolverSpec spec;
-  spec.linear = "cholmod";
-  EXPECT_EQ(pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5).linear, "cholmod");
-  spec.linear = "auto";
-  spec.preconditioner = "ic";  // names an assembled Krylov method
-  const pd::SolverPath path = pd::choose_solver_path(spec, 1000000, 35.9, 2, 3.5);
-  EXPECT_EQ(path.linear, "auto");
-  EXPECT_EQ(path.preconditioner, "ic");
+  spec.linear = pd::LinearMethod::cholmod;
+  EXPECT_EQ(pd::plan_solver(spec, {1000000, 35.9, 2, 3.5}).linear, pd::LinearMethod::cholmod);
+  spec.linear = pd::LinearMethod::automatic;
+  spec.preconditioner = pd::Preconditioner::ic;  // names an assembled Krylov method
+  const pd::SolverPlan path = pd::plan_solver(spec, {1000000, 35.9, 2, 3.5});
+  EXPECT_EQ(path.linear, pd::LinearMethod::automatic);
+  EXPECT_EQ(path.preconditioner, pd::Preconditioner::ic);
 }

@@ -143,7 +143,7 @@ TEST(Newton, MatrixFreeWithAnApproximateTangentUsesItsFactorisation) {
   ASSERT_TRUE(run(inner, pb.dofs, u_direct, {}).converged);
   pd::NewtonSettings st;
   st.matrix_free = true;
-  st.matrix_free_preconditioner = "approximate";
+  st.matrix_free_preconditioner = pd::MatrixFreePreconditioner::approximate_tangent;
   st.krylov_tolerance = 1e-10;
   const pd::NewtonResult r = run(sys, pb.dofs, u_mf, st);
   ASSERT_TRUE(r.converged) << r.message;

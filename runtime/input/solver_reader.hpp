@@ -1,0 +1,11 @@
+// Reads the scene's `solver` section (docs/scene_format.md).
+#pragma once
+
+#include "input/yaml_keys.hpp"
+#include "solve/solver_spec.hpp"
+
+namespace pd {
+
+SolverSpec read_solver(const YamlAt& at);  // throws SceneError naming file, line and key
+
+}  // namespace pd

@@ -1,0 +1,48 @@
+// build_model: scene -> particles, bonds, law parameters, family checks.
+#include "model/model.hpp"
+
+#include <fmt/core.h>
+
+#include <stdexcept>
+
+#include "discretize/discretization.hpp"
+#include "material/elastic_constants.hpp"
+
+namespace pd {
+
+Model build_model(const Scene& scene) {
+  Model m;
+  m.law = abi::find_law(scene.law);
+  m.influence = abi::find_influence(scene.influence);
+  if (!m.law || !m.influence) throw std::invalid_argument("unknown law or influence function");
+  m.particles = discretize(scene);
+  m.bonds = find_bonds(m.particles, scene.delta(), m.influence->weight);
+  m.bond_count = m.bonds.bond_count() / 2;
+  m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds) / 2;
+  const Particles& p = m.particles;
+  for (int i = 0; i < p.size(); ++i)
+    if (m.bonds.family_size(i) == 0)
+      throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", i,
+                                           p.x[i * p.dim], p.x[i * p.dim + 1]));
+  m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
+  for (const MaterialSpec& mat : scene.materials)
+    m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
+  return m;
+}
+
+ProblemSize Model::size(const Scene& scene, double short_family_size) const {
+  return {particles.size(), 2.0 * static_cast<double>(bond_count) / particles.size(), particles.dim,
+          scene.delta() / scene.h, short_family_size};
+}
+
+AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads) {
+  AssemblerOptions options;
+  // A scene with damage needs the damaged variant from the start: bonds may break.
+  options.intact = model.cut_by_cracks == 0 && !scene.damage;
+  options.matrix = matrix;
+  options.threads = threads;
+  model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+  return options;
+}
+
+}  // namespace pd

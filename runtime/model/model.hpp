@@ -1,0 +1,44 @@
+// The model a run solves: the law and influence, the particles, the bonds (cut by the
+// pre-cracks), the per-material law parameters and the family checks, built once from
+// a const Scene by build_model; the assembler is added by the driver once the solver
+// plan has said whether it needs a matrix (attach_assembler). The static and dynamic
+// drivers both start from it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "discretize/family_quality.hpp"
+#include "input/scene.hpp"
+#include "kernel_abi.hpp"
+#include "particles.hpp"
+#include "solve/solver_plan.hpp"
+
+namespace pd {
+
+struct Model {
+  const abi::LawDescriptor* law = nullptr;
+  const abi::InfluenceDescriptor* influence = nullptr;
+  Particles particles;
+  Bonds bonds;
+  std::vector<std::vector<double>> params;  // per material, in law.param_names order
+  FamilyQualityReport quality;
+  long long bond_count = 0;    // each bond once (not per direction)
+  int cut_by_cracks = 0;       // bonds the scene's pre-cracks cut, each once
+  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler
+
+  // What the solver plan needs of the model (mean family size: bonds per particle).
+  ProblemSize size(const Scene& scene, double short_family_size = -1) const;
+};
+
+// Throws std::invalid_argument on an unknown law or influence and std::runtime_error
+// naming a particle without neighbours.
+Model build_model(const Scene& scene);
+
+// The assembler over the model's particles and bonds: the intact kernels (alpha folded
+// to 1) unless a bond is cut or can break (`damage`), with a matrix pattern only when
+// `matrix`. Returns the options it used.
+AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads = 0);
+
+}  // namespace pd

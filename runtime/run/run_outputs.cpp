@@ -1,0 +1,79 @@
+// Probes, field errors and law output fields, shared by the static and dynamic drivers.
+#include "run/run_outputs.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "discretize/discretization.hpp"
+#include "fields/analytic.hpp"
+#include "input/yaml_keys.hpp"
+
+namespace pd {
+
+std::vector<std::vector<int>> probe_particles(const Scene& scene, const Particles& particles) {
+  std::vector<std::vector<int>> ids;
+  for (const Probe& pr : scene.probes) {
+    ids.push_back(region_particles(pr.region, particles, scene));
+    if (ids.back().empty()) throw SceneError(pr.where + ": the region holds no particle");
+  }
+  return ids;
+}
+
+std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
+                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u) {
+  std::vector<ProbeResult> out;
+  for (std::size_t k = 0; k < scene.probes.size(); ++k) {
+    const Probe& pr = scene.probes[k];
+    ProbeResult r;
+    r.name = pr.name;
+    r.particles = static_cast<int>(ids[k].size());
+    std::unique_ptr<AnalyticField> field;
+    if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene.materials[0].elastic);
+    for (int p : ids[k]) {
+      r.value += u[static_cast<std::size_t>(p) * particles.dim + pr.component];
+      if (field) r.reference += field->displacement(particles.position(p))[pr.component];
+    }
+    r.value /= static_cast<double>(ids[k].size());
+    r.reference /= static_cast<double>(ids[k].size());
+    r.has_reference = static_cast<bool>(field);
+    r.error = std::fabs(r.value - r.reference);
+    out.push_back(r);
+  }
+  return out;
+}
+
+double field_error(const Scene& scene, const FieldSpec& reference, const Particles& particles,
+                   const std::vector<double>& u) {
+  const AnalyticField field(reference, scene.materials[0].elastic);
+  double num = 0, den = 0;
+  const int d = particles.dim;
+  for (int p = 0; p < particles.size(); ++p) {
+    const auto ua = field.displacement(particles.position(p));
+    for (int c = 0; c < d; ++c) num += std::pow(ua[c] - u[p * d + c], 2), den += ua[c] * ua[c];
+  }
+  return den > 0 ? num / den : num;
+}
+
+std::string probe_log_line(const ProbeResult& p) {
+  return p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
+                                       p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))
+                         : fmt::format("  probe {}: {:.9g}", p.name, p.value);
+}
+
+void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles, const std::vector<double>& u,
+                        std::vector<OutputField>& fields) {
+  const auto& law = assembler.law();
+  if (law.n_outputs == 0) return;
+  const int n = particles.size();
+  const std::vector<double> outputs = assembler.particle_outputs(u.data());
+  for (int k = 0; k < law.n_outputs; ++k) {
+    std::vector<double> v(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p) v[p] = outputs[static_cast<std::size_t>(p) * law.n_outputs + k];
+    fields.push_back({law.output_names[k], 1, v});
+  }
+}
+
+}  // namespace pd

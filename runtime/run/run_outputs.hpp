@@ -1,0 +1,37 @@
+// What every driver reports from a solution: probes (paper 000 eq. 36), the field error
+// against the scene's reference (eq. 48), and the per-particle output fields of the law.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "input/scene.hpp"
+#include "output/particle_fields.hpp"
+#include "particles.hpp"
+#include "run/run_summary.hpp"
+
+namespace pd {
+
+// The particles of each probe's region, in the scene's order. Throws SceneError naming
+// the probe whose region holds no particle.
+std::vector<std::vector<int>> probe_particles(const Scene& scene, const Particles& particles);
+
+// Each probe's mean displacement component over its particles, and with a reference
+// the mean of the analytic field over the same particles and the difference.
+std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
+                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u);
+
+// Paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2 (the plain sum when the
+// reference is zero everywhere).
+double field_error(const Scene& scene, const FieldSpec& reference, const Particles& particles,
+                   const std::vector<double>& u);
+
+// The probe's line in the run log.
+std::string probe_log_line(const ProbeResult& p);
+
+// The law's per-particle outputs (law.output_names) at u, one field each.
+void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles, const std::vector<double>& u,
+                        std::vector<OutputField>& fields);
+
+}  // namespace pd
