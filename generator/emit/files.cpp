@@ -93,11 +93,18 @@ std::map<std::string, std::string> generate_all_files() {
   std::map<std::string, StemOutput> stems;
   std::vector<std::string> law_names;
   for (const LawEntry& e : law_registry()) {
-    const Law law = e.build();
-    for (auto& n : law_names)
-      if (n == law.name()) throw std::invalid_argument("pdgen: law '" + n + "' is registered twice");
-    law_names.push_back(law.name());
-    emit_law(law, stems[e.file_stem]);
+    law_under_construction().clear();
+    try {
+      const Law law = e.build();
+      if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
+      for (auto& n : law_names)
+        if (n == law.name()) throw std::invalid_argument("law '" + n + "' is registered twice");
+      law_names.push_back(law.name());
+      emit_law(law, stems[e.file_stem]);
+    } catch (const std::exception& ex) {
+      const std::string& name = law_under_construction();
+      throw std::invalid_argument(e.source + ": " + (name.empty() ? "" : "law '" + name + "': ") + ex.what());
+    }
   }
   for (const InfluenceDef& inf : influence_registry()) emit_influence(inf, stems[inf.file_stem]);
 

@@ -22,9 +22,15 @@ Vec bond_vector(const std::string& name, int dim, int first_slot) {
 }
 }  // namespace
 
+std::string& law_under_construction() {
+  static std::string name;
+  return name;
+}
+
 // Bond-input slots: xi 0..2, Y 3..5, w 6, alpha 7, V 8 (read by the emitter).
 Law::Law(std::string name, int dim, std::string summary)
     : name_(std::move(name)), summary_(std::move(summary)), dim_(dim) {
+  law_under_construction() = name_;
   check_identifier(name_);
   if (dim != 2 && dim != 3) throw std::invalid_argument("law " + name_ + ": dimension must be 2 or 3");
   xi_ = bond_vector("xi", dim, 0);

@@ -59,6 +59,7 @@ class Law {
   Mat sum(const std::string& name, const Mat& body);
 
   void force(const Vec& t);
+  bool has_force() const { return force_.dim() == dim_; }
   void energy(Expr W) { energy_ = W; has_energy_ = true; }
   void output(const std::string& name, Expr value) { outputs_.push_back({name, value}); }
 
@@ -98,15 +99,19 @@ struct InfluenceDef {
 // under its file stem, which names the generated file pair.
 struct LawEntry {
   std::string file_stem;
+  std::string source;  // the law file's path as compiled (__FILE__), for error messages
   std::function<Law()> build;
 };
 std::vector<LawEntry>& law_registry();
+// The name given to the most recently constructed Law: names the law in the error
+// of a builder that throws before returning it (pdgen's messages).
+std::string& law_under_construction();
 std::vector<InfluenceDef>& influence_registry();
 std::string file_stem(const char* path);
 
 struct LawRegistrar {
   LawRegistrar(const char* file, std::function<Law()> build) {
-    law_registry().push_back({file_stem(file), std::move(build)});
+    law_registry().push_back({file_stem(file), file, std::move(build)});
   }
 };
 struct InfluenceRegistrar {
