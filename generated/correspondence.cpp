@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace pd::generated {
@@ -648,6 +649,7 @@ void correspondence_plane_strain_intact_outputs(const pd::abi::Family& fam, doub
 
 pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_plane_strain";
@@ -655,6 +657,7 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
   d.n_moments = 4;
@@ -1979,6 +1982,7 @@ void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* output
 
 pd::abi::LawDescriptor correspondence_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_3d";
@@ -1986,6 +1990,7 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
   d.n_moments = 9;
@@ -2830,6 +2835,7 @@ void correspondence_silling_plane_strain_intact_outputs(const pd::abi::Family& f
 
 pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_plane_strain";
@@ -2837,6 +2843,7 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
   d.n_moments = 6;
@@ -4367,6 +4374,7 @@ void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double
 
 pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_3d";
@@ -4374,6 +4382,7 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.dim = 3;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
   d.n_moments = 11;
@@ -5207,6 +5216,7 @@ void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family
 
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_plane_strain";
@@ -5214,6 +5224,7 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
   d.n_moments = 4;
@@ -6763,6 +6774,7 @@ void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, dou
 
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_3d";
@@ -6770,6 +6782,7 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.dim = 3;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
   d.n_moments = 9;

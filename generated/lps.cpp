@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace pd::generated {
@@ -429,6 +430,7 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
 
 pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_plane_strain";
@@ -436,6 +438,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.n_moments = 1;
@@ -967,6 +970,7 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
 
 pd::abi::LawDescriptor lps_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_3d";
@@ -974,6 +978,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.n_moments = 1;
@@ -1662,6 +1667,7 @@ void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, doubl
 
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_plane_strain";
@@ -1669,6 +1675,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.n_moments = 5;
@@ -2741,6 +2748,7 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
 
 pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_3d";
@@ -2748,6 +2756,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.n_moments = 10;

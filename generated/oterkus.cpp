@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace pd::generated {
@@ -555,6 +556,7 @@ void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
 
 pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_plane_strain";
@@ -562,8 +564,10 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
   d.n_moments = 3;
   d.n_states = 1;
   d.damaged.moments = &oterkus_plane_strain_damaged_moments;
@@ -1119,6 +1123,7 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
 
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_paper_d_plane_strain";
@@ -1126,8 +1131,10 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
   d.n_moments = 2;
   d.n_states = 1;
   d.damaged.moments = &oterkus_paper_d_plane_strain_damaged_moments;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace pd::generated {
@@ -543,6 +544,7 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
 
 pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_plane_strain";
@@ -550,8 +552,10 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_plane_strain_damaged_moments;
@@ -1199,6 +1203,7 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
 
 pd::abi::LawDescriptor silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_3d";
@@ -1206,8 +1211,10 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_3d_damaged_moments;

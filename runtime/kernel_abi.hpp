@@ -81,10 +81,19 @@ struct LawDescriptor {
   int dim = 0;
   int n_params = 0;
   const char* const* param_names = nullptr;
+  // [n_params] the value the automatic law tests give each parameter; NaN where the
+  // law declares none (elastic names are derived from the material instead).
+  const double* param_test_values = nullptr;
   int n_moments = 0;
   int n_states = 0;   // scalar state components (the s index of TangentFactors)
   int n_outputs = 0;
   const char* const* output_names = nullptr;
+  // The law claims sum_k Y_k x t_k = 0 (angular momentum balance) for every deformation.
+  bool balances_angular_momentum = false;
+  // The Poisson ratio the law has whatever its parameters (bond-based: 1/4), in its 3D
+  // or plane-strain form; false: any ratio the material gives.
+  bool has_fixed_poisson_ratio = false;
+  double poisson_ratio = 0.0;
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };

@@ -1,6 +1,7 @@
 // Assembles the emitted kernels into files: <stem>.hpp/.cpp per law file, law_table.cpp.
 #include "pdgen/files.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,12 +40,19 @@ void emit_law(const Law& law, StemOutput& out) {
   desc << "  static const char* const params[] = {";
   for (auto& p : names) desc << quoted(p) << ", ";
   desc << "nullptr};\n";
+  desc << "  static const double test_values[] = {";
+  for (double v : law.param_test_values()) desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
+  desc << "0.0};\n";
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
   desc << "nullptr};\n";
   desc << "  pd::abi::LawDescriptor d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
        << ";\n  d.dim = " << law.dim() << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
+  desc << "  d.param_test_values = test_values;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
+  if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
+  if (law.has_fixed_poisson_ratio())
+    desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";
   const Law intact = law.with_alpha_folded();
   for (const auto& [variant, l] : {std::pair<std::string, const Law*>{"damaged", &law}, {"intact", &intact}}) {
     const LawKernelSet k = build_kernels(*l, n + "_" + variant);
@@ -120,7 +128,7 @@ std::map<std::string, std::string> generate_all_files() {
     std::ostringstream h, c;
     h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n#include \"kernel_abi.hpp\"\n\nnamespace pd::generated {\n\n"
       << out.decl.str() << "\n}  // namespace pd::generated\n";
-    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <vector>\n\n"
+    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n#include <vector>\n\n"
       << "namespace pd::generated {\n" << out.code.str() << "\n}  // namespace pd::generated\n";
     files[stem + ".hpp"] = h.str();
     files[stem + ".cpp"] = c.str();

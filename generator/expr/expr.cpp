@@ -81,8 +81,8 @@ NodeId Expr::constant_id(double v) {
   return ctx().intern(Op::Const, v, -1, {});
 }
 
-Expr symbol(const std::string& name, SymbolKind kind, int slot) {
-  const int s = ctx().add_symbol(SymbolInfo{name, kind, slot});
+Expr symbol(const std::string& name, SymbolKind kind) {
+  const int s = ctx().add_symbol(SymbolInfo{name, kind});
   return Expr::from_id(ctx().intern(Op::Symbol, 0.0, s, {}));
 }
 

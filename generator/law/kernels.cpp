@@ -172,7 +172,7 @@ class Builder {
         const Expr dg = diff(force_states_[s]->body, force_states_[q]->symbol);
         if (dg.is_const(0.0)) continue;
         const std::string name = "c_" + str(s) + "_" + str(q);
-        const Expr sym = symbol(name, SymbolKind::Sum, 0);
+        const Expr sym = symbol(name, SymbolKind::Sum);
         p.bindings[symbol_index(sym)] = {name, "", false};
         coupling[{s, q}] = sym;
       }
@@ -217,12 +217,12 @@ class Builder {
     const std::string D = str(D_);
     Vec dY(D_);
     for (int c = 0; c < D_; ++c) {
-      dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput, 9 + c);
+      dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput);
       p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), "dy[(k + 1) * " + D + " + " + str(c) + "] - dy[" + str(c) + "]", true};
     }
     std::vector<Expr> dS;
     for (const SumDef* s : force_states_) {
-      dS.push_back(symbol("d_" + s->name, SymbolKind::Sum, 0));
+      dS.push_back(symbol("d_" + s->name, SymbolKind::Sum));
       p.bindings[symbol_index(dS.back())] = {"ds_" + s->name, "", false};
     }
     auto directional = [&](Expr e) {

@@ -48,7 +48,7 @@ class Expr {
 };
 
 // A new symbol of the given kind. Two calls create two distinct symbols.
-Expr symbol(const std::string& name, SymbolKind kind = SymbolKind::Free, int slot = 0);
+Expr symbol(const std::string& name, SymbolKind kind = SymbolKind::Free);
 // The symbol index of a Symbol expression (throws otherwise).
 int symbol_index(Expr e);
 
