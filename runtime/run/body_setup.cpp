@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
 
 namespace pd {
@@ -29,6 +30,7 @@ BodySetup set_up_body(const Scene& scene, RunSummary& summary) {
                                            p.x[i * p.dim], p.x[i * p.dim + 1]));
   b.quality = check_family_quality(p, b.bonds, b.influence->weight, b.influence->name, scene.h);
   for (const MaterialSpec& m : scene.materials) b.params.push_back(law_parameters(*b.law, m.elastic, m.plane, m.parameters));
+  for (const MaterialSpec& m : scene.materials) warn_if_poisson_ratio_differs(*b.law, m.elastic, m.plane, m.name);
   return b;
 }
 
