@@ -249,6 +249,7 @@ class Printer {
   }
 
   void emit_segment(std::ostringstream& out, const Segment& seg, const std::vector<int>& roots, std::size_t) {
+    for (int sum : seg.accumulators) out << "  double " << prog_.bindings.at(sum).var << " = 0.0;\n";
     for (const std::string& line : seg.before) out << "  " << line << "\n";
     if (!seg.loop) {
       const auto order = reach(roots, [&](int i) { return names_.count(i) > 0; });

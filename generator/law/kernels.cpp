@@ -113,8 +113,8 @@ class Builder {
       seg.loop = true;
       for (const SumDef* s : sums) {
         if (s->level != level) continue;
-        seg.before.push_back("double " + var(*s) + " = 0.0;");
-        seg.stores.push_back({var(*s), s->body, StoreMode::Accumulate, ""});
+        seg.accumulators.push_back(symbol_index(s->symbol));
+        seg.stores.push_back({var(*s), s->body, StoreMode::Accumulate, "", symbol_index(s->symbol)});
         if (extra) extra(*s, seg);
       }
       if (!seg.stores.empty()) p.segments.push_back(seg);
@@ -180,9 +180,9 @@ class Builder {
       const int s = index_of(sd);
       for (auto& [key, sym] : coupling)
         if (key.first == s) {
-          seg.before.push_back("double c_" + str(key.first) + "_" + str(key.second) + " = 0.0;");
-          seg.stores.push_back({"c_" + str(key.first) + "_" + str(key.second),
-                                diff(sd.body, force_states_[key.second]->symbol), StoreMode::Accumulate, ""});
+          seg.accumulators.push_back(symbol_index(sym));
+          seg.stores.push_back({p.bindings.at(symbol_index(sym)).var, diff(sd.body, force_states_[key.second]->symbol),
+                                StoreMode::Accumulate, "", symbol_index(sym)});
         }
     });
     Segment seg;
@@ -232,8 +232,9 @@ class Builder {
       return add(terms);
     };
     sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
-      seg.before.push_back("double ds_" + sd.name + " = 0.0;");
-      seg.stores.push_back({"ds_" + sd.name, directional(sd.body), StoreMode::Accumulate, ""});
+      const int ds = symbol_index(dS[static_cast<std::size_t>(index_of(sd))]);
+      seg.accumulators.push_back(ds);
+      seg.stores.push_back({p.bindings.at(ds).var, directional(sd.body), StoreMode::Accumulate, "", ds});
     });
     Segment seg;
     seg.loop = true;
@@ -260,23 +261,21 @@ class Builder {
   }
 
   // Drops the horizon sums a kernel accumulates but never reads (e.g. the deformed shape
-  // tensor in the JVP of a law linear in it): a sum is kept when a non-sum store reads
-  // it, directly or through the bodies of other kept sums.
+  // tensor in the JVP of a law linear in it): a sum is kept when a store into anything
+  // but a sum reads it, directly or through the bodies of other kept sums. Works on the
+  // sums' symbols only (Store::sum, Segment::accumulators).
   static KernelProgram prune(KernelProgram p) {
-    std::map<std::string, int> symbol_of_var;
-    for (const auto& [sym, b] : p.bindings)
-      if (b.load.empty()) symbol_of_var[b.var] = sym;
-    auto is_sum_store = [&](const Store& st) { return st.mode == StoreMode::Accumulate && symbol_of_var.count(st.target); };
-    std::set<int> needed;
+    std::map<int, std::vector<Expr>> bodies;  // sum symbol -> the values accumulated into it
     std::vector<int> work;
     for (const Segment& seg : p.segments)
-      for (const Store& st : seg.stores)
-        if (!is_sum_store(st))
+      for (const Store& st : seg.stores) {
+        if (st.sum >= 0) {
+          bodies[st.sum].push_back(st.value);
+        } else {
           for (int sym : free_symbols(st.value)) work.push_back(sym);
-    std::map<int, std::vector<Expr>> bodies;
-    for (const Segment& seg : p.segments)
-      for (const Store& st : seg.stores)
-        if (is_sum_store(st)) bodies[symbol_of_var[st.target]].push_back(st.value);
+        }
+      }
+    std::set<int> needed;
     while (!work.empty()) {
       const int sym = work.back();
       work.pop_back();
@@ -286,24 +285,9 @@ class Builder {
     }
     std::vector<Segment> kept;
     for (Segment seg : p.segments) {
-      std::vector<Store> stores;
-      std::set<std::string> dropped;
-      for (const Store& st : seg.stores) {
-        if (is_sum_store(st) && !needed.count(symbol_of_var[st.target])) {
-          dropped.insert(st.target);
-          continue;
-        }
-        stores.push_back(st);
-      }
-      std::vector<std::string> before;
-      for (const std::string& line : seg.before) {
-        bool drop = false;
-        for (const std::string& v : dropped) drop = drop || line == "double " + v + " = 0.0;";
-        if (!drop) before.push_back(line);
-      }
-      seg.stores = stores;
-      seg.before = before;
-      if (!seg.stores.empty() || !seg.before.empty()) kept.push_back(seg);
+      std::erase_if(seg.stores, [&](const Store& st) { return st.sum >= 0 && !needed.count(st.sum); });
+      std::erase_if(seg.accumulators, [&](int sum) { return !needed.count(sum); });
+      if (!seg.stores.empty() || !seg.before.empty() || !seg.accumulators.empty()) kept.push_back(seg);
     }
     p.segments = kept;
     return p;
