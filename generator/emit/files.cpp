@@ -5,7 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "pdgen/kernels.hpp"
 
 namespace pdgen {
 
@@ -27,12 +26,7 @@ std::string counts_init(const EmitCounts& c) {
          std::to_string(c.calls) + "}";
 }
 
-struct StemOutput {
-  std::ostringstream decl, code;
-  std::vector<std::string> descriptor_functions, influence_entries;
-};
-
-void emit_law(const Law& law, StemOutput& out) {
+std::string descriptor_head(const Law& law) {
   const std::string& n = law.name();
   std::ostringstream desc;
   desc << "pd::abi::LawDescriptor " << n << "_descriptor() {\n";
@@ -53,83 +47,54 @@ void emit_law(const Law& law, StemOutput& out) {
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
   if (law.has_fixed_poisson_ratio())
     desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";
-  const Law intact = law.with_alpha_folded();
-  for (const auto& [variant, l] : {std::pair<std::string, const Law*>{"damaged", &law}, {"intact", &intact}}) {
-    const LawKernelSet k = build_kernels(*l, n + "_" + variant);
-    if (variant == "damaged")
-      desc << "  d.n_moments = " << k.n_moments << ";\n  d.n_states = " << k.n_states << ";\n";
-    std::vector<std::pair<std::string, const KernelProgram*>> progs{
-        {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
-    if (k.has_energy) progs.push_back({"energy", &k.energy});
-    if (k.has_outputs) progs.push_back({"outputs", &k.outputs});
-    for (auto& [kind, prog] : progs) {
-      const EmittedKernel e = emit_kernel(*prog);
-      out.decl << e.declaration << "\n";
-      out.code << "\n" << e.code;
-      desc << "  d." << variant << "." << kind << " = &" << prog->name << ";\n";
-      if (kind == "residual" || kind == "tangent" || kind == "jvp")
-        desc << "  d." << variant << "." << kind << "_ops = " << counts_init(e.per_bond) << ";\n";
-    }
-  }
-  desc << "  return d;\n}\n";
-  out.decl << "pd::abi::LawDescriptor " << n << "_descriptor();\n";
-  out.code << "\n" << desc.str();
-  out.descriptor_functions.push_back(n + "_descriptor()");
-}
-
-void emit_influence(const InfluenceDef& inf, StemOutput& out) {
-  const Expr r = symbol("r"), delta = symbol("delta");
-  KernelProgram p;
-  p.name = "influence_" + inf.name;
-  p.return_type = "double";
-  p.params = {"double r", "double delta"};
-  p.param_names = {"r", "delta"};
-  p.bindings[symbol_index(r)] = {"r", "", false};
-  p.bindings[symbol_index(delta)] = {"delta", "", false};
-  Segment seg;
-  seg.stores.push_back({"const double w", inf.weight(r, delta), StoreMode::Set, ""});
-  p.segments.push_back(seg);
-  p.epilogue.push_back("return w;");
-  const EmittedKernel e = emit_kernel(p);
-  out.decl << e.declaration << "\n";
-  out.code << "\n// " << inf.name << ": " << inf.formula << "\n" << e.code;
-  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" + p.name + "}");
+  return desc.str();
 }
 }  // namespace
 
-std::map<std::string, std::string> generate_all_files() {
-  std::map<std::string, StemOutput> stems;
-  std::vector<std::string> law_names;
-  for (const LawEntry& e : law_registry()) {
-    law_under_construction().clear();
-    try {
-      const Law law = e.build();
-      if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
-      for (auto& n : law_names)
-        if (n == law.name()) throw std::invalid_argument("law '" + n + "' is registered twice");
-      law_names.push_back(law.name());
-      emit_law(law, stems[e.file_stem]);
-    } catch (const std::exception& ex) {
-      const std::string& name = law_under_construction();
-      throw std::invalid_argument(e.source + ": " + (name.empty() ? "" : "law '" + name + "': ") + ex.what());
+void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const std::vector<EmittedVariant>& variants) {
+  Stem& out = stems_[file_stem];
+  std::ostringstream decl, code, desc;
+  desc << descriptor_head(law);
+  for (const EmittedVariant& v : variants) {
+    if (v.name == "damaged") desc << "  d.n_moments = " << v.n_moments << ";\n  d.n_states = " << v.n_states << ";\n";
+    for (const NamedKernel& k : v.kernels) {
+      decl << k.emitted.declaration << "\n";
+      code << "\n" << k.emitted.code;
+      desc << "  d." << v.name << "." << k.kind << " = &" << k.function << ";\n";
+      if (k.kind == "residual" || k.kind == "tangent" || k.kind == "jvp")
+        desc << "  d." << v.name << "." << k.kind << "_ops = " << counts_init(k.emitted.per_bond) << ";\n";
     }
   }
-  for (const InfluenceDef& inf : influence_registry()) emit_influence(inf, stems[inf.file_stem]);
+  desc << "  return d;\n}\n";
+  decl << "pd::abi::LawDescriptor " << law.name() << "_descriptor();\n";
+  code << "\n" << desc.str();
+  out.decl += decl.str();
+  out.code += code.str();
+  out.descriptor_functions.push_back(law.name() + "_descriptor()");
+}
 
+void GeneratedFiles::add_influence(const InfluenceDef& inf, const NamedKernel& weight) {
+  Stem& out = stems_[inf.file_stem];
+  out.decl += weight.emitted.declaration + "\n";
+  out.code += "\n// " + inf.name + ": " + inf.formula + "\n" + weight.emitted.code;
+  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" + weight.function + "}");
+}
+
+std::map<std::string, std::string> GeneratedFiles::files() const {
   std::map<std::string, std::string> files;
   std::ostringstream table;
   table << kHeader << "*.cpp" << kDoNotEdit << "// The tables of every generated law and influence function.\n"
         << "#include <string_view>\n\n#include \"kernel_abi.hpp\"\n";
   std::vector<std::string> descriptors, influences;
-  for (auto& [stem, out] : stems) {
+  for (const auto& [stem, out] : stems_) {
     table << "#include \"" << stem << ".hpp\"\n";
     for (auto& d : out.descriptor_functions) descriptors.push_back("pd::generated::" + d);
     for (auto& i : out.influence_entries) influences.push_back(i);
     std::ostringstream h, c;
     h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n#include \"kernel_abi.hpp\"\n\nnamespace pd::generated {\n\n"
-      << out.decl.str() << "\n}  // namespace pd::generated\n";
+      << out.decl << "\n}  // namespace pd::generated\n";
     c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n#include <vector>\n\n"
-      << "namespace pd::generated {\n" << out.code.str() << "\n}  // namespace pd::generated\n";
+      << "namespace pd::generated {\n" << out.code << "\n}  // namespace pd::generated\n";
     files[stem + ".hpp"] = h.str();
     files[stem + ".cpp"] = c.str();
   }

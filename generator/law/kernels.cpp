@@ -308,4 +308,20 @@ class Builder {
 
 LawKernelSet build_kernels(const Law& law, const std::string& prefix) { return Builder(law, prefix).build(); }
 
+KernelProgram influence_kernel(const InfluenceDef& inf) {
+  const Expr r = symbol("r"), delta = symbol("delta");
+  KernelProgram p;
+  p.name = "influence_" + inf.name;
+  p.return_type = "double";
+  p.params = {"double r", "double delta"};
+  p.param_names = {"r", "delta"};
+  p.bindings[symbol_index(r)] = {"r", "", false};
+  p.bindings[symbol_index(delta)] = {"delta", "", false};
+  Segment seg;
+  seg.stores.push_back({"const double w", inf.weight(r, delta), StoreMode::Set, ""});
+  p.segments.push_back(seg);
+  p.epilogue.push_back("return w;");
+  return p;
+}
+
 }  // namespace pdgen
