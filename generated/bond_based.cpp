@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace pd::generated {
 
@@ -314,6 +313,7 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.balances_angular_momentum = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_2d_damaged_moments;
@@ -645,6 +645,7 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.balances_angular_momentum = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_2d_damaged_moments;
@@ -1046,6 +1047,7 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.balances_angular_momentum = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_3d_damaged_moments;
@@ -1451,6 +1453,7 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.balances_angular_momentum = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_3d_damaged_moments;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace pd::generated {
 
@@ -660,6 +659,7 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
   d.damaged.moments = &correspondence_plane_strain_damaged_moments;
@@ -1993,6 +1993,7 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;
   d.damaged.moments = &correspondence_3d_damaged_moments;
@@ -2846,6 +2847,7 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 6;
   d.n_states = 4;
   d.damaged.moments = &correspondence_silling_plane_strain_damaged_moments;
@@ -4385,6 +4387,7 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 11;
   d.n_states = 9;
   d.damaged.moments = &correspondence_silling_3d_damaged_moments;
@@ -5227,6 +5230,7 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
   d.damaged.moments = &correspondence_littlewood_plane_strain_damaged_moments;
@@ -6785,6 +6789,7 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;
   d.damaged.moments = &correspondence_littlewood_3d_damaged_moments;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace pd::generated {
 
@@ -441,6 +440,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
@@ -981,6 +981,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
@@ -1678,6 +1679,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
@@ -2759,6 +2761,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace pd::generated {
 
@@ -42,8 +41,7 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -96,8 +94,7 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -184,8 +181,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
@@ -318,8 +314,7 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -370,8 +365,7 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -456,8 +450,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
@@ -568,6 +561,7 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
   d.damaged.moments = &oterkus_plane_strain_damaged_moments;
@@ -618,8 +612,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -671,8 +664,7 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -758,8 +750,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
@@ -887,8 +878,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -938,8 +928,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -1023,8 +1012,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
@@ -1135,6 +1123,7 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 2;
   d.n_states = 1;
   d.damaged.moments = &oterkus_paper_d_plane_strain_damaged_moments;

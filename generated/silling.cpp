@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace pd::generated {
 
@@ -30,8 +29,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -79,8 +77,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -154,8 +151,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
@@ -224,8 +220,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -301,8 +296,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -348,8 +342,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -421,8 +414,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
@@ -489,8 +481,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -556,6 +547,7 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_plane_strain_damaged_moments;
@@ -602,8 +594,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -657,8 +648,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -751,8 +741,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
@@ -835,8 +824,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -917,8 +905,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -970,8 +957,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -1062,8 +1048,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
@@ -1144,8 +1129,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -1215,6 +1199,7 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_3d_damaged_moments;

@@ -1,6 +1,9 @@
 // Assembles the emitted kernels into files: <stem>.hpp/.cpp per law file, law_table.cpp.
 #include "pdgen/files.hpp"
 
+#include "emit/abi_text.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -29,7 +32,7 @@ std::string counts_init(const EmitCounts& c) {
 std::string descriptor_head(const Law& law) {
   const std::string& n = law.name();
   std::ostringstream desc;
-  desc << "pd::abi::LawDescriptor " << n << "_descriptor() {\n";
+  desc << abi_text::law_descriptor_type() << " " << n << "_descriptor() {\n";
   std::vector<std::string> names = law.param_names();
   desc << "  static const char* const params[] = {";
   for (auto& p : names) desc << quoted(p) << ", ";
@@ -40,7 +43,7 @@ std::string descriptor_head(const Law& law) {
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
   desc << "nullptr};\n";
-  desc << "  pd::abi::LawDescriptor d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
+  desc << "  " << abi_text::law_descriptor_type() << " d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
        << ";\n  d.dim = " << law.dim() << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
   desc << "  d.param_test_values = test_values;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
@@ -55,6 +58,10 @@ void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const
   Stem& out = stems_[file_stem];
   std::ostringstream decl, code, desc;
   desc << descriptor_head(law);
+  int scratch = 0;
+  for (const EmittedVariant& v : variants)
+    for (const NamedKernel& k : v.kernels) scratch = std::max(scratch, k.emitted.scratch_per_bond);
+  desc << "  d.scratch_per_bond = " << scratch << ";\n";
   for (const EmittedVariant& v : variants) {
     if (v.name == "damaged") desc << "  d.n_moments = " << v.n_moments << ";\n  d.n_states = " << v.n_states << ";\n";
     for (const NamedKernel& k : v.kernels) {
@@ -66,7 +73,7 @@ void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const
     }
   }
   desc << "  return d;\n}\n";
-  decl << "pd::abi::LawDescriptor " << law.name() << "_descriptor();\n";
+  decl << abi_text::law_descriptor_type() << " " << law.name() << "_descriptor();\n";
   code << "\n" << desc.str();
   out.decl += decl.str();
   out.code += code.str();
@@ -84,33 +91,21 @@ std::map<std::string, std::string> GeneratedFiles::files() const {
   std::map<std::string, std::string> files;
   std::ostringstream table;
   table << kHeader << "*.cpp" << kDoNotEdit << "// The tables of every generated law and influence function.\n"
-        << "#include <string_view>\n\n#include \"kernel_abi.hpp\"\n";
+        << "#include <string_view>\n\n" << abi_text::abi_include();
   std::vector<std::string> descriptors, influences;
   for (const auto& [stem, out] : stems_) {
     table << "#include \"" << stem << ".hpp\"\n";
     for (auto& d : out.descriptor_functions) descriptors.push_back("pd::generated::" + d);
     for (auto& i : out.influence_entries) influences.push_back(i);
     std::ostringstream h, c;
-    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n#include \"kernel_abi.hpp\"\n\nnamespace pd::generated {\n\n"
+    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n" << abi_text::abi_include() << "\nnamespace pd::generated {\n\n"
       << out.decl << "\n}  // namespace pd::generated\n";
-    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n#include <vector>\n\n"
+    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n"
       << "namespace pd::generated {\n" << out.code << "\n}  // namespace pd::generated\n";
     files[stem + ".hpp"] = h.str();
     files[stem + ".cpp"] = c.str();
   }
-  table << "\nnamespace pd::abi {\n\nstd::span<const LawDescriptor> all_laws() {\n  static const LawDescriptor table[] = {\n";
-  for (auto& d : descriptors) table << "      " << d << ",\n";
-  if (descriptors.empty()) table << "      LawDescriptor{},\n";
-  table << "  };\n  return std::span<const LawDescriptor>(table, " << descriptors.size() << ");\n}\n\n";
-  table << "std::span<const InfluenceDescriptor> all_influences() {\n  using namespace pd::generated;\n"
-        << "  static const InfluenceDescriptor table[] = {\n";
-  for (auto& i : influences) table << "      " << i << ",\n";
-  if (influences.empty()) table << "      InfluenceDescriptor{},\n";
-  table << "  };\n  return std::span<const InfluenceDescriptor>(table, " << influences.size() << ");\n}\n\n";
-  table << "const LawDescriptor* find_law(std::string_view name) {\n  for (const LawDescriptor& d : all_laws())\n"
-        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n"
-        << "const InfluenceDescriptor* find_influence(std::string_view name) {\n  for (const InfluenceDescriptor& d : all_influences())\n"
-        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n}  // namespace pd::abi\n";
+  table << "\n" << abi_text::law_table(descriptors, influences);
   files["law_table.cpp"] = table.str();
   return files;
 }

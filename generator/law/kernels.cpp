@@ -11,6 +11,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "emit/abi_text.hpp"
 #include "pdgen/diff.hpp"
 
 namespace pdgen {
@@ -39,12 +40,12 @@ class Builder {
     out.tangent = prune(tangent_kernel());
     out.jvp = prune(jvp_kernel());
     out.has_energy = law_.has_energy();
-    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", "double", {{"W", law_.energy_density()}}));
+    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", abi_text::Kernel::Energy, {{"W", law_.energy_density()}}));
     out.has_outputs = !law_.outputs().empty();
     if (out.has_outputs) {
       std::vector<std::pair<std::string, Expr>> values;
-      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({"outputs[" + str(static_cast<int>(i)) + "]", law_.outputs()[i].value});
-      out.outputs = prune(particle_value_kernel("outputs", "void", values));
+      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({abi_text::output(static_cast<int>(i)), law_.outputs()[i].value});
+      out.outputs = prune(particle_value_kernel("outputs", abi_text::Kernel::Outputs, values));
     }
     return out;
   }
@@ -73,31 +74,30 @@ class Builder {
   // unless the kernel computes them.
   std::map<int, Binding> base_bindings(bool moments_are_inputs) const {
     std::map<int, Binding> b;
-    const std::string D = str(D_);
     for (int c = 0; c < D_; ++c) {
-      b[symbol_index(law_.xi()[c])] = {"xi_" + str(c), "fam.xi[k * " + D + " + " + str(c) + "]", true};
-      b[symbol_index(law_.Y()[c])] = {"Y_" + str(c), "fam.Y[k * " + D + " + " + str(c) + "]", true};
+      b[symbol_index(law_.xi()[c])] = {"xi_" + str(c), abi_text::bond_vector("xi", D_, c), true};
+      b[symbol_index(law_.Y()[c])] = {"Y_" + str(c), abi_text::bond_vector("Y", D_, c), true};
     }
-    b[symbol_index(law_.w())] = {"w", "fam.w[k]", true};
-    b[symbol_index(law_.alpha())] = {"alpha", "fam.alpha[k]", true};
-    b[symbol_index(law_.V())] = {"V", "fam.V[k]", true};
-    b[symbol_index(law_.V0())] = {"V0", "fam.V0", false};
-    b[symbol_index(law_.delta())] = {"delta", "fam.delta", false};
+    b[symbol_index(law_.w())] = {"w", abi_text::bond_scalar("w"), true};
+    b[symbol_index(law_.alpha())] = {"alpha", abi_text::bond_scalar("alpha"), true};
+    b[symbol_index(law_.V())] = {"V", abi_text::bond_scalar("V"), true};
+    b[symbol_index(law_.V0())] = {"V0", abi_text::family_scalar("V0"), false};
+    b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
-      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], "fam.params[" + str(static_cast<int>(i)) + "]", false};
+      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)), false};
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? "fam.moments[" + str(static_cast<int>(i)) + "]" : "", false};
+      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
     for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};
     return b;
   }
 
-  KernelProgram program(const std::string& kind, const std::string& ret, std::vector<std::string> params,
-                        std::vector<std::string> names, bool moments_are_inputs) const {
+  KernelProgram program(const std::string& kind, abi_text::Kernel k, bool moments_are_inputs) const {
+    const abi_text::Signature sig = abi_text::signature(k);
     KernelProgram p;
     p.name = prefix_ + "_" + kind;
-    p.return_type = ret;
-    p.params = std::move(params);
-    p.param_names = std::move(names);
+    p.return_type = sig.return_type;
+    p.params = sig.params;
+    p.param_names = sig.names;
     p.bindings = base_bindings(moments_are_inputs);
     return p;
   }
@@ -129,29 +129,28 @@ class Builder {
 
   // Nodal forces: f_0 += V0 V t, f_{k+1} = -V0 V t (the convention of kernel_abi.hpp).
   void force_stores(Segment& seg, const std::vector<Expr>& t, const std::string& array, const std::string& guard) const {
-    const std::string D = str(D_);
     std::string zero;
-    for (int c = 0; c < D_; ++c) zero += array + "[" + str(c) + "] = 0.0; ";
+    for (int c = 0; c < D_; ++c) zero += abi_text::center_component(array, c) + " = 0.0; ";
     seg.before.push_back(guard.empty() ? zero : "if (" + guard + ") { " + zero + "}");
     for (int c = 0; c < D_; ++c) {
       const Expr v = law_.V0() * law_.V() * t[static_cast<std::size_t>(c)];
-      seg.stores.push_back({array + "[(k + 1) * " + D + " + " + str(c) + "]", v, StoreMode::SetNegated, guard});
-      seg.stores.push_back({array + "[" + str(c) + "]", v, StoreMode::Accumulate, guard});
+      seg.stores.push_back({abi_text::neighbour_component(array, D_, c), v, StoreMode::SetNegated, guard});
+      seg.stores.push_back({abi_text::center_component(array, c), v, StoreMode::Accumulate, guard});
     }
   }
 
   KernelProgram moments_kernel() const {
-    KernelProgram p = program("moments", "void", {"const pd::abi::Family& fam", "double* moments"}, {"fam", "moments"}, false);
+    KernelProgram p = program("moments", abi_text::Kernel::Moments, false);
     sum_loops(p, moments_);
     Segment out;
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      out.stores.push_back({"moments[" + str(static_cast<int>(i)) + "]", moments_[i]->symbol, StoreMode::Set, ""});
+      out.stores.push_back({abi_text::moment_output(static_cast<int>(i)), moments_[i]->symbol, StoreMode::Set, ""});
     if (!out.stores.empty()) p.segments.push_back(out);
     return p;
   }
 
   KernelProgram residual_kernel() const {
-    KernelProgram p = program("residual", "void", {"const pd::abi::Family& fam", "double* forces"}, {"fam", "forces"}, true);
+    KernelProgram p = program("residual", abi_text::Kernel::Residual, true);
     sum_loops(p, force_states_);
     Segment seg;
     seg.loop = true;
@@ -161,9 +160,7 @@ class Builder {
   }
 
   KernelProgram tangent_kernel() const {
-    KernelProgram p = program("tangent", "void",
-                              {"const pd::abi::Family& fam", "double* forces", "const pd::abi::TangentFactors& factors"},
-                              {"fam", "forces", "factors"}, true);
+    KernelProgram p = program("tangent", abi_text::Kernel::Tangent, true);
     const int NS = static_cast<int>(force_states_.size());
     // Coupling sums C[s][s'] between states, bound to per-family variables.
     std::map<std::pair<int, int>, Expr> coupling;
@@ -188,11 +185,10 @@ class Builder {
     Segment seg;
     seg.loop = true;
     const std::vector<Expr> t = force_roots();
-    force_stores(seg, t, "forces", "forces != nullptr");
-    const std::string D = str(D_), DD = str(D_ * D_), NSs = str(NS);
+    force_stores(seg, t, "forces", abi_text::forces_requested());
     for (int r = 0; r < D_; ++r)
       for (int c = 0; c < D_; ++c)
-        seg.stores.push_back({"factors.direct[k * " + DD + " + " + str(r * D_ + c) + "]", diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
+        seg.stores.push_back({abi_text::factor_direct(D_, r, c), diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
     std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS), std::vector<Expr>(static_cast<std::size_t>(D_)));
     for (int s = 0; s < NS; ++s) {
       for (int c = 0; c < D_; ++c) {
@@ -200,10 +196,10 @@ class Builder {
         for (int q = 0; q < s; ++q)
           if (auto it = coupling.find({s, q}); it != coupling.end()) v = v + it->second * R[q][c];
         R[s][c] = v;
-        seg.stores.push_back({"factors.right[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(c) + "]", v, StoreMode::Set, ""});
+        seg.stores.push_back({abi_text::factor_right(D_, NS, s, c), v, StoreMode::Set, ""});
       }
       for (int r = 0; r < D_; ++r)
-        seg.stores.push_back({"factors.left[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(r) + "]",
+        seg.stores.push_back({abi_text::factor_left(D_, NS, s, r),
                               diff(t[r], force_states_[s]->symbol), StoreMode::Set, ""});
     }
     p.segments.push_back(seg);
@@ -212,13 +208,11 @@ class Builder {
 
   // df = (df/dy) dy with dY_k = dy_{k+1} - dy_0, through the states' increments.
   KernelProgram jvp_kernel() const {
-    KernelProgram p = program("jvp", "void", {"const pd::abi::Family& fam", "const double* dy", "double* df"},
-                              {"fam", "dy", "df"}, true);
-    const std::string D = str(D_);
+    KernelProgram p = program("jvp", abi_text::Kernel::Jvp, true);
     Vec dY(D_);
     for (int c = 0; c < D_; ++c) {
       dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput);
-      p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), "dy[(k + 1) * " + D + " + " + str(c) + "] - dy[" + str(c) + "]", true};
+      p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), abi_text::bond_increment(D_, c), true};
     }
     std::vector<Expr> dS;
     for (const SumDef* s : force_states_) {
@@ -245,11 +239,10 @@ class Builder {
     return p;
   }
 
-  KernelProgram particle_value_kernel(const std::string& kind, const std::string& ret,
+  KernelProgram particle_value_kernel(const std::string& kind, abi_text::Kernel k,
                                       const std::vector<std::pair<std::string, Expr>>& values) const {
-    const bool returns = ret != "void";
-    KernelProgram p = returns ? program(kind, ret, {"const pd::abi::Family& fam"}, {"fam"}, true)
-                              : program(kind, ret, {"const pd::abi::Family& fam", "double* outputs"}, {"fam", "outputs"}, true);
+    KernelProgram p = program(kind, k, true);
+    const bool returns = p.return_type != "void";
     std::vector<Expr> roots;
     for (auto& v : values) roots.push_back(v.second);
     sum_loops(p, needed(roots, true));
@@ -310,11 +303,12 @@ LawKernelSet build_kernels(const Law& law, const std::string& prefix) { return B
 
 KernelProgram influence_kernel(const InfluenceDef& inf) {
   const Expr r = symbol("r"), delta = symbol("delta");
+  const abi_text::Signature sig = abi_text::signature(abi_text::Kernel::Influence);
   KernelProgram p;
   p.name = "influence_" + inf.name;
-  p.return_type = "double";
-  p.params = {"double r", "double delta"};
-  p.param_names = {"r", "delta"};
+  p.return_type = sig.return_type;
+  p.params = sig.params;
+  p.param_names = sig.names;
   p.bindings[symbol_index(r)] = {"r", "", false};
   p.bindings[symbol_index(delta)] = {"delta", "", false};
   Segment seg;

@@ -19,6 +19,7 @@ struct TestFamily {
   std::vector<double> x;  // [(L+1)*dim] reference positions, center first
   std::vector<double> y;  // [(L+1)*dim] deformed positions
   std::vector<double> xi, Y, w, alpha, V, params, moments;
+  mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
   const abi::LawDescriptor* law = nullptr;
 
@@ -37,6 +38,9 @@ struct TestFamily {
     f.delta = delta;
     f.params = params.data();
     f.moments = moments.data();
+    const auto need = static_cast<std::size_t>(bonds() * (law ? law->scratch_per_bond : 0));
+    if (kernel_scratch.size() < need) kernel_scratch.resize(need);  // once: a family's bond count is fixed
+    f.scratch = kernel_scratch.data();
     return f;
   }
   void set_positions(const std::vector<double>& positions) {

@@ -10,7 +10,9 @@ TEST(AdmissiblePoisson, BondBasedLawsDeclareOneQuarter) {
   for (const auto& law : pd::abi::all_laws()) {
     const std::string n = law.name;
     EXPECT_EQ(law.has_fixed_poisson_ratio, n.rfind("bond_based_", 0) == 0) << n;
-    if (law.has_fixed_poisson_ratio) EXPECT_EQ(law.poisson_ratio, 0.25) << n;
+    if (law.has_fixed_poisson_ratio) {
+      EXPECT_EQ(law.poisson_ratio, 0.25) << n;
+    }
   }
 }
 

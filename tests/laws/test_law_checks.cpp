@@ -93,7 +93,9 @@ TEST(CheckLawFamilies, ALawInfiniteAtTheHorizonFailsOnlyOnTheLatticeFamily) {
     const bool lattice = c.description == "lattice, r = delta";
     lattice_seen = lattice_seen || lattice;
     EXPECT_EQ(c.finite, !lattice) << c.description;
-    if (lattice) EXPECT_FALSE(pd::verify::passes(bad, c));
+    if (lattice) {
+      EXPECT_FALSE(pd::verify::passes(bad, c));
+    }
   }
   EXPECT_TRUE(lattice_seen);
 }

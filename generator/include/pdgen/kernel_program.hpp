@@ -56,6 +56,7 @@ struct EmittedKernel {
   std::string declaration;  // the prototype
   EmitCounts per_bond;      // summed over the kernel's bond loops
   EmitCounts per_family;    // outside the loops
+  int scratch_per_bond = 0;  // doubles per bond the kernel keeps in fam.scratch
 };
 
 EmittedKernel emit_kernel(const KernelProgram& program);
