@@ -10,14 +10,9 @@
 #include <sstream>
 
 #include "verify/random_family.hpp"
+#include "law_list.hpp"
 
 namespace {
-std::vector<const pd::abi::LawDescriptor*> laws() {
-  std::vector<const pd::abi::LawDescriptor*> v;
-  for (const auto& l : pd::abi::all_laws()) v.push_back(&l);
-  return v;
-}
-std::string law_name(const testing::TestParamInfo<const pd::abi::LawDescriptor*>& info) { return info.param->name; }
 class KernelScratch : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
 }  // namespace
 
@@ -52,7 +47,7 @@ TEST_P(KernelScratch, KernelsUseOnlyTheDeclaredScratchAndWriteItBeforeReading) {
   for (std::size_t i = used; i < scratch.size(); ++i) EXPECT_EQ(scratch[i], marker) << "wrote past the declared scratch";
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, KernelScratch, testing::ValuesIn(laws()), law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, KernelScratch, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
 
 TEST(KernelScratch, NoGeneratedSourceHoldsThreadLocalOrStaticState) {
   int files = 0;

@@ -10,16 +10,11 @@
 #include "verify/balance.hpp"
 #include "verify/tangent_check.hpp"
 #include "verify/test_values.hpp"
+#include "law_list.hpp"
 
 using pd::verify::FamilyCheck;
 
 namespace {
-std::vector<const pd::abi::LawDescriptor*> laws() {
-  std::vector<const pd::abi::LawDescriptor*> v;
-  for (const auto& l : pd::abi::all_laws()) v.push_back(&l);
-  return v;
-}
-std::string law_name(const testing::TestParamInfo<const pd::abi::LawDescriptor*>& info) { return info.param->name; }
 class CheckLaw : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
@@ -35,7 +30,7 @@ TEST_P(CheckLaw, EveryFamilyPasses) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, CheckLaw, testing::ValuesIn(laws()), law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, CheckLaw, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
 
 // The claim is declared by the laws whose force state is parallel to the deformed bond
 // (docs/laws.md); the linearised laws (correspondence, LPS) do not balance it, and the
