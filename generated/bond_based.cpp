@@ -3,7 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
+#include <limits>
 
 namespace pd::generated {
 
@@ -299,6 +299,7 @@ double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
 
 pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_2d";
@@ -306,8 +307,13 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.dim = 2;
   d.n_params = 1;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 0;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.has_fixed_poisson_ratio = true;
+  d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_2d_damaged_moments;
@@ -625,6 +631,7 @@ double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
 
 pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_2d";
@@ -632,8 +639,13 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.dim = 2;
   d.n_params = 1;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 0;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.has_fixed_poisson_ratio = true;
+  d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_2d_damaged_moments;
@@ -1021,6 +1033,7 @@ double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
 
 pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_3d";
@@ -1028,8 +1041,13 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.dim = 3;
   d.n_params = 1;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 0;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.has_fixed_poisson_ratio = true;
+  d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_3d_damaged_moments;
@@ -1421,6 +1439,7 @@ double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
 
 pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_3d";
@@ -1428,8 +1447,13 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.dim = 3;
   d.n_params = 1;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 0;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.has_fixed_poisson_ratio = true;
+  d.poisson_ratio = 0.25;
+  d.scratch_per_bond = 0;
   d.n_moments = 0;
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_3d_damaged_moments;

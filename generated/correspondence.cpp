@@ -3,7 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
+#include <limits>
 
 namespace pd::generated {
 
@@ -648,6 +648,7 @@ void correspondence_plane_strain_intact_outputs(const pd::abi::Family& fam, doub
 
 pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_plane_strain";
@@ -655,8 +656,10 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
   d.damaged.moments = &correspondence_plane_strain_damaged_moments;
@@ -1979,6 +1982,7 @@ void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* output
 
 pd::abi::LawDescriptor correspondence_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_3d";
@@ -1986,8 +1990,10 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;
   d.damaged.moments = &correspondence_3d_damaged_moments;
@@ -2830,6 +2836,7 @@ void correspondence_silling_plane_strain_intact_outputs(const pd::abi::Family& f
 
 pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_plane_strain";
@@ -2837,8 +2844,10 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 6;
   d.n_states = 4;
   d.damaged.moments = &correspondence_silling_plane_strain_damaged_moments;
@@ -4367,6 +4376,7 @@ void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double
 
 pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_3d";
@@ -4374,8 +4384,10 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.dim = 3;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 11;
   d.n_states = 9;
   d.damaged.moments = &correspondence_silling_3d_damaged_moments;
@@ -5207,6 +5219,7 @@ void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family
 
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_plane_strain";
@@ -5214,8 +5227,10 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
   d.damaged.moments = &correspondence_littlewood_plane_strain_damaged_moments;
@@ -6763,6 +6778,7 @@ void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, dou
 
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_3d";
@@ -6770,8 +6786,10 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.dim = 3;
   d.n_params = 3;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;
   d.damaged.moments = &correspondence_littlewood_3d_damaged_moments;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
+#include <limits>
 
 namespace pd::generated {
 
@@ -429,6 +429,7 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
 
 pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_plane_strain";
@@ -436,8 +437,10 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
@@ -967,6 +970,7 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
 
 pd::abi::LawDescriptor lps_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_3d";
@@ -974,8 +978,10 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
@@ -1662,6 +1668,7 @@ void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, doubl
 
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_plane_strain";
@@ -1669,8 +1676,10 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
@@ -2741,6 +2750,7 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
 
 pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_3d";
@@ -2748,8 +2758,10 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
+#include <limits>
 
 namespace pd::generated {
 
@@ -41,8 +41,7 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -95,8 +94,7 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -183,8 +181,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
@@ -317,8 +314,7 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -369,8 +365,7 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
   for (int k = 0; k < L; ++k) {
@@ -455,8 +450,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double s_mx = fam.moments[2];
   const double s_m2 = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
@@ -555,6 +549,7 @@ void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
 
 pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_plane_strain";
@@ -562,8 +557,11 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
   d.damaged.moments = &oterkus_plane_strain_damaged_moments;
@@ -614,8 +612,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -667,8 +664,7 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -754,8 +750,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
@@ -883,8 +878,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -934,8 +928,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
   for (int k = 0; k < L; ++k) {
@@ -1019,8 +1012,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   const double P_kappa2 = fam.params[0];
   const double s_mx = fam.moments[1];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
@@ -1119,6 +1111,7 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
 
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_paper_d_plane_strain";
@@ -1126,8 +1119,11 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 2;
   d.n_states = 1;
   d.damaged.moments = &oterkus_paper_d_plane_strain_damaged_moments;

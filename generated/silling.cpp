@@ -3,7 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
+#include <limits>
 
 namespace pd::generated {
 
@@ -29,8 +29,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -78,8 +77,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -153,8 +151,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
@@ -223,8 +220,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -300,8 +296,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -347,8 +342,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -420,8 +414,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
@@ -488,8 +481,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -543,6 +535,7 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
 
 pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_plane_strain";
@@ -550,8 +543,11 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_plane_strain_damaged_moments;
@@ -598,8 +594,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -653,8 +648,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -747,8 +741,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
@@ -831,8 +824,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -913,8 +905,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -966,8 +957,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -1058,8 +1048,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   const double V0 = fam.V0;
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
@@ -1140,8 +1129,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
   const double s_m = fam.moments[0];
   const double P_K = fam.params[0];
   const double P_G = fam.params[1];
-  thread_local std::vector<double> cache;
-  cache.resize(static_cast<std::size_t>(L) * 2);
+  double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   for (int k = 0; k < L; ++k) {
@@ -1199,6 +1187,7 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
 
 pd::abi::LawDescriptor silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_3d";
@@ -1206,8 +1195,11 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
+  d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_3d_damaged_moments;

@@ -1,19 +1,93 @@
-// pdgen: the build-time generator driver. Its stages, each in its own files:
+// pdgen: the build-time generator driver. It runs the stages, each in its own files:
 //   laws/*.cpp (DSL, registered via PDGEN_LAW)       generator/law/law.cpp
 //   -> horizon sums classified (moment/state)         generator/law/law.cpp
 //   -> derivatives, chain rule through sums           generator/diff/, generator/law/kernels.cpp
 //   -> lowering to binary IR, hash-consed             generator/emit/lower.cpp
 //   -> scheduling, CSE, hoisting, C++ text            generator/emit/emitter.cpp
 //   -> files and law table                            generator/emit/files.cpp
-// Usage: pdgen --out DIR   (rewrites a file only when its content changes)
+// Usage: pdgen --out DIR   (rewrites a file only when its content changes, and removes
+// the .cpp/.hpp files in DIR it no longer emits, e.g. those of a deleted law)
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "pdgen/files.hpp"
+#include "pdgen/kernels.hpp"
+
+namespace {
+using namespace pdgen;
+
+// Stages 1-5 for one variant: kernel programs, then C++ for each.
+EmittedVariant emit_variant(const Law& law, const std::string& variant) {
+  const LawKernelSet k = build_kernels(law, law.name() + "_" + variant);
+  EmittedVariant v{variant, k.n_moments, k.n_states, {}};
+  std::vector<std::pair<std::string, const KernelProgram*>> programs{
+      {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
+  if (k.has_energy) programs.push_back({"energy", &k.energy});
+  if (k.has_outputs) programs.push_back({"outputs", &k.outputs});
+  for (const auto& [kind, program] : programs) v.kernels.push_back({kind, program->name, emit_kernel(*program)});
+  return v;
+}
+
+// Every registered law and influence function through every stage. A failing law is
+// reported with its file and name.
+GeneratedFiles generate() {
+  GeneratedFiles files;
+  std::set<std::string> law_names;
+  for (const LawEntry& e : law_registry()) {
+    law_under_construction().clear();
+    try {
+      const Law law = e.build();
+      if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
+      if (!law_names.insert(law.name()).second) throw std::invalid_argument("law '" + law.name() + "' is registered twice");
+      files.add_law(e.file_stem, law, {emit_variant(law, "damaged"), emit_variant(law.with_alpha_folded(), "intact")});
+    } catch (const std::exception& ex) {
+      const std::string& name = law_under_construction();
+      throw std::invalid_argument(e.source + ": " + (name.empty() ? "" : "law '" + name + "': ") + ex.what());
+    }
+  }
+  for (const InfluenceDef& inf : influence_registry()) {
+    const KernelProgram p = influence_kernel(inf);
+    files.add_influence(inf, {"weight", p.name, emit_kernel(p)});
+  }
+  return files;
+}
+
+// Writes the files whose content changed (through a temporary and a rename) and removes
+// the generated sources in `dir` that are no longer emitted. Returns the count written.
+int write_files(const std::filesystem::path& dir, const std::map<std::string, std::string>& files) {
+  std::filesystem::create_directories(dir);
+  int written = 0;
+  for (const auto& [name, content] : files) {
+    const std::filesystem::path path = dir / name;
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream old;
+    if (in) old << in.rdbuf();
+    if (in && old.str() == content) continue;
+    const std::filesystem::path tmp = path.string() + ".tmp";
+    {
+      std::ofstream f(tmp, std::ios::binary);
+      f << content;
+      if (!f) throw std::runtime_error("cannot write " + tmp.string());
+    }
+    std::filesystem::rename(tmp, path);
+    ++written;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string ext = entry.path().extension().string();
+    if ((ext == ".cpp" || ext == ".hpp") && !files.count(entry.path().filename().string())) {
+      std::filesystem::remove(entry.path());
+      std::cout << "pdgen: removed " << entry.path().string() << " (no longer emitted)\n";
+    }
+  }
+  return written;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   std::string out_dir;
@@ -31,24 +105,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const auto files = pdgen::generate_all_files();
-    std::filesystem::create_directories(out_dir);
-    int written = 0;
-    for (const auto& [name, content] : files) {
-      const std::filesystem::path path = std::filesystem::path(out_dir) / name;
-      std::ifstream in(path, std::ios::binary);
-      std::ostringstream old;
-      if (in) old << in.rdbuf();
-      if (in && old.str() == content) continue;
-      const std::filesystem::path tmp = path.string() + ".tmp";
-      {
-        std::ofstream f(tmp, std::ios::binary);
-        f << content;
-        if (!f) throw std::runtime_error("cannot write " + tmp.string());
-      }
-      std::filesystem::rename(tmp, path);
-      ++written;
-    }
+    const auto files = generate().files();
+    const int written = write_files(out_dir, files);
     std::cout << "pdgen: " << files.size() << " files, " << written << " rewritten in " << out_dir << "\n";
   } catch (const std::exception& e) {
     std::cerr << "pdgen: error: " << e.what() << "\n";

@@ -28,6 +28,8 @@ Law bond_based(const std::string& name, int dim, bool conical, const std::string
   const Expr s = (l - r) / r;
   law.force(law.alpha() * c * s / 2 * law.Y() / l);
   law.energy(law.sum("bond_energy", law.alpha() * c * s * s * r * law.V() / 4));
+  law.claim_angular_momentum_balance();  // t is parallel to Y
+  law.fixed_poisson_ratio(0.25);
   return law;
 }
 }  // namespace

@@ -52,13 +52,13 @@ Law correspondence(const std::string& name, int dim, Stabilisation stab, const s
     const Vec z = law.Y() - F * law.xi();
     if (stab == Stabilisation::Silling) {
       const Expr w_bar = law.sum("influence_volume", wa * law.V()) / law.sum("intact_volume", law.alpha() * law.V());
-      const Expr k = law.param("stab") * c / (w_bar * delta);
+      const Expr k = law.param("stab", 1.0) * c / (w_bar * delta);
       t = t + wa * k * z;
       W = W + k / 2 * law.sum("nonaffine_energy", wa * dot(z, z) * law.V());
     } else {
       const Expr l = law.deformed_length();
       const Vec n = law.Y() / l;
-      t = t + wa * law.param("hourglass") * c * dot(z, n) / r * n;
+      t = t + wa * law.param("hourglass", 1.0) * c * dot(z, n) / r * n;
     }
   }
   law.force(t);

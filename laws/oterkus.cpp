@@ -34,6 +34,7 @@ Law oterkus(const std::string& name, const std::string& summary, bool d_from_m) 
   const Expr a = (2 * kappa - b * m2) / 4;
   const Expr theta = law.sum("theta", d * wa * e * cosine * law.V());
   law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
+  law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   law.output("dilatation", theta);
   return law;
 }

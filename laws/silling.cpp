@@ -27,6 +27,7 @@ Law silling(const std::string& name, int dim, const std::string& summary) {
   const Expr bulk = dim == 2 ? K + G / 3 : K;
   const double shear = dim == 2 ? 8.0 : 15.0;
   law.force(wa / m * (n * bulk * theta * r + shear * G * ed) * law.Y() / l);
+  law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   const Expr dev = law.sum("deviatoric_energy", wa * ed * ed * law.V());
   law.energy(bulk / 2 * theta * theta + shear / 2 * G / m * dev);
   law.output("dilatation", theta);

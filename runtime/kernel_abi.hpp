@@ -31,6 +31,10 @@ struct Family {
   double delta = 0.0;              // horizon of the center particle
   const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
   const double* moments = nullptr; // [n_moments] output of the moments kernel (setup)
+  // [L * LawDescriptor::scratch_per_bond] working memory the kernels may overwrite (per-bond
+  // values one loop computes and a later loop reads); the caller owns it, one per thread.
+  // May be null when the law's scratch_per_bond is 0.
+  double* scratch = nullptr;
 };
 
 // Factored tangent of one family. With T_ik = d t_i / d Y_k (bond i's force state
@@ -81,10 +85,20 @@ struct LawDescriptor {
   int dim = 0;
   int n_params = 0;
   const char* const* param_names = nullptr;
+  // [n_params] the value the automatic law tests give each parameter; NaN where the
+  // law declares none (elastic names are derived from the material instead).
+  const double* param_test_values = nullptr;
   int n_moments = 0;
   int n_states = 0;   // scalar state components (the s index of TangentFactors)
   int n_outputs = 0;
   const char* const* output_names = nullptr;
+  int scratch_per_bond = 0;  // doubles per bond of Family::scratch any kernel of the law uses
+  // The law claims sum_k Y_k x t_k = 0 (angular momentum balance) for every deformation.
+  bool balances_angular_momentum = false;
+  // The Poisson ratio the law has whatever its parameters (bond-based: 1/4), in its 3D
+  // or plane-strain form; false: any ratio the material gives.
+  bool has_fixed_poisson_ratio = false;
+  double poisson_ratio = 0.0;
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };

@@ -3,13 +3,14 @@
 // order; a node becomes a named temporary when it is used twice or is a call.
 // Per-family nodes needed inside a loop are hoisted before it. A per-bond call
 // needed by several loops is computed once and kept in a per-bond cache, so no
-// kernel evaluates the same sqrt/pow twice.
+// kernel evaluates the same sqrt/pow twice. The cache is the caller's Family::scratch.
 #include <charconv>
 #include <functional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "emit/abi_text.hpp"
 #include "emit/lir.hpp"
 
 namespace pdgen {
@@ -80,16 +81,16 @@ class Printer {
     plan_cache(roots);
 
     std::ostringstream body;
-    if (has_loop()) body << "  const int L = fam.n_bonds;\n";
+    if (has_loop()) body << "  const int L = " << abi_text::bond_count() << ";\n";
     emit_particle_loads(body, roots);
-    if (!cached_.empty())
-      body << "  thread_local std::vector<double> cache;\n  cache.resize(static_cast<std::size_t>(L) * "
-           << cached_.size() << ");\n";
+    // The per-bond cache lives in the caller's scratch (LawDescriptor::scratch_per_bond).
+    if (!cached_.empty()) body << "  double* const cache = " << abi_text::scratch() << ";\n";
     for (std::size_t s = 0; s < prog_.segments.size(); ++s) emit_segment(body, prog_.segments[s], roots[s], s);
     for (const std::string& line : prog_.epilogue) body << "  " << line << "\n";
 
     EmittedKernel out;
     out.per_bond = per_bond_;
+    out.scratch_per_bond = static_cast<int>(cached_.size());
     out.per_family = per_family_;
     std::string sig = prog_.return_type + " " + prog_.name + "(";
     for (std::size_t i = 0; i < prog_.params.size(); ++i) sig += (i ? ", " : "") + prog_.params[i];
@@ -249,6 +250,7 @@ class Printer {
   }
 
   void emit_segment(std::ostringstream& out, const Segment& seg, const std::vector<int>& roots, std::size_t) {
+    for (int sum : seg.accumulators) out << "  double " << prog_.bindings.at(sum).var << " = 0.0;\n";
     for (const std::string& line : seg.before) out << "  " << line << "\n";
     if (!seg.loop) {
       const auto order = reach(roots, [&](int i) { return names_.count(i) > 0; });

@@ -1,10 +1,13 @@
 // Assembles the emitted kernels into files: <stem>.hpp/.cpp per law file, law_table.cpp.
 #include "pdgen/files.hpp"
 
+#include "emit/abi_text.hpp"
+
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "pdgen/kernels.hpp"
 
 namespace pdgen {
 
@@ -26,111 +29,83 @@ std::string counts_init(const EmitCounts& c) {
          std::to_string(c.calls) + "}";
 }
 
-struct StemOutput {
-  std::ostringstream decl, code;
-  std::vector<std::string> descriptor_functions, influence_entries;
-};
-
-void emit_law(const Law& law, StemOutput& out) {
+std::string descriptor_head(const Law& law) {
   const std::string& n = law.name();
   std::ostringstream desc;
-  desc << "pd::abi::LawDescriptor " << n << "_descriptor() {\n";
+  desc << abi_text::law_descriptor_type() << " " << n << "_descriptor() {\n";
   std::vector<std::string> names = law.param_names();
   desc << "  static const char* const params[] = {";
   for (auto& p : names) desc << quoted(p) << ", ";
   desc << "nullptr};\n";
+  desc << "  static const double test_values[] = {";
+  for (double v : law.param_test_values()) desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
+  desc << "0.0};\n";
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
   desc << "nullptr};\n";
-  desc << "  pd::abi::LawDescriptor d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
+  desc << "  " << abi_text::law_descriptor_type() << " d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
        << ";\n  d.dim = " << law.dim() << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
+  desc << "  d.param_test_values = test_values;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
-  const Law intact = law.with_alpha_folded();
-  for (const auto& [variant, l] : {std::pair<std::string, const Law*>{"damaged", &law}, {"intact", &intact}}) {
-    const LawKernelSet k = build_kernels(*l, n + "_" + variant);
-    if (variant == "damaged")
-      desc << "  d.n_moments = " << k.n_moments << ";\n  d.n_states = " << k.n_states << ";\n";
-    std::vector<std::pair<std::string, const KernelProgram*>> progs{
-        {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
-    if (k.has_energy) progs.push_back({"energy", &k.energy});
-    if (k.has_outputs) progs.push_back({"outputs", &k.outputs});
-    for (auto& [kind, prog] : progs) {
-      const EmittedKernel e = emit_kernel(*prog);
-      out.decl << e.declaration << "\n";
-      out.code << "\n" << e.code;
-      desc << "  d." << variant << "." << kind << " = &" << prog->name << ";\n";
-      if (kind == "residual" || kind == "tangent" || kind == "jvp")
-        desc << "  d." << variant << "." << kind << "_ops = " << counts_init(e.per_bond) << ";\n";
-    }
-  }
-  desc << "  return d;\n}\n";
-  out.decl << "pd::abi::LawDescriptor " << n << "_descriptor();\n";
-  out.code << "\n" << desc.str();
-  out.descriptor_functions.push_back(n + "_descriptor()");
-}
-
-void emit_influence(const InfluenceDef& inf, StemOutput& out) {
-  const Expr r = symbol("r"), delta = symbol("delta");
-  KernelProgram p;
-  p.name = "influence_" + inf.name;
-  p.return_type = "double";
-  p.params = {"double r", "double delta"};
-  p.param_names = {"r", "delta"};
-  p.bindings[symbol_index(r)] = {"r", "", false};
-  p.bindings[symbol_index(delta)] = {"delta", "", false};
-  Segment seg;
-  seg.stores.push_back({"const double w", inf.weight(r, delta), StoreMode::Set, ""});
-  p.segments.push_back(seg);
-  p.epilogue.push_back("return w;");
-  const EmittedKernel e = emit_kernel(p);
-  out.decl << e.declaration << "\n";
-  out.code << "\n// " << inf.name << ": " << inf.formula << "\n" << e.code;
-  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" + p.name + "}");
+  if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
+  if (law.has_fixed_poisson_ratio())
+    desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";
+  return desc.str();
 }
 }  // namespace
 
-std::map<std::string, std::string> generate_all_files() {
-  std::map<std::string, StemOutput> stems;
-  std::vector<std::string> law_names;
-  for (const LawEntry& e : law_registry()) {
-    const Law law = e.build();
-    for (auto& n : law_names)
-      if (n == law.name()) throw std::invalid_argument("pdgen: law '" + n + "' is registered twice");
-    law_names.push_back(law.name());
-    emit_law(law, stems[e.file_stem]);
+void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const std::vector<EmittedVariant>& variants) {
+  Stem& out = stems_[file_stem];
+  std::ostringstream decl, code, desc;
+  desc << descriptor_head(law);
+  int scratch = 0;
+  for (const EmittedVariant& v : variants)
+    for (const NamedKernel& k : v.kernels) scratch = std::max(scratch, k.emitted.scratch_per_bond);
+  desc << "  d.scratch_per_bond = " << scratch << ";\n";
+  for (const EmittedVariant& v : variants) {
+    if (v.name == "damaged") desc << "  d.n_moments = " << v.n_moments << ";\n  d.n_states = " << v.n_states << ";\n";
+    for (const NamedKernel& k : v.kernels) {
+      decl << k.emitted.declaration << "\n";
+      code << "\n" << k.emitted.code;
+      desc << "  d." << v.name << "." << k.kind << " = &" << k.function << ";\n";
+      if (k.kind == "residual" || k.kind == "tangent" || k.kind == "jvp")
+        desc << "  d." << v.name << "." << k.kind << "_ops = " << counts_init(k.emitted.per_bond) << ";\n";
+    }
   }
-  for (const InfluenceDef& inf : influence_registry()) emit_influence(inf, stems[inf.file_stem]);
+  desc << "  return d;\n}\n";
+  decl << abi_text::law_descriptor_type() << " " << law.name() << "_descriptor();\n";
+  code << "\n" << desc.str();
+  out.decl += decl.str();
+  out.code += code.str();
+  out.descriptor_functions.push_back(law.name() + "_descriptor()");
+}
 
+void GeneratedFiles::add_influence(const InfluenceDef& inf, const NamedKernel& weight) {
+  Stem& out = stems_[inf.file_stem];
+  out.decl += weight.emitted.declaration + "\n";
+  out.code += "\n// " + inf.name + ": " + inf.formula + "\n" + weight.emitted.code;
+  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" + weight.function + "}");
+}
+
+std::map<std::string, std::string> GeneratedFiles::files() const {
   std::map<std::string, std::string> files;
   std::ostringstream table;
   table << kHeader << "*.cpp" << kDoNotEdit << "// The tables of every generated law and influence function.\n"
-        << "#include <string_view>\n\n#include \"kernel_abi.hpp\"\n";
+        << "#include <string_view>\n\n" << abi_text::abi_include();
   std::vector<std::string> descriptors, influences;
-  for (auto& [stem, out] : stems) {
+  for (const auto& [stem, out] : stems_) {
     table << "#include \"" << stem << ".hpp\"\n";
     for (auto& d : out.descriptor_functions) descriptors.push_back("pd::generated::" + d);
     for (auto& i : out.influence_entries) influences.push_back(i);
     std::ostringstream h, c;
-    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n#include \"kernel_abi.hpp\"\n\nnamespace pd::generated {\n\n"
-      << out.decl.str() << "\n}  // namespace pd::generated\n";
-    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <vector>\n\n"
-      << "namespace pd::generated {\n" << out.code.str() << "\n}  // namespace pd::generated\n";
+    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n" << abi_text::abi_include() << "\nnamespace pd::generated {\n\n"
+      << out.decl << "\n}  // namespace pd::generated\n";
+    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n"
+      << "namespace pd::generated {\n" << out.code << "\n}  // namespace pd::generated\n";
     files[stem + ".hpp"] = h.str();
     files[stem + ".cpp"] = c.str();
   }
-  table << "\nnamespace pd::abi {\n\nstd::span<const LawDescriptor> all_laws() {\n  static const LawDescriptor table[] = {\n";
-  for (auto& d : descriptors) table << "      " << d << ",\n";
-  if (descriptors.empty()) table << "      LawDescriptor{},\n";
-  table << "  };\n  return std::span<const LawDescriptor>(table, " << descriptors.size() << ");\n}\n\n";
-  table << "std::span<const InfluenceDescriptor> all_influences() {\n  using namespace pd::generated;\n"
-        << "  static const InfluenceDescriptor table[] = {\n";
-  for (auto& i : influences) table << "      " << i << ",\n";
-  if (influences.empty()) table << "      InfluenceDescriptor{},\n";
-  table << "  };\n  return std::span<const InfluenceDescriptor>(table, " << influences.size() << ");\n}\n\n";
-  table << "const LawDescriptor* find_law(std::string_view name) {\n  for (const LawDescriptor& d : all_laws())\n"
-        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n"
-        << "const InfluenceDescriptor* find_influence(std::string_view name) {\n  for (const InfluenceDescriptor& d : all_influences())\n"
-        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n}  // namespace pd::abi\n";
+  table << "\n" << abi_text::law_table(descriptors, influences);
   files["law_table.cpp"] = table.str();
   return files;
 }

@@ -137,8 +137,13 @@ int Graph::lower(Expr e) {
       break;
     case Op::Symbol: {
       auto it = bindings_.find(n.symbol);
-      if (it == bindings_.end())
-        throw std::logic_error("emit: symbol '" + Context::global().symbol(n.symbol).name + "' has no binding in this kernel");
+      if (it == bindings_.end()) {
+        const SymbolInfo& info = Context::global().symbol(n.symbol);
+        if (info.kind == SymbolKind::Free)
+          throw std::invalid_argument("symbol '" + info.name + "' is not an input of the law (a parameter is declared with law.param(\"" +
+                                      info.name + "\"), a horizon sum with law.sum)");
+        throw std::logic_error("emit: symbol '" + info.name + "' has no binding in this kernel");
+      }
       r = make(Kind::Var, 0.0, it->second.var, {});
       nodes_[static_cast<std::size_t>(r)].per_bond = it->second.per_bond;
       var_symbol_[r] = n.symbol;

@@ -7,17 +7,6 @@
 
 namespace pdgen {
 
-const char* op_name(Op op) {
-  switch (op) {
-#define PD_OP(name, doc) \
-  case Op::name:         \
-    return #name;
-#include "pdgen/ops.def"
-#undef PD_OP
-  }
-  return "?";
-}
-
 Context& Context::global() {
   static Context ctx;
   return ctx;

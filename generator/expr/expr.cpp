@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 namespace pdgen {
@@ -13,6 +14,28 @@ Expr node_expr(Op op, double value, std::vector<NodeId> args) {
   return Expr::from_id(ctx().intern(op, value, -1, std::move(args)));
 }
 bool is_integer(double e) { return std::nearbyint(e) == e; }
+
+std::string number(double v) {
+  if (std::isnan(v)) return "NaN";  // never "-nan": the sign of a NaN means nothing here
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// The result of folding `what` (the operation as written, e.g. "log(-1)"): a law whose
+// constant folds to NaN or infinity computes nonsense or emits C++ that does not
+// compile, so building it stops here with the operation in the message.
+Expr folded(double v, const std::string& what) {
+  if (!std::isfinite(v)) throw NonFiniteConstant(what + " folds to " + number(v));
+  return Expr(v);
+}
+
+std::string pow_text(double base, double e) {
+  if (e == 0.5) return "sqrt(" + number(base) + ")";
+  if (e == -1.0) return "1/" + number(base);
+  return "pow(" + number(base) + ", " + number(e) + ")";
+}
 
 // Adds `term` (scaled by `scale`) into a like-terms accumulator keyed by its
 // non-constant part, so that 2x + 3x becomes 5x.
@@ -53,10 +76,13 @@ Expr raw_pow(NodeId base, double e) {
 }
 }  // namespace
 
-NodeId Expr::constant_id(double v) { return ctx().intern(Op::Const, v, -1, {}); }
+NodeId Expr::constant_id(double v) {
+  if (!std::isfinite(v)) throw NonFiniteConstant("the constant " + number(v));
+  return ctx().intern(Op::Const, v, -1, {});
+}
 
-Expr symbol(const std::string& name, SymbolKind kind, int slot) {
-  const int s = ctx().add_symbol(SymbolInfo{name, kind, slot});
+Expr symbol(const std::string& name, SymbolKind kind) {
+  const int s = ctx().add_symbol(SymbolInfo{name, kind});
   return Expr::from_id(ctx().intern(Op::Symbol, 0.0, s, {}));
 }
 
@@ -70,7 +96,7 @@ Expr add(const std::vector<Expr>& in) {
   std::map<NodeId, double> terms;
   for (Expr t : in) accumulate_term(t, 1.0, constant, terms);
   std::vector<NodeId> args;
-  if (constant != 0.0) args.push_back(Expr(constant).id());
+  if (constant != 0.0) args.push_back(folded(constant, "a sum of constants").id());
   for (auto [base, coef] : terms) {
     if (coef == 0.0) continue;
     args.push_back(coef == 1.0 ? base : mul({Expr(coef), Expr::from_id(base)}).id());
@@ -84,6 +110,7 @@ Expr mul(const std::vector<Expr>& in) {
   double coefficient = 1.0;
   std::map<NodeId, double> powers;
   for (Expr f : in) accumulate_factor(f, coefficient, powers);
+  if (!std::isfinite(coefficient)) folded(coefficient, "a product of constants");
   if (coefficient == 0.0) return Expr(0.0);
   std::vector<NodeId> factors;
   for (auto [base, e] : powers)
@@ -97,10 +124,11 @@ Expr mul(const std::vector<Expr>& in) {
 }
 
 Expr pow(Expr base, double e) {
+  if (!std::isfinite(e)) throw NonFiniteConstant("the exponent " + number(e));
   if (e == 0.0) return Expr(1.0);
   if (e == 1.0) return base;
   const Node& n = base.node();
-  if (n.op == Op::Const) return Expr(std::pow(n.value, e));
+  if (n.op == Op::Const) return folded(std::pow(n.value, e), pow_text(n.value, e));
   if (n.op == Op::Pow && (is_integer(e) || !is_integer(n.value))) {
     // (b^a)^e = b^(ae) holds for integer e, and for any e when a is fractional (b >= 0).
     return pow(Expr::from_id(n.args[0]), n.value * e);
@@ -109,8 +137,8 @@ Expr pow(Expr base, double e) {
     const Node& first = ctx().node(n.args[0]);
     const bool positive_coefficient = first.op == Op::Const && first.value > 0.0;
     if (is_integer(e) || positive_coefficient) {
-      // (c x y)^e = c^e x^e y^e: always for integer e; for fractional e when c > 0 and so x y >= 0
-      // is implied... only the constant is split off in that case.
+      // (c x y)^e = c^e x^e y^e holds for integer e. For fractional e with c > 0 only the
+      // constant is split off: (c z)^e = c^e z^e with z = x y, whatever the signs of x and y.
       if (is_integer(e)) {
         std::vector<Expr> f;
         for (NodeId a : n.args) f.push_back(pow(Expr::from_id(a), e));
@@ -118,7 +146,7 @@ Expr pow(Expr base, double e) {
       }
       std::vector<NodeId> rest(n.args.begin() + 1, n.args.end());
       const Expr r = rest.size() == 1 ? Expr::from_id(rest[0]) : node_expr(Op::Mul, 0.0, rest);
-      return mul({Expr(std::pow(first.value, e)), raw_pow(r.id(), e)});
+      return mul({folded(std::pow(first.value, e), pow_text(first.value, e)), raw_pow(r.id(), e)});
     }
   }
   return raw_pow(base.id(), e);
@@ -127,13 +155,13 @@ Expr pow(Expr base, double e) {
 Expr sqrt(Expr x) { return pow(x, 0.5); }
 
 Expr exp(Expr x) {
-  if (x.is_const()) return Expr(std::exp(x.value()));
+  if (x.is_const()) return folded(std::exp(x.value()), "exp(" + number(x.value()) + ")");
   if (x.op() == Op::Log) return Expr::from_id(x.node().args[0]);
   return node_expr(Op::Exp, 0.0, {x.id()});
 }
 
 Expr log(Expr x) {
-  if (x.is_const()) return Expr(std::log(x.value()));
+  if (x.is_const()) return folded(std::log(x.value()), "log(" + number(x.value()) + ")");
   if (x.op() == Op::Exp) return Expr::from_id(x.node().args[0]);
   return node_expr(Op::Log, 0.0, {x.id()});
 }

@@ -11,6 +11,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "emit/abi_text.hpp"
 #include "pdgen/diff.hpp"
 
 namespace pdgen {
@@ -39,12 +40,12 @@ class Builder {
     out.tangent = prune(tangent_kernel());
     out.jvp = prune(jvp_kernel());
     out.has_energy = law_.has_energy();
-    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", "double", {{"W", law_.energy_density()}}));
+    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", abi_text::Kernel::Energy, {{"W", law_.energy_density()}}));
     out.has_outputs = !law_.outputs().empty();
     if (out.has_outputs) {
       std::vector<std::pair<std::string, Expr>> values;
-      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({"outputs[" + str(static_cast<int>(i)) + "]", law_.outputs()[i].value});
-      out.outputs = prune(particle_value_kernel("outputs", "void", values));
+      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({abi_text::output(static_cast<int>(i)), law_.outputs()[i].value});
+      out.outputs = prune(particle_value_kernel("outputs", abi_text::Kernel::Outputs, values));
     }
     return out;
   }
@@ -73,31 +74,30 @@ class Builder {
   // unless the kernel computes them.
   std::map<int, Binding> base_bindings(bool moments_are_inputs) const {
     std::map<int, Binding> b;
-    const std::string D = str(D_);
     for (int c = 0; c < D_; ++c) {
-      b[symbol_index(law_.xi()[c])] = {"xi_" + str(c), "fam.xi[k * " + D + " + " + str(c) + "]", true};
-      b[symbol_index(law_.Y()[c])] = {"Y_" + str(c), "fam.Y[k * " + D + " + " + str(c) + "]", true};
+      b[symbol_index(law_.xi()[c])] = {"xi_" + str(c), abi_text::bond_vector("xi", D_, c), true};
+      b[symbol_index(law_.Y()[c])] = {"Y_" + str(c), abi_text::bond_vector("Y", D_, c), true};
     }
-    b[symbol_index(law_.w())] = {"w", "fam.w[k]", true};
-    b[symbol_index(law_.alpha())] = {"alpha", "fam.alpha[k]", true};
-    b[symbol_index(law_.V())] = {"V", "fam.V[k]", true};
-    b[symbol_index(law_.V0())] = {"V0", "fam.V0", false};
-    b[symbol_index(law_.delta())] = {"delta", "fam.delta", false};
+    b[symbol_index(law_.w())] = {"w", abi_text::bond_scalar("w"), true};
+    b[symbol_index(law_.alpha())] = {"alpha", abi_text::bond_scalar("alpha"), true};
+    b[symbol_index(law_.V())] = {"V", abi_text::bond_scalar("V"), true};
+    b[symbol_index(law_.V0())] = {"V0", abi_text::family_scalar("V0"), false};
+    b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
-      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], "fam.params[" + str(static_cast<int>(i)) + "]", false};
+      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)), false};
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? "fam.moments[" + str(static_cast<int>(i)) + "]" : "", false};
+      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
     for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};
     return b;
   }
 
-  KernelProgram program(const std::string& kind, const std::string& ret, std::vector<std::string> params,
-                        std::vector<std::string> names, bool moments_are_inputs) const {
+  KernelProgram program(const std::string& kind, abi_text::Kernel k, bool moments_are_inputs) const {
+    const abi_text::Signature sig = abi_text::signature(k);
     KernelProgram p;
     p.name = prefix_ + "_" + kind;
-    p.return_type = ret;
-    p.params = std::move(params);
-    p.param_names = std::move(names);
+    p.return_type = sig.return_type;
+    p.params = sig.params;
+    p.param_names = sig.names;
     p.bindings = base_bindings(moments_are_inputs);
     return p;
   }
@@ -113,8 +113,8 @@ class Builder {
       seg.loop = true;
       for (const SumDef* s : sums) {
         if (s->level != level) continue;
-        seg.before.push_back("double " + var(*s) + " = 0.0;");
-        seg.stores.push_back({var(*s), s->body, StoreMode::Accumulate, ""});
+        seg.accumulators.push_back(symbol_index(s->symbol));
+        seg.stores.push_back({var(*s), s->body, StoreMode::Accumulate, "", symbol_index(s->symbol)});
         if (extra) extra(*s, seg);
       }
       if (!seg.stores.empty()) p.segments.push_back(seg);
@@ -129,29 +129,28 @@ class Builder {
 
   // Nodal forces: f_0 += V0 V t, f_{k+1} = -V0 V t (the convention of kernel_abi.hpp).
   void force_stores(Segment& seg, const std::vector<Expr>& t, const std::string& array, const std::string& guard) const {
-    const std::string D = str(D_);
     std::string zero;
-    for (int c = 0; c < D_; ++c) zero += array + "[" + str(c) + "] = 0.0; ";
+    for (int c = 0; c < D_; ++c) zero += abi_text::center_component(array, c) + " = 0.0; ";
     seg.before.push_back(guard.empty() ? zero : "if (" + guard + ") { " + zero + "}");
     for (int c = 0; c < D_; ++c) {
       const Expr v = law_.V0() * law_.V() * t[static_cast<std::size_t>(c)];
-      seg.stores.push_back({array + "[(k + 1) * " + D + " + " + str(c) + "]", v, StoreMode::SetNegated, guard});
-      seg.stores.push_back({array + "[" + str(c) + "]", v, StoreMode::Accumulate, guard});
+      seg.stores.push_back({abi_text::neighbour_component(array, D_, c), v, StoreMode::SetNegated, guard});
+      seg.stores.push_back({abi_text::center_component(array, c), v, StoreMode::Accumulate, guard});
     }
   }
 
   KernelProgram moments_kernel() const {
-    KernelProgram p = program("moments", "void", {"const pd::abi::Family& fam", "double* moments"}, {"fam", "moments"}, false);
+    KernelProgram p = program("moments", abi_text::Kernel::Moments, false);
     sum_loops(p, moments_);
     Segment out;
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      out.stores.push_back({"moments[" + str(static_cast<int>(i)) + "]", moments_[i]->symbol, StoreMode::Set, ""});
+      out.stores.push_back({abi_text::moment_output(static_cast<int>(i)), moments_[i]->symbol, StoreMode::Set, ""});
     if (!out.stores.empty()) p.segments.push_back(out);
     return p;
   }
 
   KernelProgram residual_kernel() const {
-    KernelProgram p = program("residual", "void", {"const pd::abi::Family& fam", "double* forces"}, {"fam", "forces"}, true);
+    KernelProgram p = program("residual", abi_text::Kernel::Residual, true);
     sum_loops(p, force_states_);
     Segment seg;
     seg.loop = true;
@@ -161,9 +160,7 @@ class Builder {
   }
 
   KernelProgram tangent_kernel() const {
-    KernelProgram p = program("tangent", "void",
-                              {"const pd::abi::Family& fam", "double* forces", "const pd::abi::TangentFactors& factors"},
-                              {"fam", "forces", "factors"}, true);
+    KernelProgram p = program("tangent", abi_text::Kernel::Tangent, true);
     const int NS = static_cast<int>(force_states_.size());
     // Coupling sums C[s][s'] between states, bound to per-family variables.
     std::map<std::pair<int, int>, Expr> coupling;
@@ -172,7 +169,7 @@ class Builder {
         const Expr dg = diff(force_states_[s]->body, force_states_[q]->symbol);
         if (dg.is_const(0.0)) continue;
         const std::string name = "c_" + str(s) + "_" + str(q);
-        const Expr sym = symbol(name, SymbolKind::Sum, 0);
+        const Expr sym = symbol(name, SymbolKind::Sum);
         p.bindings[symbol_index(sym)] = {name, "", false};
         coupling[{s, q}] = sym;
       }
@@ -180,19 +177,18 @@ class Builder {
       const int s = index_of(sd);
       for (auto& [key, sym] : coupling)
         if (key.first == s) {
-          seg.before.push_back("double c_" + str(key.first) + "_" + str(key.second) + " = 0.0;");
-          seg.stores.push_back({"c_" + str(key.first) + "_" + str(key.second),
-                                diff(sd.body, force_states_[key.second]->symbol), StoreMode::Accumulate, ""});
+          seg.accumulators.push_back(symbol_index(sym));
+          seg.stores.push_back({p.bindings.at(symbol_index(sym)).var, diff(sd.body, force_states_[key.second]->symbol),
+                                StoreMode::Accumulate, "", symbol_index(sym)});
         }
     });
     Segment seg;
     seg.loop = true;
     const std::vector<Expr> t = force_roots();
-    force_stores(seg, t, "forces", "forces != nullptr");
-    const std::string D = str(D_), DD = str(D_ * D_), NSs = str(NS);
+    force_stores(seg, t, "forces", abi_text::forces_requested());
     for (int r = 0; r < D_; ++r)
       for (int c = 0; c < D_; ++c)
-        seg.stores.push_back({"factors.direct[k * " + DD + " + " + str(r * D_ + c) + "]", diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
+        seg.stores.push_back({abi_text::factor_direct(D_, r, c), diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
     std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS), std::vector<Expr>(static_cast<std::size_t>(D_)));
     for (int s = 0; s < NS; ++s) {
       for (int c = 0; c < D_; ++c) {
@@ -200,10 +196,10 @@ class Builder {
         for (int q = 0; q < s; ++q)
           if (auto it = coupling.find({s, q}); it != coupling.end()) v = v + it->second * R[q][c];
         R[s][c] = v;
-        seg.stores.push_back({"factors.right[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(c) + "]", v, StoreMode::Set, ""});
+        seg.stores.push_back({abi_text::factor_right(D_, NS, s, c), v, StoreMode::Set, ""});
       }
       for (int r = 0; r < D_; ++r)
-        seg.stores.push_back({"factors.left[(k * " + NSs + " + " + str(s) + ") * " + D + " + " + str(r) + "]",
+        seg.stores.push_back({abi_text::factor_left(D_, NS, s, r),
                               diff(t[r], force_states_[s]->symbol), StoreMode::Set, ""});
     }
     p.segments.push_back(seg);
@@ -212,17 +208,15 @@ class Builder {
 
   // df = (df/dy) dy with dY_k = dy_{k+1} - dy_0, through the states' increments.
   KernelProgram jvp_kernel() const {
-    KernelProgram p = program("jvp", "void", {"const pd::abi::Family& fam", "const double* dy", "double* df"},
-                              {"fam", "dy", "df"}, true);
-    const std::string D = str(D_);
+    KernelProgram p = program("jvp", abi_text::Kernel::Jvp, true);
     Vec dY(D_);
     for (int c = 0; c < D_; ++c) {
-      dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput, 9 + c);
-      p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), "dy[(k + 1) * " + D + " + " + str(c) + "] - dy[" + str(c) + "]", true};
+      dY[c] = symbol("dY_" + str(c), SymbolKind::BondInput);
+      p.bindings[symbol_index(dY[c])] = {"dY_" + str(c), abi_text::bond_increment(D_, c), true};
     }
     std::vector<Expr> dS;
     for (const SumDef* s : force_states_) {
-      dS.push_back(symbol("d_" + s->name, SymbolKind::Sum, 0));
+      dS.push_back(symbol("d_" + s->name, SymbolKind::Sum));
       p.bindings[symbol_index(dS.back())] = {"ds_" + s->name, "", false};
     }
     auto directional = [&](Expr e) {
@@ -232,8 +226,9 @@ class Builder {
       return add(terms);
     };
     sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
-      seg.before.push_back("double ds_" + sd.name + " = 0.0;");
-      seg.stores.push_back({"ds_" + sd.name, directional(sd.body), StoreMode::Accumulate, ""});
+      const int ds = symbol_index(dS[static_cast<std::size_t>(index_of(sd))]);
+      seg.accumulators.push_back(ds);
+      seg.stores.push_back({p.bindings.at(ds).var, directional(sd.body), StoreMode::Accumulate, "", ds});
     });
     Segment seg;
     seg.loop = true;
@@ -244,11 +239,10 @@ class Builder {
     return p;
   }
 
-  KernelProgram particle_value_kernel(const std::string& kind, const std::string& ret,
+  KernelProgram particle_value_kernel(const std::string& kind, abi_text::Kernel k,
                                       const std::vector<std::pair<std::string, Expr>>& values) const {
-    const bool returns = ret != "void";
-    KernelProgram p = returns ? program(kind, ret, {"const pd::abi::Family& fam"}, {"fam"}, true)
-                              : program(kind, ret, {"const pd::abi::Family& fam", "double* outputs"}, {"fam", "outputs"}, true);
+    KernelProgram p = program(kind, k, true);
+    const bool returns = p.return_type != "void";
     std::vector<Expr> roots;
     for (auto& v : values) roots.push_back(v.second);
     sum_loops(p, needed(roots, true));
@@ -260,23 +254,21 @@ class Builder {
   }
 
   // Drops the horizon sums a kernel accumulates but never reads (e.g. the deformed shape
-  // tensor in the JVP of a law linear in it): a sum is kept when a non-sum store reads
-  // it, directly or through the bodies of other kept sums.
+  // tensor in the JVP of a law linear in it): a sum is kept when a store into anything
+  // but a sum reads it, directly or through the bodies of other kept sums. Works on the
+  // sums' symbols only (Store::sum, Segment::accumulators).
   static KernelProgram prune(KernelProgram p) {
-    std::map<std::string, int> symbol_of_var;
-    for (const auto& [sym, b] : p.bindings)
-      if (b.load.empty()) symbol_of_var[b.var] = sym;
-    auto is_sum_store = [&](const Store& st) { return st.mode == StoreMode::Accumulate && symbol_of_var.count(st.target); };
-    std::set<int> needed;
+    std::map<int, std::vector<Expr>> bodies;  // sum symbol -> the values accumulated into it
     std::vector<int> work;
     for (const Segment& seg : p.segments)
-      for (const Store& st : seg.stores)
-        if (!is_sum_store(st))
+      for (const Store& st : seg.stores) {
+        if (st.sum >= 0) {
+          bodies[st.sum].push_back(st.value);
+        } else {
           for (int sym : free_symbols(st.value)) work.push_back(sym);
-    std::map<int, std::vector<Expr>> bodies;
-    for (const Segment& seg : p.segments)
-      for (const Store& st : seg.stores)
-        if (is_sum_store(st)) bodies[symbol_of_var[st.target]].push_back(st.value);
+        }
+      }
+    std::set<int> needed;
     while (!work.empty()) {
       const int sym = work.back();
       work.pop_back();
@@ -286,24 +278,9 @@ class Builder {
     }
     std::vector<Segment> kept;
     for (Segment seg : p.segments) {
-      std::vector<Store> stores;
-      std::set<std::string> dropped;
-      for (const Store& st : seg.stores) {
-        if (is_sum_store(st) && !needed.count(symbol_of_var[st.target])) {
-          dropped.insert(st.target);
-          continue;
-        }
-        stores.push_back(st);
-      }
-      std::vector<std::string> before;
-      for (const std::string& line : seg.before) {
-        bool drop = false;
-        for (const std::string& v : dropped) drop = drop || line == "double " + v + " = 0.0;";
-        if (!drop) before.push_back(line);
-      }
-      seg.stores = stores;
-      seg.before = before;
-      if (!seg.stores.empty() || !seg.before.empty()) kept.push_back(seg);
+      std::erase_if(seg.stores, [&](const Store& st) { return st.sum >= 0 && !needed.count(st.sum); });
+      std::erase_if(seg.accumulators, [&](int sum) { return !needed.count(sum); });
+      if (!seg.stores.empty() || !seg.before.empty() || !seg.accumulators.empty()) kept.push_back(seg);
     }
     p.segments = kept;
     return p;
@@ -323,5 +300,22 @@ class Builder {
 }  // namespace
 
 LawKernelSet build_kernels(const Law& law, const std::string& prefix) { return Builder(law, prefix).build(); }
+
+KernelProgram influence_kernel(const InfluenceDef& inf) {
+  const Expr r = symbol("r"), delta = symbol("delta");
+  const abi_text::Signature sig = abi_text::signature(abi_text::Kernel::Influence);
+  KernelProgram p;
+  p.name = "influence_" + inf.name;
+  p.return_type = sig.return_type;
+  p.params = sig.params;
+  p.param_names = sig.names;
+  p.bindings[symbol_index(r)] = {"r", "", false};
+  p.bindings[symbol_index(delta)] = {"delta", "", false};
+  Segment seg;
+  seg.stores.push_back({"const double w", inf.weight(r, delta), StoreMode::Set, ""});
+  p.segments.push_back(seg);
+  p.epilogue.push_back("return w;");
+  return p;
+}
 
 }  // namespace pdgen

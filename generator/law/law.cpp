@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "pdgen/diff.hpp"
@@ -15,25 +17,30 @@ void check_identifier(const std::string& s) {
                   std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
   if (!ok) throw std::invalid_argument("law: '" + s + "' is not a C identifier");
 }
-Vec bond_vector(const std::string& name, int dim, int first_slot) {
+Vec bond_vector(const std::string& name, int dim) {
   Vec v(dim);
-  for (int i = 0; i < dim; ++i) v[i] = symbol(name + "_" + std::to_string(i), SymbolKind::BondInput, first_slot + i);
+  for (int i = 0; i < dim; ++i) v[i] = symbol(name + "_" + std::to_string(i), SymbolKind::BondInput);
   return v;
 }
 }  // namespace
 
-// Bond-input slots: xi 0..2, Y 3..5, w 6, alpha 7, V 8 (read by the emitter).
+std::string& law_under_construction() {
+  static std::string name;
+  return name;
+}
+
 Law::Law(std::string name, int dim, std::string summary)
     : name_(std::move(name)), summary_(std::move(summary)), dim_(dim) {
+  law_under_construction() = name_;
   check_identifier(name_);
   if (dim != 2 && dim != 3) throw std::invalid_argument("law " + name_ + ": dimension must be 2 or 3");
-  xi_ = bond_vector("xi", dim, 0);
-  Y_ = bond_vector("Y", dim, 3);
-  w_ = symbol("w", SymbolKind::BondInput, 6);
-  alpha_ = symbol("alpha", SymbolKind::BondInput, 7);
-  V_ = symbol("V", SymbolKind::BondInput, 8);
-  V0_ = symbol("V0", SymbolKind::ParticleInput, 0);
-  delta_ = symbol("delta", SymbolKind::ParticleInput, 1);
+  xi_ = bond_vector("xi", dim);
+  Y_ = bond_vector("Y", dim);
+  w_ = symbol("w", SymbolKind::BondInput);
+  alpha_ = symbol("alpha", SymbolKind::BondInput);
+  V_ = symbol("V", SymbolKind::BondInput);
+  V0_ = symbol("V0", SymbolKind::ParticleInput);
+  delta_ = symbol("delta", SymbolKind::ParticleInput);
 }
 
 Expr Law::param(const std::string& name) {
@@ -41,21 +48,33 @@ Expr Law::param(const std::string& name) {
   for (std::size_t i = 0; i < param_names_.size(); ++i)
     if (param_names_[i] == name) return params_[i];
   param_names_.push_back(name);
-  params_.push_back(symbol(name, SymbolKind::Param, static_cast<int>(params_.size())));
+  params_.push_back(symbol(name, SymbolKind::Param));
+  param_test_values_.push_back(std::numeric_limits<double>::quiet_NaN());
   return params_.back();
 }
 
-Expr Law::deformed_length() const { return sqrt(dot(Y_, Y_) + 1e-16 * dot(xi_, xi_)); }
-
-bool Law::is_bond_input(int s) const {
-  return Context::global().symbol(s).kind == SymbolKind::BondInput;
+Expr Law::param(const std::string& name, double test_value) {
+  if (!std::isfinite(test_value))
+    throw std::invalid_argument("law " + name_ + ": test value of parameter '" + name + "' must be finite");
+  const Expr p = param(name);
+  for (std::size_t i = 0; i < param_names_.size(); ++i)
+    if (param_names_[i] == name) param_test_values_[i] = test_value;
+  return p;
 }
+
+void Law::fixed_poisson_ratio(double nu) {
+  if (!(nu > -1.0 && nu < 0.5)) throw std::invalid_argument("law " + name_ + ": a Poisson ratio lies in (-1, 0.5)");
+  has_fixed_poisson_ratio_ = true;
+  poisson_ratio_ = nu;
+}
+
+Expr Law::deformed_length() const { return sqrt(dot(Y_, Y_) + 1e-16 * dot(xi_, xi_)); }
 
 Expr Law::sum(const std::string& name, Expr body) {
   check_identifier(name);
   for (const SumDef& d : sums_)
     if (d.name == name) throw std::invalid_argument("law " + name_ + ": sum '" + name + "' declared twice");
-  SumDef def{name, symbol(name, SymbolKind::Sum, static_cast<int>(sums_.size())), body, false, 0};
+  SumDef def{name, symbol(name, SymbolKind::Sum), body, false, 0};
   std::vector<int> y_symbols;
   for (int c = 0; c < dim_; ++c) y_symbols.push_back(symbol_index(Y_[c]));
   for (int s : free_symbols(body)) {

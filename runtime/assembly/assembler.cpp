@@ -58,6 +58,7 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.particles = &particles;
   inputs_.bonds = &bonds;
   inputs_.params = std::move(params);
+  inputs_.scratch_per_bond = law.scratch_per_bond;
   inputs_.cache_max_bonds();
   update_moments();
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim);

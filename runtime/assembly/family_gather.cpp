@@ -20,6 +20,7 @@ FamilyGather::FamilyGather(const FamilyInputs& inputs) : in_(&inputs), max_bonds
   V_.resize(L);
   local_in_.resize((L + 1) * d);
   local_out_.resize((L + 1) * d);
+  scratch_.resize(L * static_cast<std::size_t>(inputs.scratch_per_bond));
   // The dense local matrix is only needed for the tangent; it is (L+1)^2 d^2 doubles
   // (46 kB at 36 bonds in 2D, 1.2 MB at 122 bonds in 3D), allocated once per thread.
   local_matrix_.resize((L + 1) * d * (L + 1) * d);
@@ -56,6 +57,7 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   f.moments = in_->n_moments > 0 && !in_->moments.empty()
                   ? in_->moments.data() + static_cast<std::ptrdiff_t>(p) * in_->n_moments
                   : nullptr;
+  f.scratch = scratch_.data();
   return f;
 }
 

@@ -17,6 +17,7 @@ struct FamilyInputs {
   std::vector<std::vector<double>> params;  // [material][law.n_params]
   std::vector<double> moments;              // [n * n_moments]
   int n_moments = 0;
+  int scratch_per_bond = 0;  // the law's LawDescriptor::scratch_per_bond
   int max_bonds = -1;  // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
 
   int dim() const { return particles->dim; }
@@ -47,7 +48,7 @@ class FamilyGather {
  private:
   const FamilyInputs* in_;
   int max_bonds_;
-  std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_;
+  std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_, scratch_;
 };
 
 }  // namespace pd

@@ -19,6 +19,7 @@ struct TestFamily {
   std::vector<double> x;  // [(L+1)*dim] reference positions, center first
   std::vector<double> y;  // [(L+1)*dim] deformed positions
   std::vector<double> xi, Y, w, alpha, V, params, moments;
+  mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
   const abi::LawDescriptor* law = nullptr;
 
@@ -37,6 +38,9 @@ struct TestFamily {
     f.delta = delta;
     f.params = params.data();
     f.moments = moments.data();
+    const auto need = static_cast<std::size_t>(bonds() * (law ? law->scratch_per_bond : 0));
+    if (kernel_scratch.size() < need) kernel_scratch.resize(need);  // once: a family's bond count is fixed
+    f.scratch = kernel_scratch.data();
     return f;
   }
   void set_positions(const std::vector<double>& positions) {
@@ -87,6 +91,11 @@ struct FamilyOptions {
   double horizon_ratio = 3.0;  // delta / h
   Truncation truncation = Truncation::Interior;
   bool broken_bonds = false;
+  // An unperturbed lattice around a center on a lattice point, with weights from
+  // `weight`: the horizon_ratio lattice bonds lie at r = delta exactly (the bonds a
+  // real grid has, and where a law with 1/(delta - r) is infinite).
+  bool regular = false;
+  double (*weight)(double r, double delta) = nullptr;  // regular only; null: w = 1
   double strain = 0.05;  // size of the random displacement gradient
   unsigned seed = 1;
 };
@@ -101,7 +110,8 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
   f.law = &law;
   f.delta = o.horizon_ratio * h;
   f.V0 = std::pow(h, d);
-  for (int c = 0; c < d; ++c) f.x.push_back(0.1 * h * u(rng));
+  const double jitter = o.regular ? 0.0 : 1.0;
+  for (int c = 0; c < d; ++c) f.x.push_back(jitter * 0.1 * h * u(rng));
   const int n = static_cast<int>(std::ceil(o.horizon_ratio)) + 1;
   for (int i = -n; i <= n; ++i)
     for (int j = -n; j <= n; ++j)
@@ -110,7 +120,7 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
         const int idx[3] = {i, j, l};
         double p[3] = {0, 0, 0}, r2 = 0.0;
         for (int c = 0; c < d; ++c) {
-          p[c] = idx[c] * h + 0.15 * h * u(rng);
+          p[c] = idx[c] * h + jitter * 0.15 * h * u(rng);
           r2 += (p[c] - f.x[c]) * (p[c] - f.x[c]);
         }
         if (r2 > f.delta * f.delta) continue;
@@ -123,7 +133,10 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
   f.Y.resize(f.xi.size());
   for (int k = 0; k < L; ++k) {
     for (int c = 0; c < d; ++c) f.xi[k * d + c] = f.x[(k + 1) * d + c] - f.x[c];
-    f.w.push_back(0.2 + 0.4 * (u(rng) + 1.0));
+    double r = 0;
+    for (int c = 0; c < d; ++c) r += f.xi[k * d + c] * f.xi[k * d + c];
+    const double w = 0.2 + 0.4 * (u(rng) + 1.0);
+    f.w.push_back(!o.regular ? w : o.weight ? o.weight(std::sqrt(r), f.delta) : 1.0);
     f.V.push_back(f.V0 * (0.8 + 0.2 * (u(rng) + 1.0)));
     f.alpha.push_back(o.broken_bonds && (k % 4 == 1 || u(rng) > 0.6) ? 0.0 : 1.0);
   }

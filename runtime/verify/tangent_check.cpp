@@ -1,8 +1,11 @@
-// Finite-difference checks of the generated tangent, block kind by block kind.
+// Finite-difference checks of the generated tangent, block kind by block kind, and the
+// balance and finiteness checks, on every family kind.
 #include "verify/tangent_check.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "verify/balance.hpp"
 
 namespace pd::verify {
 
@@ -22,46 +25,73 @@ BlockErrors block_errors(const TestFamily& f, const std::vector<double>& M, cons
   return {rel(0), rel(1), rel(2), rel(3)};
 }
 
+namespace {
+bool all_finite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+FamilyCheck check_family(const abi::LawDescriptor& law, TestFamily& f, std::string description, bool differenced) {
+  FamilyCheck c;
+  c.description = std::move(description);
+  c.bonds = f.bonds();
+  c.differenced = differenced;
+  const auto M = f.tangent_matrix(law.damaged);
+  const int n = f.dofs();
+  std::vector<double> dy(static_cast<std::size_t>(n)), df(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) dy[i] = std::sin(1.3 * i + 0.4);
+  law.damaged.jvp(f.view(), dy.data(), df.data());
+  const auto forces = f.forces(law.damaged);
+  c.finite = all_finite(forces) && all_finite(f.forces(law.intact)) && all_finite(M) && all_finite(df);
+  if (differenced) {
+    c.tangent = block_errors(f, M, f.fd_matrix(law.damaged, 1e-6 * f.delta));
+    double err = 0, scale = 0;
+    for (int i = 0; i < n; ++i) {
+      double v = 0;
+      for (int j = 0; j < n; ++j) v += M[i * n + j] * dy[j];
+      err = std::max(err, std::fabs(df[i] - v));
+      scale = std::max(scale, std::fabs(v));
+    }
+    c.jvp_error = scale > 0 ? err / scale : err;
+  }
+  c.momentum_error = momentum_error(f, forces);
+  c.angular_momentum_error = angular_momentum_error(f, forces);
+  return c;
+}
+}  // namespace
+
 std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed) {
   std::vector<FamilyCheck> out;
+  FamilyOptions base;
+  base.dim = law.dim;
+  base.horizon_ratio = law.dim == 2 ? 3.0 : 2.0;
+  base.seed = seed;
   const char* names[] = {"interior", "free edge", "corner"};
   for (Truncation t : {Truncation::Interior, Truncation::Edge, Truncation::Corner})
     for (bool broken : {false, true}) {
-      FamilyOptions o;
-      o.dim = law.dim;
+      FamilyOptions o = base;
       o.truncation = t;
       o.broken_bonds = broken;
-      o.horizon_ratio = law.dim == 2 ? 3.0 : 2.0;
-      o.seed = seed;
       TestFamily f = make_family(law, o);
-      FamilyCheck c;
-      c.description = std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : "");
-      c.bonds = f.bonds();
-      const auto M = f.tangent_matrix(law.damaged);
-      c.tangent = block_errors(f, M, f.fd_matrix(law.damaged, 1e-6 * f.delta));
-      const int n = f.dofs();
-      std::vector<double> dy(static_cast<std::size_t>(n)), df(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) dy[i] = std::sin(1.3 * i + 0.4);
-      law.damaged.jvp(f.view(), dy.data(), df.data());
-      double err = 0, scale = 0;
-      for (int i = 0; i < n; ++i) {
-        double v = 0;
-        for (int j = 0; j < n; ++j) v += M[i * n + j] * dy[j];
-        err = std::max(err, std::fabs(df[i] - v));
-        scale = std::max(scale, std::fabs(v));
-      }
-      c.jvp_error = scale > 0 ? err / scale : err;
-      const auto forces = f.forces(law.damaged);
-      double total = 0;
-      for (int comp = 0; comp < f.dim; ++comp) {
-        double s = 0;
-        for (int a = 0; a <= f.bonds(); ++a) s += forces[a * f.dim + comp], total += std::fabs(forces[a * f.dim + comp]);
-        c.momentum_error = std::max(c.momentum_error, std::fabs(s));
-      }
-      if (total > 0) c.momentum_error /= total;
-      out.push_back(c);
+      out.push_back(check_family(law, f, std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : ""), true));
     }
+  FamilyOptions lattice = base;
+  lattice.regular = true;
+  TestFamily at_horizon = make_family(law, lattice);
+  out.push_back(check_family(law, at_horizon, "lattice, r = delta", true));
+  // One neighbour moved onto the center: Y_0 = 0.
+  TestFamily collapsed = make_family(law, base);
+  std::vector<double> y = collapsed.y;
+  for (int c = 0; c < collapsed.dim; ++c) y[collapsed.dim + c] = y[c];
+  collapsed.set_positions(y);
+  out.push_back(check_family(law, collapsed, "collapsed bond", false));
   return out;
+}
+
+bool passes(const abi::LawDescriptor& law, const FamilyCheck& c, const CheckTolerances& tol) {
+  if (!c.finite) return false;
+  if (c.differenced && !(c.tangent.worst() <= tol.tangent && c.jvp_error <= tol.jvp)) return false;
+  if (!(c.momentum_error <= tol.momentum)) return false;
+  return !law.balances_angular_momentum || c.angular_momentum_error <= tol.angular_momentum;
 }
 
 }  // namespace pd::verify

@@ -1,6 +1,9 @@
 // Hash-consing and the cheap rewrites applied when nodes are built.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "pdgen/eval.hpp"
 #include "pdgen/expr.hpp"
 #include "pdgen/tensor.hpp"
@@ -30,6 +33,31 @@ TEST(Expr, ConstantFolding) {
   EXPECT_TRUE((Expr(2.0) * 3 + 1).is_const(7.0));
   EXPECT_TRUE(sqrt(Expr(16.0)).is_const(4.0));
   EXPECT_TRUE(exp(Expr(0.0)).is_const(1.0));
+}
+
+// A NaN or infinite constant would be emitted into a kernel (as a wrong number, or as
+// `inf`, which is not C++); folding refuses it and names the operation.
+TEST(Expr, FoldingToNaNOrInfinityThrowsNamingTheOperation) {
+  const Expr r = symbol("r");
+  auto message = [](auto&& build) {
+    try {
+      build();
+    } catch (const NonFiniteConstant& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message([] { sqrt(Expr(-1.0)); }), "constant folding: sqrt(-1) folds to NaN");
+  EXPECT_EQ(message([] { log(Expr(-1.0)); }), "constant folding: log(-1) folds to NaN");
+  EXPECT_EQ(message([&] { (r - r) / (r - r); }), "constant folding: 1/0 folds to inf");
+  EXPECT_EQ(message([&] { 1 / (r - r); }), "constant folding: 1/0 folds to inf");
+  EXPECT_EQ(message([] { Expr(std::nan("")) * 0 + 2; }), "constant folding: the constant NaN");
+  EXPECT_EQ(message([] { exp(Expr(1e6)); }), "constant folding: exp(1000000) folds to inf");
+  EXPECT_EQ(message([] { Expr(1e308) * 1e308; }), "constant folding: a product of constants folds to inf");
+  EXPECT_EQ(message([] { Expr(1e308) + 1e308; }), "constant folding: a sum of constants folds to inf");
+  EXPECT_EQ(message([&] { pow(r, std::numeric_limits<double>::infinity()); }), "constant folding: the exponent inf");
+  // Finite folds are untouched.
+  EXPECT_TRUE(sqrt(Expr(4.0)).is_const(2.0));
 }
 
 TEST(Expr, LikeTermsAndFactorsMerge) {

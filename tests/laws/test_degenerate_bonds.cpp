@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "verify/random_family.hpp"
+#include "law_list.hpp"
 
 using pd::verify::FamilyOptions;
 using pd::verify::make_family;
@@ -13,13 +14,7 @@ using pd::verify::TestFamily;
 namespace {
 class DegenerateBond : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
 
-std::string law_name(const testing::TestParamInfo<const pd::abi::LawDescriptor*>& info) { return info.param->name; }
 
-std::vector<const pd::abi::LawDescriptor*> laws() {
-  std::vector<const pd::abi::LawDescriptor*> v;
-  for (const auto& l : pd::abi::all_laws()) v.push_back(&l);
-  return v;
-}
 
 void expect_finite(const std::vector<double>& v, const char* what, double gap) {
   for (std::size_t i = 0; i < v.size(); ++i) ASSERT_TRUE(std::isfinite(v[i])) << what << "[" << i << "], gap " << gap;
@@ -46,4 +41,4 @@ TEST_P(DegenerateBond, CollapsedBondGivesFiniteResidualTangentAndJvp) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, DegenerateBond, testing::ValuesIn(laws()), law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, DegenerateBond, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);

@@ -10,6 +10,7 @@
 #include "discretize/discretization.hpp"
 #include "material/elastic_constants.hpp"
 #include "verify/random_family.hpp"
+#include "verify/test_values.hpp"
 
 namespace {
 struct Case {
@@ -41,7 +42,9 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
   const pd::Particles p = pd::discretize(s);
   const pd::Bonds b = pd::find_bonds(p, delta, GetParam().influence->weight);
   const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
-  const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, {{"stab", 1.0}, {"hourglass", 1.0}});
+  // Parameters that are not elastic constants take the values the law declares for its
+  // tests: a law with its own parameter needs no edit here.
+  const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(law));
   pd::AssemblerOptions options;
   options.intact = true;
   options.matrix = false;

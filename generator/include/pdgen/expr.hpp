@@ -6,12 +6,18 @@
 // (x * x^-1 -> 1, x * x -> x^2). Anything heavier is a separate pass.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "pdgen/context.hpp"
 
 namespace pdgen {
+
+// Thrown when a constant is, or folds to, NaN or infinity (sqrt(-1), log(-1), 1/(r-r)).
+struct NonFiniteConstant : std::domain_error {
+  explicit NonFiniteConstant(const std::string& what) : std::domain_error("constant folding: " + what) {}
+};
 
 class Expr {
  public:
@@ -42,7 +48,7 @@ class Expr {
 };
 
 // A new symbol of the given kind. Two calls create two distinct symbols.
-Expr symbol(const std::string& name, SymbolKind kind = SymbolKind::Free, int slot = 0);
+Expr symbol(const std::string& name, SymbolKind kind = SymbolKind::Free);
 // The symbol index of a Symbol expression (throws otherwise).
 int symbol_index(Expr e);
 

@@ -27,11 +27,13 @@ struct Store {
   Expr value;
   StoreMode mode = StoreMode::Set;
   std::string guard;   // optional condition, e.g. "forces != nullptr"
+  int sum = -1;        // Accumulate into a horizon sum: its symbol (target is its variable)
 };
 
 struct Segment {
   bool loop = false;                // per bond (k = 0..L-1) or once per family
-  std::vector<std::string> before;  // raw lines emitted before the segment
+  std::vector<int> accumulators;    // sum symbols declared as zero before the segment
+  std::vector<std::string> before;  // raw lines emitted before the segment, after those
   std::vector<Store> stores;
 };
 
@@ -54,6 +56,7 @@ struct EmittedKernel {
   std::string declaration;  // the prototype
   EmitCounts per_bond;      // summed over the kernel's bond loops
   EmitCounts per_family;    // outside the loops
+  int scratch_per_bond = 0;  // doubles per bond the kernel keeps in fam.scratch
 };
 
 EmittedKernel emit_kernel(const KernelProgram& program);

@@ -24,4 +24,7 @@ struct LawKernelSet {
 // `prefix` starts every kernel's function name (e.g. "silling_plane_strain_intact").
 LawKernelSet build_kernels(const Law& law, const std::string& prefix);
 
+// The weight w(r, delta) of an influence function as a kernel `influence_<name>`.
+KernelProgram influence_kernel(const InfluenceDef& influence);
+
 }  // namespace pdgen

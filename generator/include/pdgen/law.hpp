@@ -37,8 +37,12 @@ class Law {
   const std::string& summary() const { return summary_; }
   int dim() const { return dim_; }
 
-  // Inputs.
+  // Inputs. A parameter named like an elastic constant (E, nu, K, G, mu, lambda,
+  // kappa2) is derived from the scene's material; any other needs a value in the
+  // material's parameters, and `test_value` is the value the automatic law tests
+  // (patch test, check-law) give it.
   Expr param(const std::string& name);
+  Expr param(const std::string& name, double test_value);
   const Vec& xi() const { return xi_; }
   const Vec& Y() const { return Y_; }
   Expr w() const { return w_; }
@@ -59,18 +63,31 @@ class Law {
   Mat sum(const std::string& name, const Mat& body);
 
   void force(const Vec& t);
+  bool has_force() const { return force_.dim() == dim_; }
   void energy(Expr W) { energy_ = W; has_energy_ = true; }
   void output(const std::string& name, Expr value) { outputs_.push_back({name, value}); }
+  // Claims: checked by the automatic law tests and `pd check-law`.
+  // The force state conserves angular momentum: sum_k Y_k x t_k = 0 for every
+  // deformation (true when every t_k is parallel to Y_k: bond-based and ordinary
+  // state-based laws).
+  void claim_angular_momentum_balance() { balances_angular_momentum_ = true; }
+  // The law's response has this Poisson ratio whatever the parameters (bond-based
+  // laws: 1/4 in 3D and plane strain; plane stress maps to 1/3 through the equivalent
+  // material). The runtime warns when a scene's material differs.
+  void fixed_poisson_ratio(double nu);
 
   // Read by the kernel builders.
   const std::vector<std::string>& param_names() const { return param_names_; }
   const std::vector<Expr>& params() const { return params_; }
+  const std::vector<double>& param_test_values() const { return param_test_values_; }  // NaN: none declared
+  bool balances_angular_momentum() const { return balances_angular_momentum_; }
+  bool has_fixed_poisson_ratio() const { return has_fixed_poisson_ratio_; }
+  double poisson_ratio() const { return poisson_ratio_; }
   const std::vector<SumDef>& sums() const { return sums_; }
   const Vec& force_state() const { return force_; }
   bool has_energy() const { return has_energy_; }
   Expr energy_density() const { return energy_; }
   const std::vector<OutputDef>& outputs() const { return outputs_; }
-  bool is_bond_input(int symbol) const;
   // The law with alpha replaced by 1 everywhere: the intact-bond variant.
   Law with_alpha_folded() const;
 
@@ -81,6 +98,10 @@ class Law {
   Expr w_, alpha_, V_, V0_, delta_;
   std::vector<std::string> param_names_;
   std::vector<Expr> params_;
+  std::vector<double> param_test_values_;
+  bool balances_angular_momentum_ = false;
+  bool has_fixed_poisson_ratio_ = false;
+  double poisson_ratio_ = 0.0;
   std::vector<SumDef> sums_;
   Vec force_;
   Expr energy_;
@@ -98,15 +119,19 @@ struct InfluenceDef {
 // under its file stem, which names the generated file pair.
 struct LawEntry {
   std::string file_stem;
+  std::string source;  // the law file's path as compiled (__FILE__), for error messages
   std::function<Law()> build;
 };
 std::vector<LawEntry>& law_registry();
+// The name given to the most recently constructed Law: names the law in the error
+// of a builder that throws before returning it (pdgen's messages).
+std::string& law_under_construction();
 std::vector<InfluenceDef>& influence_registry();
 std::string file_stem(const char* path);
 
 struct LawRegistrar {
   LawRegistrar(const char* file, std::function<Law()> build) {
-    law_registry().push_back({file_stem(file), std::move(build)});
+    law_registry().push_back({file_stem(file), file, std::move(build)});
   }
 };
 struct InfluenceRegistrar {

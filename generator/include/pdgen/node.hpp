@@ -13,8 +13,6 @@ enum class Op : std::uint8_t {
 #undef PD_OP
 };
 
-const char* op_name(Op op);
-
 using NodeId = std::int32_t;
 
 // What a symbol stands for; decides where a value lives in a kernel.
@@ -29,7 +27,6 @@ enum class SymbolKind : std::uint8_t {
 struct SymbolInfo {
   std::string name;
   SymbolKind kind = SymbolKind::Free;
-  int slot = 0;  // index among its kind (component for vectors, parameter index, ...)
 };
 
 struct Node {

@@ -1,0 +1,78 @@
+// The kernel ABI's spelling; must agree with runtime/kernel_abi.hpp.
+#include "emit/abi_text.hpp"
+
+#include <sstream>
+
+namespace pdgen::abi_text {
+
+namespace {
+std::string str(int i) { return std::to_string(i); }
+const char* kFamily = "const pd::abi::Family& fam";
+}  // namespace
+
+Signature signature(Kernel k) {
+  switch (k) {
+    case Kernel::Moments:
+      return {"void", {kFamily, "double* moments"}, {"fam", "moments"}};
+    case Kernel::Residual:
+      return {"void", {kFamily, "double* forces"}, {"fam", "forces"}};
+    case Kernel::Tangent:
+      return {"void", {kFamily, "double* forces", "const pd::abi::TangentFactors& factors"}, {"fam", "forces", "factors"}};
+    case Kernel::Jvp:
+      return {"void", {kFamily, "const double* dy", "double* df"}, {"fam", "dy", "df"}};
+    case Kernel::Energy:
+      return {"double", {kFamily}, {"fam"}};
+    case Kernel::Outputs:
+      return {"void", {kFamily, "double* outputs"}, {"fam", "outputs"}};
+    case Kernel::Influence:
+      return {"double", {"double r", "double delta"}, {"r", "delta"}};
+  }
+  return {};
+}
+
+std::string bond_vector(const std::string& field, int dim, int c) { return "fam." + field + "[k * " + str(dim) + " + " + str(c) + "]"; }
+std::string bond_scalar(const std::string& field) { return "fam." + field + "[k]"; }
+std::string family_scalar(const std::string& field) { return "fam." + field; }
+std::string param(int i) { return "fam.params[" + str(i) + "]"; }
+std::string moment_input(int i) { return "fam.moments[" + str(i) + "]"; }
+std::string bond_count() { return "fam.n_bonds"; }
+std::string scratch() { return "fam.scratch"; }
+
+std::string center_component(const std::string& array, int c) { return array + "[" + str(c) + "]"; }
+std::string neighbour_component(const std::string& array, int dim, int c) {
+  return array + "[(k + 1) * " + str(dim) + " + " + str(c) + "]";
+}
+std::string bond_increment(int dim, int c) { return neighbour_component("dy", dim, c) + " - " + center_component("dy", c); }
+std::string forces_requested() { return "forces != nullptr"; }
+std::string factor_direct(int dim, int r, int c) { return "factors.direct[k * " + str(dim * dim) + " + " + str(r * dim + c) + "]"; }
+std::string factor_left(int dim, int n_states, int s, int r) {
+  return "factors.left[(k * " + str(n_states) + " + " + str(s) + ") * " + str(dim) + " + " + str(r) + "]";
+}
+std::string factor_right(int dim, int n_states, int s, int c) {
+  return "factors.right[(k * " + str(n_states) + " + " + str(s) + ") * " + str(dim) + " + " + str(c) + "]";
+}
+std::string moment_output(int i) { return "moments[" + str(i) + "]"; }
+std::string output(int i) { return "outputs[" + str(i) + "]"; }
+
+std::string abi_include() { return "#include \"kernel_abi.hpp\"\n"; }
+std::string law_descriptor_type() { return "pd::abi::LawDescriptor"; }
+
+std::string law_table(const std::vector<std::string>& descriptors, const std::vector<std::string>& influences) {
+  std::ostringstream table;
+  table << "namespace pd::abi {\n\nstd::span<const LawDescriptor> all_laws() {\n  static const LawDescriptor table[] = {\n";
+  for (auto& d : descriptors) table << "      " << d << ",\n";
+  if (descriptors.empty()) table << "      LawDescriptor{},\n";
+  table << "  };\n  return std::span<const LawDescriptor>(table, " << descriptors.size() << ");\n}\n\n";
+  table << "std::span<const InfluenceDescriptor> all_influences() {\n  using namespace pd::generated;\n"
+        << "  static const InfluenceDescriptor table[] = {\n";
+  for (auto& i : influences) table << "      " << i << ",\n";
+  if (influences.empty()) table << "      InfluenceDescriptor{},\n";
+  table << "  };\n  return std::span<const InfluenceDescriptor>(table, " << influences.size() << ");\n}\n\n";
+  table << "const LawDescriptor* find_law(std::string_view name) {\n  for (const LawDescriptor& d : all_laws())\n"
+        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n"
+        << "const InfluenceDescriptor* find_influence(std::string_view name) {\n  for (const InfluenceDescriptor& d : all_influences())\n"
+        << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n}  // namespace pd::abi\n";
+  return table.str();
+}
+
+}  // namespace pdgen::abi_text

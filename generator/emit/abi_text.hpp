@@ -1,0 +1,48 @@
+// The kernel ABI (runtime/kernel_abi.hpp) as C++ text: the one place in the generator
+// that spells its types, fields, array layouts and kernel signatures. The kernel builders
+// (law/kernels.cpp), the emitter and the file formatter ask here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pdgen::abi_text {
+
+// A kernel's C++ signature: return type, "type name" parameters and their names.
+struct Signature {
+  std::string return_type;
+  std::vector<std::string> params, names;
+};
+enum class Kernel { Moments, Residual, Tangent, Jvp, Energy, Outputs, Influence };
+Signature signature(Kernel k);
+
+// Family inputs. Per bond k: component c of a vector field (xi, Y), a scalar field
+// (w, alpha, V). Per family: V0, delta, parameter i, moment i.
+std::string bond_vector(const std::string& field, int dim, int c);
+std::string bond_scalar(const std::string& field);
+std::string family_scalar(const std::string& field);
+std::string param(int i);
+std::string moment_input(int i);
+std::string bond_count();  // L
+std::string scratch();     // the per-bond cache's storage
+
+// Kernel outputs. Nodal vector `array` (forces, df): the center's component c and
+// neighbour k+1's; the JVP's bond increment dY_k = dy_{k+1} - dy_0.
+std::string center_component(const std::string& array, int c);
+std::string neighbour_component(const std::string& array, int dim, int c);
+std::string bond_increment(int dim, int c);
+std::string forces_requested();  // the tangent writes forces only when given them
+std::string factor_direct(int dim, int r, int c);
+std::string factor_left(int dim, int n_states, int s, int r);
+std::string factor_right(int dim, int n_states, int s, int c);
+std::string moment_output(int i);
+std::string output(int i);
+
+// Generated files: the header every generated file includes, and descriptor types.
+std::string abi_include();
+std::string law_descriptor_type();
+// The definitions of all_laws, all_influences, find_law and find_influence over the
+// given descriptor calls ("pd::generated::silling_3d_descriptor()") and influence entries.
+std::string law_table(const std::vector<std::string>& descriptors, const std::vector<std::string>& influences);
+
+}  // namespace pdgen::abi_text

@@ -1,0 +1,22 @@
+# pdgen --out DIR removes the generated sources in DIR it no longer emits (a deleted
+# law's kernels), so refresh_generated, which copies DIR into generated/, cannot bring
+# them back. Other files in DIR stay. Run with -DPDGEN=... -DDIR=...
+file(REMOVE_RECURSE ${DIR})
+file(MAKE_DIRECTORY ${DIR})
+file(WRITE ${DIR}/deleted_law.cpp "// kernels of a law that no longer exists\n")
+file(WRITE ${DIR}/deleted_law.hpp "#pragma once\n")
+file(WRITE ${DIR}/notes.txt "not a generated source\n")
+execute_process(COMMAND ${PDGEN} --out ${DIR} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pdgen failed: ${rc}")
+endif()
+foreach(f deleted_law.cpp deleted_law.hpp)
+  if(EXISTS ${DIR}/${f})
+    message(FATAL_ERROR "pdgen left ${f} in ${DIR}")
+  endif()
+endforeach()
+foreach(f notes.txt law_table.cpp silling.cpp silling.hpp)
+  if(NOT EXISTS ${DIR}/${f})
+    message(FATAL_ERROR "${f} missing from ${DIR}")
+  endif()
+endforeach()
