@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
 
 namespace pd {
@@ -27,6 +28,7 @@ Model build_model(const Scene& scene) {
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)
     m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
+  for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   return m;
 }
 
