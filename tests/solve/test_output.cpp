@@ -1,6 +1,9 @@
-// VTU and CSV writers: well-formed XML with the right counts, CSV shape, atomic writes.
+// VTU and CSV writers: a well-formed binary VTU with the right counts and exact values, CSV shape, atomic writes.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -86,25 +89,44 @@ const Element& child(const Element& e, const std::string& name) {
     if (c.name == name) return c;
   throw std::runtime_error("no <" + name + "> in <" + e.name + ">");
 }
-std::vector<double> numbers(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<double> v;
-  double x;
-  while (in >> x) v.push_back(x);
-  return v;
-}
-
 std::string read(const std::filesystem::path& p) {
   std::ifstream in(p);
   return {std::istreambuf_iterator<char>(in), {}};
 }
+
+// The head of a binary VTU (XML up to the appended section) and the raw bytes after '_'.
+struct BinaryVtu {
+  Element root;
+  std::string data;
+};
+BinaryVtu split_binary_vtu(const std::string& doc) {
+  const std::string open = "<AppendedData encoding=\"raw\">";
+  const std::size_t at = doc.find(open);
+  if (at == std::string::npos) throw std::runtime_error("no raw <AppendedData>");
+  const std::size_t underscore = doc.find('_', at + open.size());
+  const std::size_t close = doc.rfind("\n  </AppendedData>");
+  if (underscore == std::string::npos || close == std::string::npos || close < underscore) throw std::runtime_error("bad appended section");
+  return {Xml(doc.substr(0, at) + "</VTKFile>").parse(), doc.substr(underscore + 1, close - underscore - 1)};
+}
+// One appended block: a UInt64 byte count, then the values.
+template <class T>
+std::vector<T> block(const BinaryVtu& v, const Element& array) {
+  const std::size_t offset = std::stoull(array.attributes.at("offset"));
+  std::uint64_t bytes = 0;
+  if (offset + sizeof bytes > v.data.size()) throw std::runtime_error("offset past the data");
+  std::memcpy(&bytes, v.data.data() + offset, sizeof bytes);
+  if (offset + sizeof bytes + bytes > v.data.size() || bytes % sizeof(T) != 0) throw std::runtime_error("bad block size");
+  std::vector<T> out(bytes / sizeof(T));
+  if (bytes > 0) std::memcpy(out.data(), v.data.data() + offset + sizeof bytes, bytes);
+  return out;
+}
 }  // namespace
 
-TEST(Output, VtuIsWellFormedWithTheRightCounts) {
+TEST(Output, VtuIsBinaryWithTheRightCountsAndExactValues) {
   const auto body = pd::test::make_grid(2, 5, 4, 1, 1.5, 0.1);
   const int n = body.particles.size();
   std::vector<double> u(2 * n);
-  for (int i = 0; i < 2 * n; ++i) u[i] = 1e-3 * i;
+  for (int i = 0; i < 2 * n; ++i) u[i] = 1e-3 * i + 1.0 / 3.0;
   std::vector<pd::OutputField> fields{{"damage", 1, std::vector<double>(n, 0.25)},
                                       {"force", 2, std::vector<double>(2 * n, -1.5)}};
   const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_output";
@@ -113,34 +135,44 @@ TEST(Output, VtuIsWellFormedWithTheRightCounts) {
   pd::write_vtu_file(path.string(), body.particles, u, fields);
   ASSERT_TRUE(std::filesystem::exists(path));
   EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
-  const Element root = Xml(read(path)).parse();
-  EXPECT_EQ(root.name, "VTKFile");
-  EXPECT_EQ(root.attributes.at("type"), "UnstructuredGrid");
-  const Element& piece = child(child(root, "UnstructuredGrid"), "Piece");
+  const std::string doc = read(path);
+  const BinaryVtu v = split_binary_vtu(doc);
+  EXPECT_EQ(v.root.name, "VTKFile");
+  EXPECT_EQ(v.root.attributes.at("type"), "UnstructuredGrid");
+  EXPECT_EQ(v.root.attributes.at("header_type"), "UInt64");
+  EXPECT_EQ(v.root.attributes.at("byte_order"), std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian");
+  const Element& piece = child(child(v.root, "UnstructuredGrid"), "Piece");
   EXPECT_EQ(piece.attributes.at("NumberOfPoints"), std::to_string(n));
   EXPECT_EQ(piece.attributes.at("NumberOfCells"), std::to_string(n));
-  EXPECT_EQ(numbers(child(child(piece, "Points"), "DataArray").text).size(), 3u * n);
+  const auto points = block<double>(v, child(child(piece, "Points"), "DataArray"));
+  ASSERT_EQ(points.size(), 3u * n);
+  EXPECT_EQ(points[3 * 7 + 1], body.particles.x[2 * 7 + 1]);
   const Element& cells = child(piece, "Cells");
   ASSERT_EQ(cells.children.size(), 3u);
   for (const auto& a : cells.children) {
-    const auto v = numbers(a.text);
-    ASSERT_EQ(v.size(), static_cast<std::size_t>(n)) << a.attributes.at("Name");
-    if (a.attributes.at("Name") == "types") {
-      for (double t : v) EXPECT_EQ(t, 1.0);
-    }
-    if (a.attributes.at("Name") == "offsets") {
-      EXPECT_EQ(v.back(), n);
+    EXPECT_EQ(a.attributes.at("format"), "appended");
+    const std::string& name = a.attributes.at("Name");
+    if (name == "types") {
+      const auto t = block<std::uint8_t>(v, a);
+      ASSERT_EQ(t.size(), static_cast<std::size_t>(n));
+      for (auto x : t) EXPECT_EQ(x, 1);  // VTK_VERTEX
+    } else {
+      const auto c = block<std::int64_t>(v, a);
+      ASSERT_EQ(c.size(), static_cast<std::size_t>(n)) << name;
+      EXPECT_EQ(c.back(), name == "offsets" ? n : n - 1);
     }
   }
   const Element& pd_data = child(piece, "PointData");
   ASSERT_EQ(pd_data.children.size(), 3u);
   std::map<std::string, std::vector<double>> arrays;
-  for (const auto& a : pd_data.children) arrays[a.attributes.at("Name")] = numbers(a.text);
+  for (const auto& a : pd_data.children) arrays[a.attributes.at("Name")] = block<double>(v, a);
   ASSERT_EQ(arrays["displacement"].size(), 3u * n);
   EXPECT_EQ(arrays["displacement"][3 * 4 + 1], u[2 * 4 + 1]);  // exact round trip, z padded
   EXPECT_EQ(arrays["displacement"][3 * 4 + 2], 0.0);
   EXPECT_EQ(arrays["damage"].size(), static_cast<std::size_t>(n));
   EXPECT_EQ(arrays["force"].size(), 3u * n);
+  // Binary: 8 bytes a Float64 (ASCII with 17 digits took about 24).
+  EXPECT_LT(doc.size(), 8u * (3 + 3 + 1 + 3) * n + 17u * n + 2000);
   std::filesystem::remove_all(dir);
 }
 
