@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "output/atomic_file.hpp"
+#include "output/run_id.hpp"
 
 namespace pd {
 
@@ -78,11 +79,11 @@ std::string vtu_document(const Particles& P, std::span<const double> u, std::spa
   auto out = std::back_inserter(b);
   fmt::format_to(out,
                  "<?xml version=\"1.0\"?>\n"
-                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\">\n"
+                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\" run_id=\"{}\">\n"
                  "  <UnstructuredGrid>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
                  "      <Points>\n",
-                 byte_order, n, n);
+                 byte_order, run_id(), n, n);
   AppendedArrays arrays(b);
   arrays.add_points("position", d, n, P.x.data(), d);
   fmt::format_to(out, "      </Points>\n      <Cells>\n");

@@ -15,7 +15,8 @@ namespace pd {
 // a value instead of ~24 in ASCII, and bit-exact when read back; the head names the
 // machine's byte order, blocks have UInt64 size headers). 2D points and vectors are
 // padded with z = 0, as VTK wants 3 components. Written atomically
-// (write_file_atomically). tests/output/check_outputs.py reads every kind with VTK.
+// (write_file_atomically). The root carries run_id (run_id.hpp), which VTK ignores.
+// tests/output/check_outputs.py reads every kind with VTK.
 void write_vtu_file(const std::string& path, const Particles& particles, std::span<const double> u,
                     std::span<const OutputField> fields);
 

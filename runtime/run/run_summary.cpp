@@ -3,12 +3,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output/run_id.hpp"
 #include "run/simulation.hpp"
 
 namespace pd {
 
 std::string RunSummary::json() const {
   nlohmann::ordered_json j;
+  j["run_id"] = run_id();  // also in the .pvd and every .vtu of this run
   j["scene"] = scene;
   j["law"] = law;
   j["influence"] = influence;

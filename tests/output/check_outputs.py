@@ -5,12 +5,15 @@ Runs a static scene and a dynamic one (snapshots + animation.pvd) with `pd`, the
 checks with VTK that each .vtu opens, has the expected point count, the array names and
 component counts, and the same values (bit for bit: the writer stores raw Float64) as
 result.csv; that every .pvd entry names a readable snapshot at increasing times; and
-that the last snapshot of the dynamic run equals its result.
+that the last snapshot of the dynamic run equals its result; and that summary.json, the
+.pvd and every .vtu of a run carry one run_id.
 
 usage: check_outputs.py PD_EXE WORK_DIR
 """
 import csv
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -90,6 +93,26 @@ def read_vtu(path):
     return grid.GetNumberOfPoints(), arrays
 
 
+def run_id_of(path):
+    """The run_id attribute of a VTK XML file's root (.vtu or .pvd)."""
+    with open(path, "rb") as f:
+        head = f.read(1024).decode("latin-1")
+    m = re.search(r'<VTKFile [^>]*run_id="([^"]+)"', head)
+    check(m is not None, f"{path}: no run_id on <VTKFile>")
+    return m.group(1) if m else None
+
+
+def check_one_run(directory, files):
+    """summary.json's run_id is the one in every VTK file of the run."""
+    with open(os.path.join(directory, "summary.json")) as f:
+        rid = json.load(f).get("run_id")
+    check(bool(rid), f"{directory}/summary.json has no run_id")
+    for p in files:
+        check(run_id_of(p) == rid, f"{p}: run_id {run_id_of(p)} is not summary.json's {rid}")
+    leftovers = [n for n in os.listdir(directory) if n.endswith(".tmp") or n.startswith(".pd.")]
+    check(not leftovers, f"{directory}: temporaries or lock left: {leftovers}")
+
+
 def read_csv(path):
     with open(path) as f:
         rows = list(csv.reader(f))
@@ -137,6 +160,7 @@ def main():
     arrays = compare_with_csv(os.path.join(static, "result.vtu"), os.path.join(static, "result.csv"), 2)
     for name in ("displacement", "material", "damage", "internal_force"):
         check(name in arrays, f"static result.vtu has no {name}")
+    check_one_run(static, [os.path.join(static, "result.vtu")])
 
     dynamic = os.path.join(work, "dynamic")
     run_pd(pd, DYNAMIC, dynamic)
@@ -156,6 +180,8 @@ def main():
         if os.path.exists(path):
             n, last = read_vtu(path)
             check(n == len(arrays["position"][1]) // 3, f"{path}: {n} points")
+    check_one_run(dynamic, [os.path.join(dynamic, "result.vtu"), os.path.join(dynamic, "animation.pvd")] +
+                  [os.path.join(dynamic, e.get("file")) for e in entries])
     if last is not None:
         for name in ("displacement", "velocity", "damage"):
             check(list(last[name][1]) == list(arrays[name][1]), f"the last snapshot's {name} differs from result.vtu")

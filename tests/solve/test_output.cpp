@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
@@ -134,7 +135,7 @@ TEST(Output, VtuIsBinaryWithTheRightCountsAndExactValues) {
   const auto path = dir / "sub" / "result.vtu";
   pd::write_vtu_file(path.string(), body.particles, u, fields);
   ASSERT_TRUE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(path.parent_path()), {}), 1) << "a temporary was left";
   const std::string doc = read(path);
   const BinaryVtu v = split_binary_vtu(doc);
   EXPECT_EQ(v.root.name, "VTKFile");
@@ -182,6 +183,25 @@ TEST(Output, XmlCheckerRejectsMalformedDocuments) {
   EXPECT_NO_THROW(Xml("<?xml version=\"1.0\"?>\n<a x=\"1\"><b/>text</a>").parse());
 }
 
+TEST(Output, TemporariesAreUniquePerWrite) {
+  // Two writers of one path (two runs, or two threads) must not share a temporary: each
+  // write's temporary is new, so interleaved writes publish one whole file or the other.
+  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_tmp_names";
+  std::filesystem::remove_all(dir);
+  const std::string path = (dir / "f.txt").string();
+  std::vector<std::thread> writers;
+  for (int t = 0; t < 4; ++t)
+    writers.emplace_back([&, t] {
+      for (int k = 0; k < 50; ++k) pd::write_file_atomically(path, std::string(10000, static_cast<char>('a' + t)));
+    });
+  for (auto& w : writers) w.join();
+  const std::string text = read(path);
+  ASSERT_EQ(text.size(), 10000u);
+  EXPECT_EQ(text, std::string(10000, text[0]));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1) << "a temporary was left";
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Output, CsvHasHeaderAndOneRowPerParticle) {
   const auto body = pd::test::make_grid(3, 3, 2, 2, 1.5);
   const int n = body.particles.size();
@@ -211,6 +231,6 @@ TEST(Output, BadFieldsAndUnwritablePathsFailWithoutAFile) {
   // A directory where the file should go: the rename fails and no temporary is left.
   std::filesystem::create_directories(path);
   EXPECT_THROW(pd::write_file_atomically(path.string(), "x"), std::runtime_error);
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1) << "a temporary was left";
   std::filesystem::remove_all(dir);
 }
