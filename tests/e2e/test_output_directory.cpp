@@ -18,45 +18,29 @@
 #include <thread>
 
 #include "output/output_directory.hpp"
+#include "temp_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-// Small and quick: a static solve of a few hundred particles.
-const char* kScene = R"(dimension: 2
-domain: {box: {min: [0, 0], max: [1, 1]}, count: 12}
-law: silling_plane_strain
-influence: cubic
-materials: [{E: 1, nu: 0.25}]
-boundary:
-  - {region: {side: bottom}, fixed: [x, y]}
-  - {region: {side: top}, displacement: {x: 0, y: 0.01}}
-)";
-// Long: a Newton iteration every few milliseconds for far longer than a test waits.
-const char* kLongScene = R"(dimension: 2
-domain: {box: {min: [0, 0], max: [1, 1]}, count: 30}
-law: silling_plane_strain
-influence: cubic
-materials: [{E: 1, nu: 0.25}]
-boundary:
-  - {region: {side: bottom}, fixed: [x, y]}
-  - {region: {side: top}, displacement: {x: 0, y: 0.3}}
-solver: {load_steps: 1000000}
-)";
+// A static stretch: `count` particles along x, `load_steps` Newton load steps. Small
+// (12, 1) solves in a moment; (30, 10^6) runs far longer than a test waits.
+std::string stretch_scene(int count, double top, int load_steps) {
+  return "dimension: 2\n"
+         "domain: {box: {min: [0, 0], max: [1, 1]}, count: " + std::to_string(count) + "}\n"
+         "law: silling_plane_strain\ninfluence: cubic\nmaterials: [{E: 1, nu: 0.25}]\n"
+         "boundary:\n  - {region: {side: bottom}, fixed: [x, y]}\n"
+         "  - {region: {side: top}, displacement: {x: 0, y: " + std::to_string(top) + "}}\n"
+         "solver: {load_steps: " + std::to_string(load_steps) + "}\n";
+}
+const std::string kScene = stretch_scene(12, 0.01, 1), kLongScene = stretch_scene(30, 0.3, 1000000);
 
 fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = pd::test::fresh_directory(name);
   fs::permissions(dir, fs::perms::all);  // traversable by the unprivileged child below
   return dir;
 }
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using pd::test::read_text;
 
 struct Child {
   bool unprivileged = false;      // as root: run pd as nobody, so permissions apply
@@ -100,7 +84,7 @@ Outcome wait_pd(pid_t pid, const fs::path& dir) {
   o.err = read_text(dir / "stderr.txt");
   return o;
 }
-Outcome run_pd(const char* scene_text, const fs::path& out, const fs::path& dir, const Child& c = {}) {
+Outcome run_pd(const std::string& scene_text, const fs::path& out, const fs::path& dir, const Child& c = {}) {
   const fs::path scene = dir / "scene.yaml";
   std::ofstream(scene) << scene_text;
   fs::permissions(scene, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
