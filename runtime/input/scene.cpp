@@ -282,7 +282,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (s.dim != 2 && s.dim != 3) m.get("dimension").fail("dimension must be 2 or 3");
 
   // A body from a particle file, or a box lattice.
-  const bool from_file = root["domain"].IsMap() && root["domain"]["particles"];
+  const YAML::Node domain = root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
+  const bool from_file = domain && domain.IsMap() && domain["particles"];
   std::optional<ParticleFile> cloud;
   if (from_file) cloud = read_particle_domain(m.get("domain"), s);
   else {
