@@ -9,6 +9,7 @@
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
+#include "output/output_directory.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 
@@ -95,6 +96,7 @@ int run_command(const Args& args) {
   RunSummary s;
   const bool dynamic = scene.dynamics.has_value();
   try {
+    const OutputDirectoryClaim claim(scene.output.directory);  // writable and ours, before any solve
     const auto log = [](const std::string& line) { fmt::print("{}\n", line); std::fflush(stdout); };
     if (scene.dynamics) {
       DynamicSimulation sim(std::move(scene), log);

@@ -12,6 +12,7 @@
 namespace pd {
 
 Particles discretize(const Scene& s) {
+  if (s.point_cloud) return *s.point_cloud;  // domain.particles
   Particles p;
   p.dim = s.dim;
   const bool node = s.placement == "node";

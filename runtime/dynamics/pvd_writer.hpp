@@ -1,5 +1,6 @@
 // A ParaView collection (.pvd) of .vtu snapshots with their times: opening it in
 // ParaView plays the animation. Written atomically; rewritten as snapshots are added.
+// The root carries the run_id that its snapshots and summary.json carry too.
 #pragma once
 
 #include <string>

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "input/particle_domain.hpp"
 #include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
@@ -281,7 +282,12 @@ Scene read(const YAML::Node& root, const std::string& file) {
   s.dim = m.integer("dimension", 2);
   if (s.dim != 2 && s.dim != 3) m.get("dimension").fail("dimension must be 2 or 3");
 
-  {
+  // A body from a particle file, or a box lattice.
+  const YAML::Node domain = root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
+  const bool from_file = domain && domain.IsMap() && domain["particles"];
+  std::optional<ParticleFile> cloud;
+  if (from_file) cloud = read_particle_domain(m.get("domain"), s);
+  else {
     MapReader d(m.get("domain"));
     MapReader box(d.get("box"));
     s.lo = to_point(box.get("min"), s.dim);
@@ -357,6 +363,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       }
     }
   }
+  if (cloud) attach_point_cloud(top.child(root["domain"], "domain"), *cloud, s);
   for (std::size_t i = 0; i < s.inclusions.size(); ++i)
     if (s.material_index(s.inclusions[i].material) < 0)
       top.child(root["domain"]["inclusions"][i], "domain.inclusions[" + std::to_string(i) + "]")

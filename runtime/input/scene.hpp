@@ -5,6 +5,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "input/region.hpp"
 #include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
+#include "particles.hpp"
 #include "solve/solver_spec.hpp"
 
 namespace pd {
@@ -108,6 +110,9 @@ struct Scene {
   // (dynamics) and bonds break at a critical stretch (damage).
   std::optional<DynamicsSpec> dynamics;
   std::optional<DamageSpec> damage;
+  // domain.particles: the body read from a file (input/particle_domain.hpp), used by
+  // discretize() instead of the box lattice.
+  std::shared_ptr<const Particles> point_cloud;
 
   double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
   int material_index(const std::string& name) const;

@@ -1,6 +1,9 @@
 // Temporary file + rename.
 #include "output/atomic_file.hpp"
 
+#include <fmt/format.h>
+
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +11,7 @@
 #include <system_error>
 
 #include "interrupt.hpp"
+#include "output/run_id.hpp"
 
 namespace pd {
 
@@ -18,7 +22,10 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   if (ec) throw std::runtime_error("cannot create the directory of " + path + ": " + ec.message());
   throw_if_interrupted("before writing " + path);
-  const std::string tmp = path + ".tmp";
+  // Unique per run and per write: two runs (or two threads) writing one path never
+  // share a temporary, and the last rename wins whole.
+  static std::atomic<unsigned> writes{0};
+  const std::string tmp = fmt::format("{}.{}.{}.tmp", path, run_id(), writes++);
   set_pending_temporary(tmp.c_str());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

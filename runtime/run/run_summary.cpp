@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output/run_id.hpp"
 #include "run/run_summary.hpp"
 
 namespace pd {
@@ -18,6 +19,7 @@ void RunSummary::describe(const Scene& s, const Model& model) {
 
 std::string RunSummary::json() const {
   nlohmann::ordered_json j;
+  j["run_id"] = run_id();  // also in the .pvd and every .vtu of this run
   j["scene"] = scene;
   j["law"] = law;
   j["influence"] = influence;

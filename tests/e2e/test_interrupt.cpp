@@ -16,6 +16,7 @@
 #include "interrupt.hpp"
 #include "output/atomic_file.hpp"
 #include "run/simulation.hpp"
+#include "temp_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,19 +38,8 @@ boundary:
 solver: {load_steps: 1000000}
 )";
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using pd::test::fresh_directory;
+using pd::test::read_text;
 
 struct Outcome {
   int status = -1;  // exit status, or -1 when the process did not exit normally in time
