@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
 
 namespace pd {
@@ -15,7 +16,7 @@ BodySetup set_up_body(const Scene& scene, RunSummary& summary) {
   b.influence = abi::find_influence(scene.influence);
   if (!b.law || !b.influence) throw std::invalid_argument("unknown law or influence function");
   b.particles = discretize(scene);
-  b.bonds = find_bonds(b.particles, scene.delta(), b.influence->weight);
+  b.bonds = find_quadrature_bonds(b.particles, scene.delta(), scene.h, scene.quadrature, b.influence->weight);
   summary.scene = scene.file;
   summary.law = b.law->name;
   summary.influence = b.influence->name;
