@@ -5,7 +5,7 @@
 //    accepted integration points;
 //  - CCI, the paper's "cubic-cell integration": the nodes with |xi| <= delta (the source
 //    included) with the linear factor of eq. (2.16); one point per node.
-// The paper's CCI is reproduced to every printed digit by this reading (the factor is
+// The paper's CCI is reproduced to one unit of its last printed digit by this reading (the factor is
 // applied only to nodes within delta, so the outer half of the linear ramp is missing:
 // the O(dx) bias that dominates its error).
 //
