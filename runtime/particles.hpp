@@ -28,6 +28,9 @@ struct Bonds {
   std::vector<double> w;       // [nb] influence weight
   std::vector<double> alpha;   // [nb] 1 intact, 0 broken
   std::vector<double> delta;   // [n] horizon of each particle
+  // [nb] share of the neighbour's volume inside the horizon (domain.quadrature, paper 002);
+  // empty: every neighbour counts whole.
+  std::vector<double> volume_factor;
 
   int particle_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   int bond_count() const { return static_cast<int>(neighbor.size()); }

@@ -160,12 +160,14 @@ int drop_negligible_bonds(Bonds& b) {
         continue;
       }
       b.neighbor[kept] = b.neighbor[k], b.length[kept] = b.length[k], b.w[kept] = b.w[k], b.alpha[kept] = b.alpha[k];
+      if (!b.volume_factor.empty()) b.volume_factor[kept] = b.volume_factor[k];
       for (int c = 0; c < d; ++c) b.xi[static_cast<std::size_t>(kept) * d + c] = b.xi[static_cast<std::size_t>(k) * d + c];
       ++kept;
     }
   }
   b.offsets[n] = kept;
   b.neighbor.resize(kept), b.length.resize(kept), b.w.resize(kept), b.alpha.resize(kept);
+  if (!b.volume_factor.empty()) b.volume_factor.resize(kept);
   b.xi.resize(static_cast<std::size_t>(kept) * d);
   return dropped;
 }

@@ -1,15 +1,16 @@
 // Scene spellings of the quadrature choices.
 #include "discretize/quadrature.hpp"
 
-#include <array>
 #include <utility>
 
 namespace pd {
 
 namespace {
-constexpr std::array<std::pair<Quadrature, std::string_view>, 1> kNames{{
+constexpr std::pair<Quadrature, std::string_view> kNames[] = {
     {Quadrature::Volume, "volume"},
-}};
+    {Quadrature::PartialLinear, "partial_linear"},
+    {Quadrature::PartialExact, "partial_exact"},
+};
 }  // namespace
 
 std::string_view quadrature_name(Quadrature q) {
