@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "assembly/collocation.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 
@@ -18,6 +19,8 @@ struct FamilyInputs {
   std::vector<double> moments;              // [n * n_moments]
   int n_moments = 0;
   int max_bonds = -1;  // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
+  // Set for collocation assembly: the families see per-bond quadrature weights as V.
+  const Collocation* collocation = nullptr;
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }

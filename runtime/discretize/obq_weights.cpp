@@ -57,14 +57,21 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
   return {omega.data(), omega.data() + n};
 }
 
-std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space) {
+std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                const std::vector<char>& needed) {
   if (space.dim != bonds.dim) throw std::invalid_argument("obq_weights: the space and the bonds differ in dimension");
+  if (!needed.empty() && static_cast<int>(needed.size()) != bonds.particle_count())
+    throw std::invalid_argument("obq_weights: one `needed` flag per particle expected");
   std::vector<double> weights(bonds.neighbor.size(), 0.0);
   const int n = bonds.particle_count();
   std::optional<NotUnisolventError> first_error;
 #pragma omp parallel for schedule(dynamic, 64)
   for (int p = 0; p < n; ++p) {
     const int begin = bonds.offsets[p];
+    if (!needed.empty() && !needed[p]) {
+      for (int b = begin; b < bonds.offsets[p + 1]; ++b) weights[b] = particles.volume[bonds.neighbor[b]];
+      continue;
+    }
     try {
       const std::vector<double> w = obq_family_weights(space, bonds.xi.data() + static_cast<std::ptrdiff_t>(begin) * bonds.dim,
                                                        bonds.family_size(p), bonds.delta[p], p, particles.position(p));

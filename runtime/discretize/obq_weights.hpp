@@ -34,6 +34,11 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
 // The weights of every family, one per bond in the compressed rows of `bonds`. Every bond
 // counts whatever its alpha: paper 001 (§4) computes the weights on the perturbed points
 // before bonds are broken, and a broken bond then carries weight 0 (eq. 3.1) through alpha.
-std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space);
+// `needed` (empty: all) marks the families that get OBQ weights; the others keep the
+// volume quadrature (each bond weighs its neighbour's volume): the outer part of a
+// Dirichlet layer, whose truncated families may not be unisolvent and whose forces do
+// not reach the solved particles.
+std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                const std::vector<char>& needed = {});
 
 }  // namespace pd

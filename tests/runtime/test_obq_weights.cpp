@@ -10,34 +10,11 @@
 #include <cmath>
 #include <vector>
 
-#include "discretize/discretization.hpp"
-#include "discretize/obq_weights.hpp"
+#include "obq_cloud.hpp"
 
 namespace {
-double unit(double, double) { return 1.0; }
-
-// The paper's set-up (§4): a lattice of spacing h perturbed by 0.2 h, delta = 3.5 h.
-struct Cloud {
-  pd::Particles particles;
-  pd::Bonds bonds;
-  double h = 0, delta = 0;
-};
-Cloud perturbed_cloud(int dim, double h) {
-  pd::Scene s;
-  s.dim = dim;
-  s.lo = {0, 0, 0};
-  s.hi = {1, 1, 1};
-  s.h = h;
-  s.perturbation = 0.2;
-  s.seed = 11;
-  s.materials.resize(1);
-  Cloud c;
-  c.h = h;
-  c.delta = 3.5 * h;
-  c.particles = pd::discretize(s);
-  c.bonds = pd::find_bonds(c.particles, c.delta, unit);
-  return c;
-}
+using obq_test::Cloud;
+Cloud perturbed_cloud(int dim, double h) { return obq_test::unit_box_cloud(dim, h); }
 
 // Largest violation of the constraints over the family, relative to delta^(|b| - s + d),
 // the size of each moment.
