@@ -27,4 +27,12 @@ ReproducingSpace paper001_space(int dim) {
   return space;
 }
 
+ReproducingSpace paper001_odd_space(int dim) {
+  ReproducingSpace space = paper001_space(dim);
+  space.name = "paper001 P2 + S_(1/r,2) + xi^5/r^3";
+  const std::vector<BondMonomial> odd = monomials(dim, 5, 5, 3);
+  space.terms.insert(space.terms.end(), odd.begin(), odd.end());
+  return space;
+}
+
 }  // namespace pd

@@ -26,4 +26,13 @@ std::vector<BondMonomial> monomials(int dim, int min_degree, int max_degree, int
 // (xi_a / r = xi_a |xi|^2 / |xi|^3).
 ReproducingSpace paper001_space(int dim);
 
+// paper001_space plus xi^b / |xi|^3 with |b| = 5 (6 functions in 2D, 21 in 3D: 21 and 56
+// in all). These odd integrands vanish on the ball but not on a perturbed family: the
+// cubic Taylor term of u in the shear integrand (xi (x) xi / |xi|^3) [xi, xi, xi], and
+// the quadratic term of u in the dilatation integrand xi . H[xi, xi] / |xi| (=
+// xi^b |xi|^2 / |xi|^3). Without them the force density has an O(delta) consistency
+// error of random sign on a perturbed cloud, and theta is not exact for quadratic u
+// (docs/paper001.md).
+ReproducingSpace paper001_odd_space(int dim);
+
 }  // namespace pd

@@ -101,4 +101,6 @@ TEST(BallMoments, NonIntegrableSingularityIsAnError) {
 TEST(ReproducingSpace, Paper001SpaceHas15FunctionsIn2DAnd35In3D) {
   EXPECT_EQ(pd::paper001_space(2).terms.size(), 15u);
   EXPECT_EQ(pd::paper001_space(3).terms.size(), 35u);
+  EXPECT_EQ(pd::paper001_odd_space(2).terms.size(), 21u);
+  EXPECT_EQ(pd::paper001_odd_space(3).terms.size(), 56u);
 }
