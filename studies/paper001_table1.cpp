@@ -1,6 +1,6 @@
 // Paper 001 Table 1: the manufactured solutions u1 (patch test), u2 and u2 at nu = 0.495
 // on perturbed unit-square grids, beside the paper's numbers, with the time each costs.
-//   build/bin/paper001_table1 [n ...]        (default 24 48 96; the paper also has 192)
+//   build/bin/paper001_table1 [--only COLUMN] [n ...]   (default 24 48 96; the paper also has 192)
 // Set-up as paper 001 §4: lattice spacing h = 1/n perturbed by 0.2 h, delta = 3.5 h, a
 // Dirichlet layer of width delta, OBQ weights with paper001_space, LPS, K = 1/r.
 #include <cmath>
@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "fields/manufactured_solve.hpp"
@@ -24,7 +25,11 @@ const std::map<int, std::array<double, 3>> kPaper{
 
 int main(int argc, char** argv) {
   std::vector<int> grids;
-  for (int i = 1; i < argc; ++i) grids.push_back(std::atoi(argv[i]));
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
+    else grids.push_back(std::atoi(argv[i]));
+  }
   if (grids.empty()) grids = {24, 48, 96};
   const auto inc = pd::lame_from_young_poisson(1.0, 0.495);
   struct Column {
@@ -48,6 +53,7 @@ int main(int argc, char** argv) {
   std::printf("%6s %8s %7s | %12s %12s %6s | %8s %8s\n", "N", "column", "solved", "ours", "paper", "order", "ours/pap",
               "seconds");
   for (int c = 0; c < static_cast<int>(std::size(columns)); ++c) {
+    if (!only.empty() && only != columns[c].name) continue;
     double previous = 0;
     int previous_n = 0;
     for (int n : grids) {
