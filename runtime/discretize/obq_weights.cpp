@@ -57,32 +57,56 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
   return {omega.data(), omega.data() + n};
 }
 
-std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
-                                const std::vector<char>& needed) {
+namespace {
+// The family loop of both entry points. A family not needed, or (with `fall_back`) not
+// unisolvent, keeps its neighbours' volumes; without `fall_back` the lowest
+// non-unisolvent particle's error is rethrown (the same at any thread count).
+CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                            const std::vector<char>& needed, bool fall_back) {
   if (space.dim != bonds.dim) throw std::invalid_argument("obq_weights: the space and the bonds differ in dimension");
   if (!needed.empty() && static_cast<int>(needed.size()) != bonds.particle_count())
     throw std::invalid_argument("obq_weights: one `needed` flag per particle expected");
-  std::vector<double> weights(bonds.neighbor.size(), 0.0);
+  CloudWeights out;
+  out.weights.assign(bonds.neighbor.size(), 0.0);
   const int n = bonds.particle_count();
+  std::vector<char> volume(n, 0);
   std::optional<NotUnisolventError> first_error;
 #pragma omp parallel for schedule(dynamic, 64)
   for (int p = 0; p < n; ++p) {
     const int begin = bonds.offsets[p];
-    if (!needed.empty() && !needed[p]) {
-      for (int b = begin; b < bonds.offsets[p + 1]; ++b) weights[b] = particles.volume[bonds.neighbor[b]];
-      continue;
-    }
-    try {
-      const std::vector<double> w = obq_family_weights(space, bonds.xi.data() + static_cast<std::ptrdiff_t>(begin) * bonds.dim,
-                                                       bonds.family_size(p), bonds.delta[p], p, particles.position(p));
-      std::copy(w.begin(), w.end(), weights.begin() + begin);
-    } catch (const NotUnisolventError& e) {
+    bool use_volume = !needed.empty() && !needed[p];
+    if (!use_volume) try {
+        const std::vector<double> w =
+            obq_family_weights(space, bonds.xi.data() + static_cast<std::ptrdiff_t>(begin) * bonds.dim,
+                               bonds.family_size(p), bonds.delta[p], p, particles.position(p));
+        std::copy(w.begin(), w.end(), out.weights.begin() + begin);
+      } catch (const NotUnisolventError& e) {
+        use_volume = volume[p] = 1;
+        if (!fall_back) {
 #pragma omp critical(obq_first_error)
-      if (!first_error || e.particle() < first_error->particle()) first_error = e;
-    }
+          if (!first_error || e.particle() < first_error->particle()) first_error = e;
+        }
+      }
+    if (use_volume)
+      for (int b = begin; b < bonds.offsets[p + 1]; ++b) out.weights[b] = particles.volume[bonds.neighbor[b]];
   }
-  if (first_error) throw *first_error;  // the lowest particle index: the same error at any thread count
-  return weights;
+  if (first_error) throw *first_error;
+  for (int p = 0; p < n; ++p)
+    if (volume[p]) {
+      if (out.first_volume_family < 0) out.first_volume_family = p;
+      ++out.volume_families;
+    }
+  return out;
+}
+}  // namespace
+
+std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                const std::vector<char>& needed) {
+  return weigh_families(particles, bonds, space, needed, false).weights;
+}
+
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space) {
+  return weigh_families(particles, bonds, space, {}, true);
 }
 
 }  // namespace pd

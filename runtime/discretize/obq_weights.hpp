@@ -41,4 +41,15 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
 std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
                                 const std::vector<char>& needed = {});
 
+// OBQ weights on every family that is unisolvent for the space, the volume quadrature
+// on the others (too few bonds near a corner of the body): what a scene with
+// `domain.quadrature: obq` uses, reporting the fallback rather than failing, since a
+// scene's Dirichlet regions need no exact quadrature.
+struct CloudWeights {
+  std::vector<double> weights;   // one per bond
+  int volume_families = 0;       // families that kept the volume quadrature
+  int first_volume_family = -1;  // the lowest such particle, -1 if none
+};
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space);
+
 }  // namespace pd

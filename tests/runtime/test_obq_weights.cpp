@@ -88,6 +88,21 @@ TEST(ObqWeights, ACornerFamilyOfTheCloudIsNotUnisolventAndTheWholeBodyCallNamesI
   }
 }
 
+TEST(ObqWeights, WhereUnisolventFallsBackToVolumesAndCountsTheFamilies) {
+  const Cloud c = perturbed_cloud(2, 1.0 / 24);
+  const pd::CloudWeights w = pd::obq_weights_where_unisolvent(c.particles, c.bonds, pd::paper001_space(2));
+  EXPECT_EQ(w.first_volume_family, 0);  // the corner of the cloud
+  EXPECT_GE(w.volume_families, 4);      // at least one per corner
+  EXPECT_LT(w.volume_families, c.particles.size() / 20);
+  for (int b = c.bonds.offsets[0]; b < c.bonds.offsets[1]; ++b)
+    EXPECT_EQ(w.weights[b], c.particles.volume[c.bonds.neighbor[b]]);
+  // Every other family is exact.
+  std::vector<double> obq(c.bonds.bond_count());
+  const int p = c.particles.size() / 2 + 7;
+  family_weights(c, pd::paper001_space(2), p, obq);
+  for (int b = c.bonds.offsets[p]; b < c.bonds.offsets[p + 1]; ++b) EXPECT_EQ(w.weights[b], obq[b]);
+}
+
 TEST(ObqWeights, AreTheLeastNormSolution) {
   // omega minimises |omega|^2 on {A omega = b} iff it is orthogonal to the null space of A.
   const Cloud c = perturbed_cloud(2, 1.0 / 16);
