@@ -6,6 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
+#include "discretize/obq_weights.hpp"
+
 namespace pd {
 
 namespace {
@@ -43,6 +47,17 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
     double* rows = values + static_cast<std::ptrdiff_t>(k + 1) * d * row_length;
     for (int i = 0; i < d * row_length; ++i) rows[i] *= s;
   }
+}
+
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description) {
+  const ReproducingSpace space = paper001_space(particles.dim);
+  CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space);
+  description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
+                            space.name, space.terms.size());
+  if (w.volume_families > 0)
+    description += fmt::format("; {} families not unisolvent keep the volume quadrature (particle {} first)",
+                               w.volume_families, w.first_volume_family);
+  return make_collocation(particles, bonds, std::move(w.weights));
 }
 
 }  // namespace pd

@@ -16,6 +16,7 @@
 // differently make the stiffness non-symmetric, and there is no energy.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "particles.hpp"
@@ -38,5 +39,10 @@ Collocation make_collocation(const Particles& particles, const Bonds& bonds, std
 // (L+1)*dim rows of `row_length` numbers each (1 for a force vector, (L+1)*dim for
 // the dense local tangent).
 void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int row_length, double* values);
+
+// `domain.quadrature: obq`: OBQ weights for paper 001's space (obq_weights.hpp) on every
+// unisolvent family, the volume quadrature on the others (corners of the body), as
+// collocation data. `description` is set to one line for the run log.
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description);
 
 }  // namespace pd

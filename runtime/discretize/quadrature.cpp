@@ -7,8 +7,9 @@
 namespace pd {
 
 namespace {
-constexpr std::array<std::pair<Quadrature, std::string_view>, 1> kNames{{
+constexpr std::array<std::pair<Quadrature, std::string_view>, 2> kNames{{
     {Quadrature::Volume, "volume"},
+    {Quadrature::Obq, "obq"},
 }};
 }  // namespace
 

@@ -12,6 +12,7 @@ namespace pd {
 
 enum class Quadrature {
   Volume,  // a neighbour counts with its whole volume when its centre is inside the horizon
+  Obq,     // per-family least-norm weights exact for paper 001's reproducing space, collocation assembly
 };
 
 // The scene spelling of each choice, in the order of the enum.

@@ -55,6 +55,8 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   const std::vector<std::vector<double>> params = std::move(body.params);
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken: a
   // damage scene needs the damaged variant from the start.
+  if (scene_.quadrature != Quadrature::Volume)
+    throw std::invalid_argument(scene_.file + ": domain.quadrature: obq is implemented for static solves only");
   AssemblerOptions options;
   options.intact = summary_.broken_bonds == 0 && !scene_.damage;
   options.matrix = false;  // the explicit loop needs forces only

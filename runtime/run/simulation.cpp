@@ -72,6 +72,12 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
     short_options.intact = cut == 0 && !scene_.damage;
     approximation_ = std::make_unique<FamilyAssembler>(particles_, short_bonds_, *law, params, short_options);
   }
+  if (scene_.quadrature == Quadrature::Obq) {
+    std::string line;
+    collocation_ = std::make_unique<Collocation>(make_obq_collocation(particles_, bonds_, line));
+    summary_.effects.push_back(line);
+    options.collocation = collocation_.get();
+  }
   assembler_ = std::make_unique<FamilyAssembler>(particles_, bonds_, *law, std::move(params), options);
   const StrainModeReport modes = check_strain_modes(*assembler_, influence->name, scene_.delta() / scene_.h);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";

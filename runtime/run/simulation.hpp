@@ -88,6 +88,7 @@ class Simulation {
   // Matrix-free runs with the short-horizon preconditioner: the law on delta = ratio h.
   Bonds short_bonds_;
   std::unique_ptr<FamilyAssembler> approximation_;
+  std::unique_ptr<Collocation> collocation_;  // domain.quadrature: obq (outlives assembler_)
   std::vector<std::unique_ptr<Effect>> effects_;
   // Scenes with `damage`: bonds break between load steps (after_load_step), in the real
   // bonds and in the preconditioner's short ones alike.
