@@ -59,6 +59,7 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.bonds = &bonds;
   inputs_.params = std::move(params);
   inputs_.scratch_per_bond = law.scratch_per_bond;
+  inputs_.collocation = options.collocation;
   inputs_.cache_max_bonds();
   update_moments();
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim);
@@ -131,6 +132,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
       variant_.tangent(fam, f_loc, s.factors);
       double* M = s.gather.local_matrix();
       form_local_matrix(d, S, fam, s.factors, M);
+      if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, m, M);
       if (!all_finite(M, static_cast<std::size_t>(m) * m)) return "tangent";
       const std::span<const int> slots = pat->family_slots(p);
       for (int b = 0; b <= L; ++b) {
@@ -147,6 +149,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
     } else {
       variant_.residual(fam, f_loc);
     }
+    if (f_loc && options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, 1, f_loc);
     if (f_loc) {
       if (!all_finite(f_loc, static_cast<std::size_t>(m))) return "residual";
       for (int a = 0; a <= L; ++a) {
@@ -166,6 +169,7 @@ void FamilyAssembler::stiffness_product(const double* u, const double* v, double
     const int L = fam.n_bonds;
     double* df = s.gather.local_vector();
     variant_.jvp(fam, s.gather.gather_local(p, v), df);
+    if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, 1, df);
     if (!all_finite(df, static_cast<std::size_t>((L + 1) * d))) return "tangent-vector product";
     for (int a = 0; a <= L; ++a) {
       double* out = Kv + static_cast<std::ptrdiff_t>(s.gather.particle(p, a)) * d;
@@ -193,6 +197,8 @@ void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
     double center[3] = {0, 0, 0};
     for (int i = 0; i < L; ++i) {
       const double c = fam.V0 * fam.V[i];
+      // Collocation scales neighbour i's rows (collocation.hpp); the center's stay.
+      const double own_scale = options_.collocation ? options_.collocation->row_scale[inputs_.bonds->offsets[p] + i] : 1.0;
       double* out = diag + static_cast<std::ptrdiff_t>(s.gather.particle(p, i + 1)) * d;
       for (int r = 0; r < d; ++r) {
         double own = fac.direct[i * dd + r * d + r], row_sum = own;
@@ -207,7 +213,7 @@ void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
           }
           row_sum += l * rs;
         }
-        out[r] += c * own;
+        out[r] += own_scale * c * own;
         center[r] += c * row_sum;
       }
     }
@@ -239,6 +245,7 @@ namespace pd {
 
 double FamilyAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  if (options_.collocation) throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);
 #pragma omp parallel num_threads(thread_count())

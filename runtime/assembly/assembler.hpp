@@ -17,6 +17,9 @@ struct AssemblerOptions {
   bool matrix = true;   // build the sparsity pattern and slots (false: matrix-free use only)
   int threads = 0;      // 0: OpenMP's default
   int chunk_size = 0;   // families per colouring chunk; 0: automatic
+  // Non-null: collocation assembly with these per-bond weights (collocation.hpp); the
+  // stiffness is then not symmetric and there is no energy. Must outlive the assembler.
+  const Collocation* collocation = nullptr;
 };
 
 // Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over
@@ -54,7 +57,9 @@ class FamilyAssembler {
   void stiffness_diagonal(const double* u, double* diag) const;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
-  bool has_energy() const { return variant_.energy != nullptr; }
+  bool has_energy() const { return variant_.energy != nullptr && options_.collocation == nullptr; }
+  // False under collocation assembly: the solver needs UMFPACK or GMRES then.
+  bool symmetric() const { return options_.collocation == nullptr; }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
   std::vector<double> particle_outputs(const double* u) const;

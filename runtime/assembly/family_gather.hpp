@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "assembly/collocation.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 
@@ -19,6 +20,8 @@ struct FamilyInputs {
   int n_moments = 0;
   int scratch_per_bond = 0;  // the law's LawDescriptor::scratch_per_bond
   int max_bonds = -1;  // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
+  // Set for collocation assembly: the families see per-bond quadrature weights as V.
+  const Collocation* collocation = nullptr;
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }

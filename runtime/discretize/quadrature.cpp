@@ -10,6 +10,7 @@ constexpr std::pair<Quadrature, std::string_view> kNames[] = {
     {Quadrature::Volume, "volume"},
     {Quadrature::PartialLinear, "partial_linear"},
     {Quadrature::PartialExact, "partial_exact"},
+    {Quadrature::Obq, "obq"},
 };
 }  // namespace
 

@@ -29,6 +29,8 @@ Model build_model(const Scene& scene) {
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)
     m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
+  if (scene.quadrature == Quadrature::Obq)
+    m.collocation = std::make_unique<Collocation>(make_obq_collocation(m.particles, m.bonds, m.collocation_description));
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   return m;
 }
@@ -44,6 +46,7 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.intact = model.cut_by_cracks == 0 && !scene.damage;
   options.matrix = matrix;
   options.threads = threads;
+  options.collocation = model.collocation.get();
   model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
   return options;
 }

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "assembly/collocation.hpp"
 #include "discretize/family_quality.hpp"
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
@@ -26,7 +28,11 @@ struct Model {
   FamilyQualityReport quality;
   long long bond_count = 0;    // each bond once (not per direction)
   int cut_by_cracks = 0;       // bonds the scene's pre-cracks cut, each once
-  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler
+  // domain.quadrature: obq — the per-bond weights and collocation assembly (eq. 2.13 of
+  // paper 001), and the log line that says how many families kept the volume rule.
+  std::unique_ptr<Collocation> collocation;
+  std::string collocation_description;
+  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared last: it reads the above)
 
   // What the solver plan needs of the model (mean family size: bonds per particle).
   ProblemSize size(const Scene& scene, double short_family_size = -1) const;

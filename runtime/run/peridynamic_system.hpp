@@ -35,7 +35,7 @@ class PeridynamicSystem final : public NonlinearSystem {
     }
   }
   bool symmetric() const override {
-    bool s = a_.variant().energy != nullptr;
+    bool s = a_.has_energy();  // false under collocation (domain.quadrature: obq)
     for (const Effect* e : effects_) s = s && e->symmetric();
     return s;
   }

@@ -1,0 +1,63 @@
+// Row scales of collocation assembly (collocation.hpp).
+#include "assembly/collocation.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "discretize/obq_weights.hpp"
+
+namespace pd {
+
+namespace {
+// Bond index of q -> p in q's family (rows are sorted by neighbour index), or -1.
+int reverse_bond(const Bonds& bonds, int p, int q) {
+  const auto begin = bonds.neighbor.begin() + bonds.offsets[q], end = bonds.neighbor.begin() + bonds.offsets[q + 1];
+  const auto it = std::lower_bound(begin, end, p);
+  return it != end && *it == p ? static_cast<int>(it - bonds.neighbor.begin()) : -1;
+}
+}  // namespace
+
+Collocation make_collocation(const Particles& particles, const Bonds& bonds, std::vector<double> weights) {
+  if (weights.size() != bonds.neighbor.size()) throw std::invalid_argument("collocation: one weight per bond expected");
+  Collocation c;
+  c.row_scale.assign(weights.size(), 0.0);
+  for (int p = 0; p < bonds.particle_count(); ++p)
+    for (int b = bonds.offsets[p]; b < bonds.offsets[p + 1]; ++b) {
+      const int q = bonds.neighbor[b], r = reverse_bond(bonds, p, q);
+      const std::string name = "bond " + std::to_string(p) + " -> " + std::to_string(q);
+      if (r < 0) throw std::invalid_argument("collocation: " + name + " has no reverse bond (horizons differ?)");
+      if (weights[b] == 0.0) {
+        if (weights[r] != 0.0) throw std::invalid_argument("collocation: " + name + " has weight 0 but its reverse does not");
+        continue;  // both zero: the pair does not interact
+      }
+      c.row_scale[b] = particles.volume[q] * weights[r] / (particles.volume[p] * weights[b]);
+    }
+  c.weight = std::move(weights);
+  return c;
+}
+
+void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int row_length, double* values) {
+  const int d = bonds.dim, b0 = bonds.offsets[p], L = bonds.family_size(p);
+  for (int k = 0; k < L; ++k) {
+    const double s = c.row_scale[b0 + k];
+    double* rows = values + static_cast<std::ptrdiff_t>(k + 1) * d * row_length;
+    for (int i = 0; i < d * row_length; ++i) rows[i] *= s;
+  }
+}
+
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description) {
+  const ReproducingSpace space = paper001_space(particles.dim);
+  CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space);
+  description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
+                            space.name, space.terms.size());
+  if (w.volume_families > 0)
+    description += fmt::format("; {} families not unisolvent keep the volume quadrature (particle {} first)",
+                               w.volume_families, w.first_volume_family);
+  return make_collocation(particles, bonds, std::move(w.weights));
+}
+
+}  // namespace pd

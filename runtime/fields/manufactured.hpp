@@ -1,0 +1,34 @@
+// Manufactured solutions of paper 001 §4.1 (plane strain, isotropic): a displacement
+// field and the body force density that makes it an equilibrium of eq. (1.1).
+//
+// Sign: the paper's f_1 = <2 lambda + 4 mu, 8 lambda + 16 mu> (eq. 4.2) and
+// f_2 = -2 (lambda + 2 mu) u_2 (eq. 4.4) are div(sigma), the opposite of eq. 1.1's
+// -div(sigma) = f. The runtime's equilibrium is internal force + body force = 0, so the
+// body force density here is b = -div(sigma) = -f_paper.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace pd {
+
+struct ManufacturedField {
+  std::string name;
+  std::array<double, 2> (*displacement)(double x, double y) = nullptr;
+  std::array<double, 2> (*div_stress)(double x, double y, double lambda, double mu) = nullptr;  // the paper's f
+
+  std::array<double, 2> body_force(double x, double y, double lambda, double mu) const {
+    const auto f = div_stress(x, y, lambda, mu);
+    return {-f[0], -f[1]};
+  }
+};
+
+// u_1 = <x^2, 4 y^2> (eqs. 4.1-4.2): the quadratic patch test.
+ManufacturedField paper001_u1();
+// u_2 = <sin x sin y, -cos x cos y> (eqs. 4.3-4.4): smooth, for the convergence order.
+ManufacturedField paper001_u2();
+
+// Plane-strain Lame parameters from Young's modulus and Poisson's ratio.
+std::array<double, 2> lame_from_young_poisson(double E, double nu);
+
+}  // namespace pd

@@ -1,0 +1,40 @@
+// A manufactured-solution solve of paper 001 §4 on the unit square: the lattice of
+// spacing h = 1/n perturbed by `perturbation` h, delta = horizon_ratio h, the exact
+// displacement imposed on every particle closer than layer_horizons * delta to the
+// boundary (the paper's Dirichlet layer of size delta), the body force of the field on
+// the others, one linear solve (the laws used are linear), and the RMS error of §4,
+//   ||e||_l2 = sqrt(sum_i |u_i - u(x_i)|^2 / N)   over the N solved particles.
+#pragma once
+
+#include <string>
+
+#include "fields/manufactured.hpp"
+
+namespace pd {
+
+struct ManufacturedSetup {
+  int n = 24;                    // particles per side
+  double horizon_ratio = 3.5;    // delta / h
+  double perturbation = 0.2;     // uniform, times h
+  int seed = 1;
+  double layer_horizons = 1.0;   // Dirichlet layer width in horizons
+  double lambda = 0.5, mu = 0.5;
+  std::string law = "lps_plane_strain";  // takes (lambda, mu)
+  std::string influence = "inv";         // K = 1/r up to a constant (the law divides by m)
+  bool obq = true;               // OBQ weights + collocation; false: the volume quadrature
+  bool odd_terms = false;        // OBQ space: paper001_odd_space instead of paper001_space
+  // 0: the error over all solved particles (the paper's); > 0: only over those at least
+  // this far from the boundary, a region that does not change with h.
+  double error_margin = 0;
+};
+
+struct ManufacturedResult {
+  double rms_error = 0;
+  int particles = 0, solved = 0, measured = 0;
+  double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
+};
+
+// Throws NotUnisolventError when a family that reaches a solved particle is not unisolvent.
+ManufacturedResult solve_manufactured(const ManufacturedField& field, const ManufacturedSetup& setup);
+
+}  // namespace pd

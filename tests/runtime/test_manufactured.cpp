@@ -1,0 +1,78 @@
+// Paper 001 §4.1 on small perturbed grids: the quadratic patch test u1 is reproduced to
+// rounding with OBQ weights (and not with the volume quadrature), u2 converges at second
+// order, and the body forces are -div(sigma) of their fields (finite differences).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fields/manufactured_solve.hpp"
+
+namespace {
+// div sigma by central differences of the plane-strain stress of the field.
+std::array<double, 2> div_stress_fd(const pd::ManufacturedField& f, double x, double y, double lambda, double mu) {
+  const double e = 1e-4;
+  auto stress = [&](double px, double py) {
+    auto g = [&](int c, int dir) {
+      const auto a = f.displacement(px + (dir == 0 ? e : 0), py + (dir == 1 ? e : 0));
+      const auto b = f.displacement(px - (dir == 0 ? e : 0), py - (dir == 1 ? e : 0));
+      return (a[c] - b[c]) / (2 * e);
+    };
+    const double div = g(0, 0) + g(1, 1);
+    return std::array<double, 3>{lambda * div + 2 * mu * g(0, 0), lambda * div + 2 * mu * g(1, 1), mu * (g(0, 1) + g(1, 0))};
+  };
+  const double E = 1e-3;
+  const auto sxp = stress(x + E, y), sxm = stress(x - E, y), syp = stress(x, y + E), sym = stress(x, y - E);
+  return {(sxp[0] - sxm[0]) / (2 * E) + (syp[2] - sym[2]) / (2 * E), (sxp[2] - sxm[2]) / (2 * E) + (syp[1] - sym[1]) / (2 * E)};
+}
+}  // namespace
+
+TEST(Manufactured, BodyForcesAreMinusTheDivergenceOfTheStress) {
+  for (const pd::ManufacturedField& f : {pd::paper001_u1(), pd::paper001_u2()})
+    for (double x : {0.1, 0.6})
+      for (double y : {0.3, 0.9}) {
+        const auto b = f.body_force(x, y, 0.7, 0.3), ref = div_stress_fd(f, x, y, 0.7, 0.3);
+        EXPECT_NEAR(b[0], -ref[0], 1e-5) << f.name;
+        EXPECT_NEAR(b[1], -ref[1], 1e-5) << f.name;
+      }
+}
+
+TEST(Manufactured, QuadraticPatchTestIsExactWithObqOnAPerturbedGrid) {
+  pd::ManufacturedSetup s;
+  s.n = 20;
+  EXPECT_LT(pd::solve_manufactured(pd::paper001_u1(), s).rms_error, 1e-10);
+  s.obq = false;  // the volume quadrature of the same cloud misses it by far
+  EXPECT_GT(pd::solve_manufactured(pd::paper001_u1(), s).rms_error, 1e-3);
+}
+
+TEST(Manufactured, PatchTestWithLambdaNotMuNeedsTheOddTermsInTheSpace) {
+  // At the paper's lambda = mu the dilatation term (lambda - mu) vanishes; otherwise
+  // theta of a quadratic field needs xi^3/|xi| integrated exactly, which paper001_space
+  // does not ask for (measured 7.3e-4 at 20^2, nu = 0.3).
+  pd::ManufacturedSetup s;
+  s.n = 20;
+  s.lambda = 0.7, s.mu = 0.3;
+  EXPECT_GT(pd::solve_manufactured(pd::paper001_u1(), s).rms_error, 1e-5);
+  // With the odd terms (21 functions) the one-face families of the outer layer have too
+  // few bonds; a layer of two horizons keeps every family that reaches a solved particle full.
+  s.odd_terms = true;
+  s.layer_horizons = 2;
+  EXPECT_LT(pd::solve_manufactured(pd::paper001_u1(), s).rms_error, 1e-10);
+}
+
+TEST(Manufactured, SmoothSolutionConvergesAtSecondOrder) {
+  // Measured orders 1.70 (24 -> 32) and 1.75 (32 -> 40), 1.87 at 48 -> 96
+  // (docs/paper001.md): pre-asymptotic on small grids, where the solved region grows
+  // as the delta-wide layer shrinks.
+  pd::ManufacturedSetup s;
+  double previous = 0;
+  int previous_n = 0;
+  for (int n : {24, 32, 40}) {
+    s.n = n;
+    const double e = pd::solve_manufactured(pd::paper001_u2(), s).rms_error;
+    if (previous_n > 0) {
+      const double order = std::log(previous / e) / std::log(static_cast<double>(n) / previous_n);
+      EXPECT_GE(order, 1.65) << previous_n << " -> " << n;
+    }
+    previous = e, previous_n = n;
+  }
+}
