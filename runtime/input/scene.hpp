@@ -87,6 +87,12 @@ struct SolverSpec {
   long long preconditioner_max_nonzeros = 40'000'000;
 };
 
+// output.j_integral: a rectangular contour for the nonlocal J-integral (post/j_integral.hpp).
+struct JContour {
+  Point min{}, max{};
+  std::string where;  // "file:line: output.j_integral[i]", for messages
+};
+
 struct OutputSpec {
   std::string directory = "out";
   bool vtu = true;
@@ -94,6 +100,7 @@ struct OutputSpec {
   // Paper 000 eq. (49): also write the displacement averaged over each family with this
   // influence function (and its field error). Empty: no smoothing.
   std::string smoothing_influence;
+  std::vector<JContour> j_integral;  // static 2D runs: J on each contour (paper 004)
 };
 
 struct Probe {

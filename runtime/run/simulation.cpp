@@ -234,6 +234,10 @@ RunSummary Simulation::run(bool write) {
     log_(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene_.reference->solution, summary_.field_error));
   }
   if (!scene_.output.smoothing_influence.empty()) smooth();
+  for (const JContour& c : scene_.output.j_integral) {
+    summary_.j_integrals.push_back(j_integral(*assembler_, u_.data(), scene_.h, c));
+    log_(j_integral_line(summary_.j_integrals.back()));
+  }
   for (const auto& p : summary_.probes)
     log_(p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
                                        p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))

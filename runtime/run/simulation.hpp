@@ -11,6 +11,7 @@
 #include "assembly/assembler.hpp"
 #include "damage/critical_stretch.hpp"
 #include "input/scene.hpp"
+#include "post/j_integral.hpp"
 #include "run/dynamics_report.hpp"
 #include "run/effects.hpp"
 #include "solve/newton.hpp"
@@ -47,6 +48,7 @@ struct RunSummary {
   std::string smoothing;
   double oscillation = 0;
   double smoothed_field_error = 0;
+  std::vector<JIntegralResult> j_integrals;  // output.j_integral (paper 004)
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
   std::string text() const;  // the run summary for the log
