@@ -82,10 +82,11 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   for (const auto& e : effects_) summary_.effects.push_back(e->describe());
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
-    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
+    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta(), *law,
+                                       assembler_->inputs().params[0], influence->weight);
     damage_ = std::make_unique<CriticalStretchDamage>(particles_, bonds_, s0, scene_.damage->tension_only);
     if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(particles_, short_bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim) +
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim, *law) +
                                fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
   }
   u_.assign(static_cast<std::size_t>(particles_.size()) * particles_.dim, 0.0);
