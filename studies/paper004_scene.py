@@ -25,7 +25,8 @@ def contour_around_tip(half):
     return {"min": [NOTCH - half, L / 2 - half], "max": [NOTCH + half, L / 2 + half]}
 
 
-def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_2d", directory="out/paper004"):
+def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_2d", directory="out/paper004",
+          notch_length=NOTCH, csv=False):
     n = count_for(delta, m)
     h = L / n
     lines = [
@@ -38,7 +39,7 @@ def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_
         "materials:\n  - {name: aluminium, E: 72.0e9, nu: 0.3333333333333333, plane: stress}",
     ]
     if notch:
-        lines.append(f"cracks:\n  - segment: [[0.0, {L / 2}], [{NOTCH}, {L / 2}]]")
+        lines.append(f"cracks:\n  - segment: [[0.0, {L / 2}], [{notch_length!r}, {L / 2}]]")
     # one particle each: the boxes are one spacing wide, the particle at their centre
     right = f"{{box: {{min: [{L - h}, {L / 2 - h}], max: [{L}, {L / 2}]}}}}"
     left = f"{{box: {{min: [0, {L / 2 - h}], max: [{h}, {L / 2}]}}}}"
@@ -55,7 +56,7 @@ def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_
     lines.append("boundary:\n" + "\n".join(bc))
     cl = ", ".join(f"{{contour: {{min: [{c['min'][0]!r}, {c['min'][1]!r}], max: [{c['max'][0]!r}, {c['max'][1]!r}]}}}}"
                    for c in contours)
-    lines.append(f"output: {{directory: {directory}, vtu: false, csv: false, j_integral: [{cl}]}}")
+    lines.append(f"output: {{directory: {directory}, vtu: false, csv: {str(csv).lower()}, j_integral: [{cl}]}}")
     return "\n".join(lines) + "\n"
 
 

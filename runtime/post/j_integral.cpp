@@ -62,7 +62,8 @@ std::array<double, 2> dudx1(const Lattice& lat, const Particles& p, const double
 }
 }  // namespace
 
-JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour) {
+JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour,
+                           const double* external) {
   const abi::KernelVariant& kernels = assembler.variant();
   const std::string& where = contour.where;
   if (kernels.energy == nullptr)
@@ -123,18 +124,25 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
       if (inside[q]) ++res.crossing_bonds;
     }
   }
+  if (external != nullptr)
+    for (int i = 0; i < n; ++i)
+      if (inside[i]) {
+        const std::array<double, 2> di = dudx1(lat, p, u, i, h);
+        res.load_term += external[2 * i] * di[0] + external[2 * i + 1] * di[1];
+      }
   res.bond_term = general;
-  res.J = res.contour_term - general;
-  res.pairwise = res.contour_term - pair;
+  res.J = res.contour_term - general - res.load_term;
+  res.pairwise = res.contour_term - pair - res.load_term;
   if (!std::isfinite(res.J) || !std::isfinite(res.pairwise))
     throw std::runtime_error(fmt::format("{}: the J-integral is not finite (law {})", where, assembler.law().name));
   return res;
 }
 
 std::string j_integral_line(const JIntegralResult& r) {
-  return fmt::format("  J-integral (paper 004) on [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}]: J = {:.9g} (contour {:.9g}, bonds {:.9g}; "
-                     "pairwise eq. 21: {:.9g}; {} particles inside, {} bonds crossing)",
-                     r.edge_min[0], r.edge_max[0], r.edge_min[1], r.edge_max[1], r.J, r.contour_term, r.bond_term, r.pairwise,
+  return fmt::format("  J-integral (paper 004) on [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}]: J = {:.9g} (contour {:.9g}, bonds {:.9g}, "
+                     "loads {:.9g}; pairwise eq. 21: {:.9g}; {} particles inside, {} bonds crossing)",
+                     r.edge_min[0], r.edge_max[0], r.edge_min[1], r.edge_max[1], r.J, r.contour_term, r.bond_term,
+                     r.load_term, r.pairwise,
                      r.inside, r.crossing_bonds);
 }
 
@@ -146,6 +154,7 @@ nlohmann::ordered_json j_integral_json(const std::vector<JIntegralResult>& resul
                     {"J", r.J},
                     {"contour_term", r.contour_term},
                     {"bond_term", r.bond_term},
+                    {"load_term", r.load_term},
                     {"pairwise_eq21", r.pairwise},
                     {"particles_inside", r.inside},
                     {"crossing_bonds", r.crossing_bonds}});

@@ -37,7 +37,8 @@ struct JIntegralResult {
   Point edge_min{}, edge_max{};  // the contour actually integrated (halfway between lattice lines)
   double contour_term = 0;   // sum W n1 dS
   double bond_term = 0;      // the double sum over bonds leaving R
-  double J = 0;              // contour_term - bond_term
+  double load_term = 0;      // sum_{i in R} b_i . du_i/dx1 (external loads inside R)
+  double J = 0;              // contour_term - bond_term - load_term
   double pairwise = 0;       // contour_term - (eq. 21 with the pair force), = J for bond-based laws
   int inside = 0;            // particles in R
   long long crossing_bonds = 0;  // bonds from R to Q (each once)
@@ -47,7 +48,13 @@ struct JIntegralResult {
 // the cloud is not a uniform 2D lattice of spacing h, or the box holds no particle.
 // A contour closer than delta to the body's boundary is computed as given (the paper's
 // contour (c) is one horizon from it); the skin effect there is the user's to judge.
-JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour);
+//
+// `external` (may be null): the nodal external forces b_i at u ([n*2], e.g. crack-face
+// pressure). Loads on particles inside R add - sum_{i in R} b_i . du_i/dx1 (equilibrium
+// with a body force in the derivation; the classical loaded-crack-face term), which keeps
+// J path independent when the crack faces inside the contour are loaded.
+JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour,
+                           const double* external = nullptr);
 
 // One line for the run log, and the summary.json entries (docs/scene_format.md).
 std::string j_integral_line(const JIntegralResult& r);

@@ -235,8 +235,11 @@ RunSummary Simulation::run(bool write) {
     log_(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene_.reference->solution, summary_.field_error));
   }
   if (!scene_.output.smoothing_influence.empty()) smooth();
+  std::vector<double> external(scene_.output.j_integral.empty() ? 0 : u_.size(), 0.0);
+  for (const auto& e : effects_)
+    if (!external.empty()) e->add_forces(u_.data(), 1.0, external.data());
   for (const JContour& c : scene_.output.j_integral) {
-    summary_.j_integrals.push_back(j_integral(*assembler_, u_.data(), scene_.h, c));
+    summary_.j_integrals.push_back(j_integral(*assembler_, u_.data(), scene_.h, c, external.data()));
     log_(j_integral_line(summary_.j_integrals.back()));
   }
   for (const auto& p : summary_.probes)
