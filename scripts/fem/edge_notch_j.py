@@ -89,13 +89,14 @@ def main():
     ap.add_argument("--order", type=int, default=2)
     ap.add_argument("--double", action="store_true")
     ap.add_argument("--da", type=float, default=2e-4)
+    ap.add_argument("--a", type=float, default=0.05, help="notch length (m)")
     ap.add_argument("--check", type=float, help="exit 1 unless J is within --tolerance of this value")
     ap.add_argument("--tolerance", type=float, default=0.005)
     a = ap.parse_args()
-    a0 = 0.05
+    a0 = a.a
     U_minus, U_plus = energy(a0 - a.da, a.n, a.order, a.double), energy(a0 + a.da, a.n, a.order, a.double)
     J = (U_plus - U_minus) / (2 * a.da)
-    print(f"{'double' if a.double else 'single'} edge notch: n = {a.n}, order {a.order}, da = {a.da:g} m: "
+    print(f"{'double' if a.double else 'single'} edge notch a = {a0:g} m: n = {a.n}, order {a.order}, da = {a.da:g} m: "
           f"U = {0.5 * (U_plus + U_minus):.9g} J/m, J = {J:.6f} Pa m")
     if a.check is not None and abs(J - a.check) > a.tolerance * abs(a.check):
         print(f"FAIL: J = {J:.6f} differs from {a.check} by more than {a.tolerance:.1%}")

@@ -87,3 +87,51 @@ TEST(JIntegral, ContourIsReportedOnTheLattice) {
   EXPECT_NEAR(j[0].edge_max[1], 0.8, 1e-12);
   EXPECT_EQ(j[0].inside, 18 * 18);
 }
+
+namespace {
+// scenes/paper004_griffith.yaml on a box of 4 half-lengths (the collar carries the exact
+// Westergaard field, so the box size only moves the collar), delta = 3h.
+std::string griffith(const std::string& law, int count) {
+  return fmt::format(R"(dimension: 2
+domain: {{box: {{min: [-0.7, -0.7], max: [0.7, 0.7]}}, count: {}}}
+horizon: {{ratio: 3.0}}
+law: {}
+influence: const
+materials: [{{E: 60, nu: 0.25, plane: strain}}]
+boundary:
+  - {{region: {{collar: {{horizons: 1}}}}, field: {{solution: westergaard, pressure: 0.1, half_length: 0.35}}}}
+cracks: [{{segment: [[-0.35, 0], [0.35, 0]], pressure: 0.1}}]
+output: {{j_integral: [{{contour: {{min: [0.2, -0.15], max: [0.5, 0.15]}}}}, {{contour: {{min: [0.1, -0.3], max: [0.6, 0.3]}}}}]}}
+)",
+                     count, law);
+}
+}  // namespace
+
+// The Griffith check: J of the pressurised crack tends to K_I^2 / E' = p^2 pi a (1 - nu^2) / E
+// as delta -> 0. studies/paper004_griffith.py (docs/paper004.md) measured, bond-based conical
+// at delta = 3h on the 2.8-wide box: -24.0 % at delta/a = 0.30, -18.8 % at 0.15, -14.9 % at
+// 0.10. Here, on the 1.4-wide box at delta/a = 0.30 and 0.15 (one run): bond-based -27.7 % and
+// -21.3 %, Silling -31.3 % and -24.0 %; the bounds are those with about 10 % margin, and each
+// halving of delta must cut the error by at least 15 % (measured: 23 %). The crack-face
+// pressure inside the contours enters through the load term; without it J would not be path
+// independent.
+TEST(JIntegral, PressurisedCrackTendsToGriffith) {
+  const double exact = 0.1 * 0.1 * M_PI * 0.35 * (1 - 0.25 * 0.25) / 60;
+  for (const char* law : {"bond_based_conical_2d", "silling_plane_strain"}) {
+    double previous = 0;
+    // Silling's convergence is the study's (docs/paper004.md); here its coarse point only.
+    const bool pairwise = std::string(law) == "bond_based_conical_2d";
+    for (const auto [count, bound] : {std::pair{40, 0.35}, std::pair{80, 0.27}}) {
+      if (!pairwise && count > 40) continue;
+      const auto j = run(griffith(law, count));
+      EXPECT_NEAR(j[0].J, j[1].J, 0.005 * j[1].J) << law << " count " << count;
+      EXPECT_NE(j[0].load_term, 0.0);
+      const double error = std::fabs(j[1].J - exact) / exact;
+      EXPECT_LT(error, bound) << law << " count " << count << ": J " << j[1].J << " exact " << exact;
+      if (previous > 0) {
+        EXPECT_LT(error, 0.85 * previous) << law << ": no convergence from " << previous << " to " << error;
+      }
+      previous = error;
+    }
+  }
+}
