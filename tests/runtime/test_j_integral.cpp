@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "input/scene.hpp"
+#include "input/yaml_keys.hpp"
 #include "post/j_integral.hpp"
 #include "run/simulation.hpp"
 
@@ -133,5 +134,20 @@ TEST(JIntegral, PressurisedCrackTendsToGriffith) {
       }
       previous = error;
     }
+  }
+}
+
+// Bad input: the message names the file, the line and the key.
+TEST(JIntegral, InvertedContourIsASceneErrorWithItsLine) {
+  std::string yaml = plate("bond_based_conical_2d", 10, true, {0.3});
+  const auto at = yaml.find("output:");
+  ASSERT_NE(at, std::string::npos);
+  yaml = yaml.substr(0, at) + "output: {j_integral: [{contour: {min: [0.8, 0.2], max: [0.2, 0.8]}}]}\n";
+  try {
+    pd::parse_scene(yaml, "plate.yaml");
+    FAIL() << "an inverted contour was accepted";
+  } catch (const pd::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("plate.yaml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("j_integral[0]"), std::string::npos) << e.what();
   }
 }
