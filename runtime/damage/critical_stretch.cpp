@@ -1,6 +1,8 @@
 // Critical-stretch bond breaking and damage per particle.
 #include "damage/critical_stretch.hpp"
 
+#include "damage/bond_fracture_energy.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -8,8 +10,12 @@
 
 namespace pd {
 
-double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, int dim, double delta) {
+double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, int dim, double delta,
+                        const abi::LawDescriptor& law, const std::vector<double>& params,
+                        double (*weight)(double r, double delta)) {
   if (spec.critical_stretch > 0) return spec.critical_stretch;
+  if (is_pairwise_law(law) && law.intact.energy != nullptr)
+    return std::sqrt(spec.fracture_energy / pairwise_fracture_energy_per_stretch2(law, params, weight, delta));
   const IsotropicElastic e =
       dim == 2 && material.plane == PlaneAssumption::Stress ? material.elastic.plane_stress_equivalent() : material.elastic;
   if (dim == 2) {
@@ -19,9 +25,11 @@ double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, in
   return std::sqrt(5 * spec.fracture_energy / (9 * e.K * delta));
 }
 
-std::string critical_stretch_origin(const DamageSpec& spec, int dim) {
+std::string critical_stretch_origin(const DamageSpec& spec, int dim, const abi::LawDescriptor& law) {
   if (spec.fracture_energy <= 0) return "";
-  return fmt::format(" (from G0 = {:.6g}, PMB {}D formula)", spec.fracture_energy, dim);
+  if (is_pairwise_law(law) && law.intact.energy != nullptr)
+    return fmt::format(" (from G0 = {:.6g}, the bond sum of law {}'s micromodulus)", spec.fracture_energy, law.name);
+  return fmt::format(" (from G0 = {:.6g}, PMB {}D formula: an approximation for a state-based law)", spec.fracture_energy, dim);
 }
 
 CriticalStretchDamage::CriticalStretchDamage(const Particles& particles, Bonds& bonds, double s0, bool tension_only)

@@ -9,22 +9,29 @@
 #include <vector>
 
 #include "input/scene.hpp"
+#include "kernel_abi.hpp"
 #include "particles.hpp"
 
 namespace pd {
 
-// The critical stretch of a damage spec: given directly, or from the fracture energy G0
-// with the PMB formulas for the constant micromodulus the bond-based laws match
+// The critical stretch of a damage spec: given directly, or from the fracture energy G0.
+// For a pairwise (bond-based) law, from that law's own micromodulus, read off its energy
+// kernel (damage/bond_fracture_energy.hpp): s0 = sqrt(G0 / g), G0 = g s0^2; for the
+// conical micromodulus this is G0 = 2.4 kappa delta s0^2 / pi, not the constant one's
+// 3 kappa delta s0^2 / pi. For a state-based law no bond sum gives G0 (a broken bond's
+// energy depends on the dilatation of both families); s0 then comes from the PMB
+// relations of the constant micromodulus matched to the same bulk modulus
 // (docs/laws.md: c = 12 kappa / (pi delta^3) in 2D, 18 K / (pi delta^4) in 3D):
-//   2D: G0 = c s0^2 delta^4 / 4  ->  s0 = sqrt(pi G0 / (3 kappa delta)),
-//       kappa = lambda + G of the (plane-strain equivalent) material; for plane stress
-//       with nu = 1/3 this is Ha & Bobaru's s0 = sqrt(4 pi G0 / (9 E delta));
-//   3D: G0 = pi c s0^2 delta^5 / 10  ->  s0 = sqrt(5 G0 / (9 K delta)) (Silling & Askari 2005).
-// G0 is the work to break every bond crossing a unit crack area (length in 2D). For
-// state-based laws the same s0 is a PMB-calibrated approximation, not an exact match.
-double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, int dim, double delta);
-// For the run log: "" when s0 was given, " (from G0 = ..., PMB 2D formula)" otherwise.
-std::string critical_stretch_origin(const DamageSpec& spec, int dim);
+//   2D: s0 = sqrt(pi G0 / (3 kappa delta)), kappa = lambda + G of the (plane-strain
+//       equivalent) material; 3D: s0 = sqrt(5 G0 / (9 K delta)) (Silling & Askari 2005),
+// an approximation the run log names. G0 is the work to break every bond crossing a
+// unit crack length (area in 3D). `params` are the law's parameters for `material`.
+double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, int dim, double delta,
+                        const abi::LawDescriptor& law, const std::vector<double>& params,
+                        double (*weight)(double r, double delta));
+// For the run log: "" when s0 was given, " (from G0 = ..., the law's micromodulus)" or
+// " (from G0 = ..., PMB 2D formula: an approximation for a state-based law)" otherwise.
+std::string critical_stretch_origin(const DamageSpec& spec, int dim, const abi::LawDescriptor& law);
 
 class CriticalStretchDamage {
  public:

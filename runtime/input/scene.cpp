@@ -129,6 +129,27 @@ const std::vector<FieldParameters> kFieldParameters{
     {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}}};
 const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
 
+// output.j_integral: a list of {contour: {min, max}} (post/j_integral.hpp, paper 004).
+std::vector<JContour> read_j_contours(const YamlAt& list, int dim) {
+  require_list(list);
+  if (dim != 2) list.fail("the J-integral is implemented in 2D only");
+  std::vector<JContour> out;
+  for (std::size_t i = 0; i < list.node.size(); ++i) {
+    const YamlAt item = list.element(list.node[i], i);
+    MapReader m(item);
+    MapReader c(m.get("contour"));
+    JContour j;
+    j.where = item.location();
+    j.min = to_point(c.get("min"), dim);
+    j.max = to_point(c.get("max"), dim);
+    if (!(j.min[0] < j.max[0] && j.min[1] < j.max[1])) c.at().fail("min must be below max in x and y");
+    c.finish();
+    m.finish();
+    out.push_back(j);
+  }
+  return out;
+}
+
 FieldSpec read_field(const YamlAt& at) {
   MapReader m(at);
   FieldSpec f;
@@ -414,6 +435,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
         sm.get("influence").fail("'" + s.output.smoothing_influence + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
       sm.finish();
     }
+    if (o.has("j_integral")) s.output.j_integral = read_j_contours(o.get("j_integral"), s.dim);
     o.finish();
   }
   if (m.has("probes")) {
@@ -440,6 +462,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
     if (s.dynamics && !s.damage->max_resolves_where.empty())
       throw SceneError(s.damage->max_resolves_where + ": max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds every step");
   }
+  if (s.dynamics && !s.output.j_integral.empty())
+    m.get("output").fail("j_integral post-processes the static solution; dynamic scenes do not support it");
   if (s.dynamics && !s.output.smoothing_influence.empty())
     m.get("output").fail("smoothing post-processes the static solution; dynamic scenes do not support it yet");
   if (!s.dynamics) {

@@ -67,6 +67,12 @@ struct Crack {
   std::string time_where;  // "file:line: cracks[i].time_function"
 };
 
+// output.j_integral: a rectangular contour for the nonlocal J-integral (post/j_integral.hpp).
+struct JContour {
+  Point min{}, max{};
+  std::string where;  // "file:line: output.j_integral[i]", for messages
+};
+
 struct OutputSpec {
   std::string directory = "out";
   bool vtu = true;
@@ -74,6 +80,7 @@ struct OutputSpec {
   // Paper 000 eq. (49): also write the displacement averaged over each family with this
   // influence function (and its field error). Empty: no smoothing.
   std::string smoothing_influence;
+  std::vector<JContour> j_integral;  // static 2D runs: J on each contour (paper 004)
 };
 
 struct Probe {

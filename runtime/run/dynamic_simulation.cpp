@@ -69,9 +69,10 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   }
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
-    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
+    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta(), *law,
+                                       model_.params[0], influence->weight);
     damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, model_.bonds, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim));
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim, *law));
   }
   setup_constraints();
   probe_ids_ = probe_particles(scene_, model_.particles);

@@ -63,6 +63,7 @@ std::string RunSummary::json() const {
     j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
                     {"solve", solve_seconds}, {"output", output_seconds}};
   }
+  if (!j_integrals.empty()) j["j_integral"] = j_integral_json(j_integrals);
   nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
   for (const auto& p : probes) {
     nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
@@ -116,6 +117,7 @@ std::string RunSummary::text() const {
   if (!smoothing.empty())
     s += fmt::format("smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
                      has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");
+  for (const auto& r : j_integrals) s += j_integral_line(r).substr(2) + "\n";
   s += "probes:\n";
   for (const auto& p : probes)
     s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)

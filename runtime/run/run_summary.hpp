@@ -7,6 +7,7 @@
 
 #include "input/scene.hpp"
 #include "model/model.hpp"
+#include "post/j_integral.hpp"
 #include "run/dynamics_report.hpp"
 #include "solve/newton.hpp"
 
@@ -40,6 +41,7 @@ struct RunSummary {
   std::string smoothing;
   double oscillation = 0;
   double smoothed_field_error = 0;
+  std::vector<JIntegralResult> j_integrals;  // output.j_integral (paper 004)
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
   // The scene, law, influence and count fields from the model.

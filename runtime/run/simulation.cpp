@@ -67,10 +67,11 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   for (const auto& e : effects_) summary_.effects.push_back(e->describe());
   if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
   if (scene_.damage) {
-    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta());
+    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta(), *law,
+                                       model_.params[0], influence->weight);
     damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, model_.bonds, s0, scene_.damage->tension_only);
     if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, short_bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim) +
+    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim, *law) +
                                fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
   }
   u_.assign(static_cast<std::size_t>(model_.particles.size()) * model_.particles.dim, 0.0);
@@ -181,6 +182,13 @@ RunSummary Simulation::run(bool write) {
     log_(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene_.reference->solution, summary_.field_error));
   }
   if (!scene_.output.smoothing_influence.empty()) smooth();
+  std::vector<double> external(scene_.output.j_integral.empty() ? 0 : u_.size(), 0.0);
+  for (const auto& e : effects_)
+    if (!external.empty()) e->add_forces(u_.data(), 1.0, external.data());
+  for (const JContour& c : scene_.output.j_integral) {
+    summary_.j_integrals.push_back(j_integral(*model_.assembler, u_.data(), scene_.h, c, external.data()));
+    log_(j_integral_line(summary_.j_integrals.back()));
+  }
   for (const auto& p : summary_.probes) log_(probe_log_line(p));
   if (write) write_outputs();
   return summary_;
