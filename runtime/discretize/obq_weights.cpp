@@ -81,7 +81,8 @@ CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, cons
                                bonds.family_size(p), bonds.delta[p], p, particles.position(p));
         std::copy(w.begin(), w.end(), out.weights.begin() + begin);
       } catch (const NotUnisolventError& e) {
-        use_volume = volume[p] = 1;
+        volume[p] = 1;
+        use_volume = true;
         if (!fall_back) {
 #pragma omp critical(obq_first_error)
           if (!first_error || e.particle() < first_error->particle()) first_error = e;

@@ -69,7 +69,8 @@ double cell_distance(const double* c, int dim, double h) {
 
 double quadrature_reach(Quadrature q, double delta, double h, int dim) {
   switch (q) {
-    case Quadrature::Volume: return delta;
+    case Quadrature::Volume:
+    case Quadrature::Obq: return delta;
     case Quadrature::PartialLinear: return delta + 0.5 * h;
     case Quadrature::PartialExact: return delta + 0.5 * h * std::sqrt(static_cast<double>(dim));
   }
@@ -81,7 +82,8 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
   for (int i = 0; i < dim; ++i) r2 += xi[i] * xi[i];
   const double r = std::sqrt(r2);
   switch (q) {
-    case Quadrature::Volume: return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
+    case Quadrature::Volume:
+    case Quadrature::Obq: return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
     case Quadrature::PartialLinear: return linear_volume_factor(r, delta, h);
     case Quadrature::PartialExact:
       if (cell_distance(xi, dim, h) >= delta) return 0.0;
@@ -94,7 +96,8 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
 
 Bonds find_quadrature_bonds(const Particles& p, double delta, double h, Quadrature q,
                             double (*influence)(double, double)) {
-  if (q == Quadrature::Volume) return find_bonds(p, delta, influence);
+  // OBQ weights replace the volumes of the centre-inclusion bonds (assembly/collocation.hpp).
+  if (q == Quadrature::Volume || q == Quadrature::Obq) return find_bonds(p, delta, influence);
   const int d = p.dim;
   Bonds all = find_bonds(p, quadrature_reach(q, delta, h, d), influence);
   Bonds b;

@@ -36,7 +36,7 @@ std::string pd_build_identity() {
 CheckpointIdentity checkpoint_identity(const Scene& scene, const Particles& particles, const Bonds& bonds, double dt) {
   CheckpointIdentity id;
   id["binary"] = pd_build_identity();
-  id["method"] = scene.dynamics ? scene.dynamics->method : "static";
+  id["method"] = scene.dynamics ? std::string(name_of(scene.dynamics->method)) : std::string("static");
   id["law"] = scene.law;
   id["influence"] = scene.influence;
   id["dimension"] = std::to_string(scene.dim);

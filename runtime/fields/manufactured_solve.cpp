@@ -108,7 +108,7 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.assembly_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  auto solver = make_sparse_solver(assembler.symmetric() ? "cholmod" : "umfpack", {});
+  auto solver = make_sparse_solver(assembler.symmetric() ? LinearMethod::cholmod : LinearMethod::umfpack, {});
   solver->analyse(A);
   if (!solver->factor(A)) throw std::runtime_error("solve_manufactured: " + solver->failure());
   Eigen::VectorXd u(unknowns);

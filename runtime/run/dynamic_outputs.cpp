@@ -79,7 +79,7 @@ std::string DynamicSimulation::series_csv_row(const SeriesRow& r) const {
 
 void DynamicSimulation::restore(const std::string& path, int& step, std::vector<double>& scalars) {
   const Checkpoint c = read_checkpoint(path);
-  check_checkpoint_belongs(path, c, checkpoint_identity(scene_, particles_, bonds_, mass_.empty() ? 0.0 : dt_), scene_.dynamics->steps);
+  check_checkpoint_belongs(path, c, checkpoint_identity(scene_, model_.particles, model_.bonds, mass_.empty() ? 0.0 : dt_), scene_.dynamics->steps);
   auto array = [&](const char* name, std::size_t size) -> const std::vector<double>& {
     const auto it = c.arrays.find(name);
     if (it == c.arrays.end() || it->second.size() != size)
@@ -114,7 +114,7 @@ void DynamicSimulation::restore(const std::string& path, int& step, std::vector<
 void DynamicSimulation::save_checkpoint(int step, const std::vector<double>& scalars) {
   Checkpoint c;
   c.step = step;
-  c.identity = checkpoint_identity(scene_, particles_, bonds_, mass_.empty() ? 0.0 : dt_);
+  c.identity = checkpoint_identity(scene_, model_.particles, model_.bonds, mass_.empty() ? 0.0 : dt_);
   c.arrays["u"] = u_;
   if (!v_.empty()) c.arrays["v"] = v_;
   c.arrays["alpha"] = model_.bonds.alpha;

@@ -8,7 +8,8 @@
 
 namespace {
 // tests/model/<this file> -> the repository's scenes/ folder.
-const std::filesystem::path kScenes = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "scenes";
+// From the build (tests/CMakeLists.txt): __FILE__ is relative under a ccache base_dir.
+const std::filesystem::path kScenes = std::filesystem::path(PD_SOURCE_DIR) / "scenes";
 }  // namespace
 
 TEST(ExampleScenes, EveryScenePartitionsIntoNonEmptyNodeSets) {

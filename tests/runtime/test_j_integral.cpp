@@ -122,7 +122,7 @@ TEST(JIntegral, PressurisedCrackTendsToGriffith) {
     double previous = 0;
     // Silling's convergence is the study's (docs/paper004.md); here its coarse point only.
     const bool pairwise = std::string(law) == "bond_based_conical_2d";
-    for (const auto [count, bound] : {std::pair{40, 0.35}, std::pair{80, 0.27}}) {
+    for (const auto& [count, bound] : {std::pair{40, 0.35}, std::pair{80, 0.27}}) {
       if (!pairwise && count > 40) continue;
       const auto j = run(griffith(law, count));
       EXPECT_NEAR(j[0].J, j[1].J, 0.005 * j[1].J) << law << " count " << count;

@@ -60,6 +60,8 @@ TEST(PartialVolumeEnergy, ExactAreasCutTheWorstErrorOfTheConstantMicromodulus) {
                   whole, linear, exact);
       worst_whole = std::max(worst_whole, whole), worst_exact = std::max(worst_exact, exact);
     }
-    if (std::string(name) == "bond_based_constant_2d") EXPECT_LT(worst_exact, worst_whole) << name;
+    if (std::string(name) == "bond_based_constant_2d") {
+      EXPECT_LT(worst_exact, worst_whole) << name;
+    }
   }
 }
