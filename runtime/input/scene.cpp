@@ -381,6 +381,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (s.dim == 2 && crack.points[0] == crack.points[1]) pts.fail("the two points coincide");
       if (s.dim == 3) check_crack_polygon(pts, crack.points);
       crack.pressure = c.number("pressure", 0.0);
+      if (c.has("tips") && s.dim == 3) c.get("tips").fail("the tip rule is for 2D cracks (segments)");
+      crack.tips = c.choice("tips", "cut", {"cut", "kept"}) == "kept" ? CrackTips::kept : CrackTips::cut;
       if (c.has("time_function")) {
         const YamlAt tf = c.get("time_function");
         if (crack.pressure == 0) tf.fail("a time function scales the crack pressure: give pressure");
