@@ -105,6 +105,10 @@ struct Probe {
   Region region;
   int component = 0;
   std::optional<FieldSpec> reference;  // analytic field to compare the mean against
+  // Where the reference is taken (docs/scene_format.md, `reference_at`): the region's
+  // point (the paper's, default), an explicit point, or the mean over the particles.
+  enum class ReferenceAt { region, point, particles } reference_at = ReferenceAt::region;
+  Point reference_point{};
   std::string where;
 };
 

@@ -11,6 +11,7 @@
 
 #include "discretize/discretization.hpp"
 #include "discretize/family_quality.hpp"
+#include "post/probe_reference.hpp"
 #include "run/body_setup.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
@@ -347,10 +348,9 @@ std::vector<ProbeResult> DynamicSimulation::evaluate_probes() const {
     if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene_.materials[0].elastic);
     for (int p : probe_ids_[k]) {
       r.value += u_[static_cast<std::size_t>(p) * particles_.dim + pr.component];
-      if (field) r.reference += field->displacement(particles_.position(p))[pr.component];
     }
+    if (field) r.reference = probe_reference(pr, *field, probe_ids_[k], particles_, scene_);
     r.value /= r.particles;
-    r.reference /= r.particles;
     r.has_reference = static_cast<bool>(field);
     r.error = std::fabs(r.value - r.reference);
     out.push_back(r);

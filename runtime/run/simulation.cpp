@@ -1,6 +1,7 @@
 // The static run driver.
 #include "run/simulation.hpp"
 
+#include "post/probe_reference.hpp"
 #include "run/solver_path.hpp"
 
 #include <fmt/core.h>
@@ -149,10 +150,9 @@ std::vector<ProbeResult> Simulation::evaluate_probes() const {
     if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene_.materials[0].elastic);
     for (int p : ids) {
       r.value += u_[p * particles_.dim + pr.component];
-      if (field) r.reference += field->displacement(particles_.position(p))[pr.component];
     }
+    if (field) r.reference = probe_reference(pr, *field, ids, particles_, scene_);
     r.value /= static_cast<double>(ids.size());
-    r.reference /= static_cast<double>(ids.size());
     r.has_reference = static_cast<bool>(field);
     r.error = std::fabs(r.value - r.reference);
     out.push_back(r);
