@@ -2,6 +2,7 @@
 #include "run/simulation.hpp"
 
 #include "post/probe_reference.hpp"
+#include "post/stability_warning.hpp"
 #include "run/solver_path.hpp"
 
 #include <fmt/core.h>
@@ -228,6 +229,7 @@ RunSummary Simulation::run(bool write) {
       throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / particles_.dim, summary_.law));
   u_.assign(u.data(), u.data() + u.size());
   summary_.probes = evaluate_probes();
+  log_zero_energy_content(particles_, bonds_, u_, summary_.law, log_);
   if (scene_.reference) {
     summary_.has_field_error = true;
     summary_.field_error = field_error(*scene_.reference, u_);
