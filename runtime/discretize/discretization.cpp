@@ -1,4 +1,4 @@
-// Lattice discretisation, cell-list neighbour search, crack cutting.
+// Lattice discretisation, cell-list neighbour search (crack cutting: crack_cut.cpp).
 #include "discretize/discretization.hpp"
 
 #include "input/yaml_keys.hpp"
@@ -183,79 +183,6 @@ double mean_short_family_size(const Bonds& b, double short_delta, double (*influ
   for (int k = 0; k < b.bond_count(); ++k)
     count += b.length[k] <= reach && influence(b.length[k], short_delta) > negligible_weight_fraction * largest;
   return static_cast<double>(count) / n;
-}
-
-namespace {
-double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
-
-// Bond pq crosses crack ab (2D): p and q strictly on opposite sides of the crack's line
-// (a particle on the line is on neither side), and the crossing point on the closed
-// crack segment (a bond through a crack tip is cut). Both tests use sign products, so
-// the answer does not depend on the order of p and q.
-bool segments_cross(const double* p, const double* q, const Point& a, const Point& b) {
-  const double d1 = cross2(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1]);
-  const double d2 = cross2(b[0] - a[0], b[1] - a[1], q[0] - a[0], q[1] - a[1]);
-  const double d3 = cross2(q[0] - p[0], q[1] - p[1], a[0] - p[0], a[1] - p[1]);
-  const double d4 = cross2(q[0] - p[0], q[1] - p[1], b[0] - p[0], b[1] - p[1]);
-  const auto sign = [](double v) { return (v > 0) - (v < 0); };
-  return sign(d1) * sign(d2) < 0 && sign(d3) * sign(d4) <= 0;
-}
-
-// Segment pq against a planar polygon (3D): the crossing point of the polygon's plane
-// must lie inside the polygon (tested in the plane's projection).
-bool segment_crosses_polygon(const double* p, const double* q, const std::vector<Point>& poly) {
-  const Point& o = poly[0];
-  double nrm[3] = {0, 0, 0};
-  for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
-    const double u[3] = {poly[i][0] - o[0], poly[i][1] - o[1], poly[i][2] - o[2]};
-    const double v[3] = {poly[i + 1][0] - o[0], poly[i + 1][1] - o[1], poly[i + 1][2] - o[2]};
-    nrm[0] += u[1] * v[2] - u[2] * v[1];
-    nrm[1] += u[2] * v[0] - u[0] * v[2];
-    nrm[2] += u[0] * v[1] - u[1] * v[0];
-  }
-  const double sp = (p[0] - o[0]) * nrm[0] + (p[1] - o[1]) * nrm[1] + (p[2] - o[2]) * nrm[2];
-  const double sq = (q[0] - o[0]) * nrm[0] + (q[1] - o[1]) * nrm[1] + (q[2] - o[2]) * nrm[2];
-  if ((sp > 0) == (sq > 0) || sp == 0 || sq == 0) return false;
-  const double t = sp / (sp - sq);
-  double x[3];
-  for (int c = 0; c < 3; ++c) x[c] = p[c] + t * (q[c] - p[c]);
-  // Drop the dominant normal axis and test in 2D.
-  int drop = 0;
-  for (int c = 1; c < 3; ++c)
-    if (std::fabs(nrm[c]) > std::fabs(nrm[drop])) drop = c;
-  const int a0 = drop == 0 ? 1 : 0, a1 = drop == 2 ? 1 : 2;
-  bool inside = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const double yi = poly[i][a1], yj = poly[j][a1], xi = poly[i][a0], xj = poly[j][a0];
-    if ((yi > x[a1]) != (yj > x[a1]) && x[a0] < (xj - xi) * (x[a1] - yi) / (yj - yi) + xi) inside = !inside;
-  }
-  return inside;
-}
-}  // namespace
-
-bool crack_crosses(const Crack& c, const double* xa, const double* xb, int dim) {
-  return dim == 2 ? segments_cross(xa, xb, c.points[0], c.points[1]) : segment_crosses_polygon(xa, xb, c.points);
-}
-
-int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds) {
-  int broken = 0;
-  const int d = p.dim;
-  for (int i = 0; i < p.size(); ++i)
-    for (int b = bonds.offsets[i]; b < bonds.offsets[i + 1]; ++b) {
-      // The lower index first: both directions of a bond then run the same arithmetic,
-      // so a bond through a crack tip is cut in both families or in neither.
-      const int lo = std::min(i, bonds.neighbor[b]), hi = std::max(i, bonds.neighbor[b]);
-      const double* xa = p.position(lo);
-      const double* xb = p.position(hi);
-      for (const Crack& c : cracks) {
-        const bool cross = crack_crosses(c, xa, xb, d);
-        if (cross && bonds.alpha[b] != 0.0) {
-          bonds.alpha[b] = 0.0;
-          ++broken;
-        }
-      }
-    }
-  return broken;
 }
 
 }  // namespace pd

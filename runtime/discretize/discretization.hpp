@@ -1,10 +1,11 @@
 // From a scene to particles and families: lattice points in the domain box (cell
 // centers or nodes), holes removed, inclusions tagged, a seeded perturbation, then
-// neighbour search with a cell list and bond cutting by cracks.
+// neighbour search with a cell list; bond cutting by cracks is in crack_cut.hpp.
 #pragma once
 
 #include <vector>
 
+#include "discretize/crack_cut.hpp"
 #include "input/scene.hpp"
 #include "particles.hpp"
 
@@ -36,13 +37,5 @@ int drop_negligible_bonds(Bonds& bonds);
 // (without building the short families): what the solver-path rule estimates the
 // short-horizon preconditioner from.
 double mean_short_family_size(const Bonds& bonds, double short_delta, double (*influence)(double r, double delta));
-
-// Whether the segment from xa to xb crosses the crack (a segment in 2D, a planar
-// polygon in 3D). cut_bonds passes the lower-indexed particle as xa.
-bool crack_crosses(const Crack& crack, const double* xa, const double* xb, int dim);
-
-// Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
-// broken bonds (each counted once per direction).
-int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);
 
 }  // namespace pd

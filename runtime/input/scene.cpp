@@ -295,6 +295,22 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   return bc;
 }
 
+// A probe's `reference_at`: region (the default), particles, or a point.
+void read_reference_at(const YamlAt& at, Probe& probe, int dim) {
+  if (!probe.reference) at.fail("reference_at needs a reference field");
+  if (at.node.IsSequence()) {
+    probe.reference_at = Probe::ReferenceAt::point;
+    probe.reference_point = to_point(at, dim);
+    return;
+  }
+  const std::string v = as_text(at);
+  if (v == "particles") probe.reference_at = Probe::ReferenceAt::particles;
+  else if (v != "region") at.fail("'" + v + "': expected region, particles or a point [x, y(, z)]");
+  const Region::Kind k = probe.region.kind;
+  if (v == "region" && k != Region::Kind::Box && k != Region::Kind::Side)
+    at.fail("region: only a box or side region has a reference point; give particles or a point");
+}
+
 Scene read(const YAML::Node& root, const std::string& file) {
   Scene s;
   s.file = file;
@@ -410,6 +426,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (s.dim == 2 && crack.points[0] == crack.points[1]) pts.fail("the two points coincide");
       if (s.dim == 3) check_crack_polygon(pts, crack.points);
       crack.pressure = c.number("pressure", 0.0);
+      if (c.has("tips") && s.dim == 3) c.get("tips").fail("the tip rule is for 2D cracks (segments)");
+      crack.tips = c.choice("tips", "cut", {"cut", "kept"}) == "kept" ? CrackTips::kept : CrackTips::cut;
       if (c.has("time_function")) {
         const YamlAt tf = c.get("time_function");
         if (crack.pressure == 0) tf.fail("a time function scales the crack pressure: give pressure");
@@ -450,6 +468,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       const YamlAt comp = p.get("component");
       probe.component = component_index(comp, as_text(comp), s.dim);
       if (p.has("reference")) probe.reference = read_field(p.get("reference"));
+      if (p.has("reference_at")) read_reference_at(p.get("reference_at"), probe, s.dim);
       p.finish();
       s.probes.push_back(probe);
     }

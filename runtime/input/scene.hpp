@@ -59,8 +59,12 @@ struct BoundaryCondition {
   std::string time_where;  // "file:line: boundary[i].time_function"
 };
 
+// What a bond passing exactly through a 2D crack tip does (docs/scene_format.md).
+enum class CrackTips { cut, kept };
+
 struct Crack {
   std::vector<Point> points;  // 2D: a segment (2 points); 3D: a planar polygon
+  CrackTips tips = CrackTips::cut;
   double pressure = 0;
   // Dynamic scenes: the pressure is scaled by f(t); without one it acts from t = 0.
   std::optional<TimeFunction> time;
@@ -88,6 +92,10 @@ struct Probe {
   Region region;
   int component = 0;
   std::optional<FieldSpec> reference;  // analytic field to compare the mean against
+  // Where the reference is taken (docs/scene_format.md, `reference_at`): the region's
+  // point (the paper's, default), an explicit point, or the mean over the particles.
+  enum class ReferenceAt { region, point, particles } reference_at = ReferenceAt::region;
+  Point reference_point{};
   std::string where;
 };
 

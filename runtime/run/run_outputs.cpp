@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "discretize/discretization.hpp"
+#include "post/probe_reference.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
 
@@ -32,12 +33,10 @@ std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& pa
     r.particles = static_cast<int>(ids[k].size());
     std::unique_ptr<AnalyticField> field;
     if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene.materials[0].elastic);
-    for (int p : ids[k]) {
-      r.value += u[static_cast<std::size_t>(p) * particles.dim + pr.component];
-      if (field) r.reference += field->displacement(particles.position(p))[pr.component];
-    }
+    for (int p : ids[k]) r.value += u[static_cast<std::size_t>(p) * particles.dim + pr.component];
     r.value /= static_cast<double>(ids[k].size());
-    r.reference /= static_cast<double>(ids[k].size());
+    // Where the analytic value is taken: probes[i].reference_at (post/probe_reference.hpp).
+    if (field) r.reference = probe_reference(pr, *field, ids[k], particles, scene);
     r.has_reference = static_cast<bool>(field);
     r.error = std::fabs(r.value - r.reference);
     out.push_back(r);

@@ -20,6 +20,7 @@
 #include "output/vtu_writer.hpp"
 #include "damage/critical_stretch.hpp"
 #include "post/smoothing.hpp"
+#include "post/stability_warning.hpp"
 #include "model/model.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
@@ -176,6 +177,7 @@ RunSummary Simulation::run(bool write) {
       throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / model_.particles.dim, summary_.law));
   u_.assign(u.data(), u.data() + u.size());
   summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_);
+  log_zero_energy_content(model_.particles, model_.bonds, u_, summary_.law, log_);
   if (scene_.reference) {
     summary_.has_field_error = true;
     summary_.field_error = field_error(scene_, *scene_.reference, model_.particles, u_);

@@ -258,6 +258,15 @@ TEST(SceneErrors, CracksSolverOutputProbes) {
        "probes[0].reference.H", "unknown key 'H'"},
       {"reference: {solution: westergaard, pressure: 0.1, half_length: 0.5}", "reference: {solution: nope}", "reference.solution",
        "'nope' is not one of"},
+      {"    reference: {solution: uniaxial, traction: -0.001}", "    reference: {solution: uniaxial, traction: -0.001}\n    reference_at: top",
+       "probes[0].reference_at", "'top': expected region, particles or a point", "    reference_at"},
+      {"    region: {side: top}\n    component: y", "    region: {all: true}\n    component: y\n    reference_at: region",
+       "probes[0].reference_at", "region: only a box or side region has a reference point", "    reference_at"},
+      {"    reference: {solution: uniaxial, traction: -0.001}", "    reference_at: particles", "probes[0].reference_at",
+       "reference_at needs a reference field"},
+      {"    component: y", "    component: y\n    reference_at: [1]", "probes[0].reference_at", "expected 2 coordinates", "    reference_at"},
+      {"segment: [[1.5, 1.1], [2.5, 1.1]]", "segment: [[1.5, 1.1], [2.5, 1.1]]\n    tips: blunt", "cracks[0].tips",
+       "'blunt' is not one of: cut, kept", "    tips"},
   });
 }
 
