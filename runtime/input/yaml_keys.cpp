@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace pd {
 
@@ -20,8 +21,27 @@ YamlAt YamlAt::child(const YAML::Node& n, const std::string& key) const {
 
 YamlAt YamlAt::element(const YAML::Node& n, std::size_t i) const { return {n, file, path + "[" + std::to_string(i) + "]"}; }
 
+namespace {
+int line_of(const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 : 0; }
+
+// yaml-cpp keeps every entry of a map with a repeated key but looks up only the first,
+// so `E: 1` followed by `E: 2` would silently mean 1: refuse it, naming both lines.
+void reject_duplicate_keys(const YamlAt& at) {
+  std::map<std::string, int> first_line;
+  for (auto it = at.node.begin(); it != at.node.end(); ++it) {
+    if (!it->first.IsScalar()) continue;
+    const std::string key = it->first.Scalar();
+    const auto [seen, fresh] = first_line.emplace(key, line_of(it->first));
+    if (!fresh)
+      at.child(it->first, key).fail("duplicate key '" + key + "' (first given on line " + std::to_string(seen->second) +
+                                    "; a key may appear once in a map)");
+  }
+}
+}  // namespace
+
 MapReader::MapReader(const YamlAt& at) : at_(at) {
   if (!at.node.IsMap()) at.fail("expected a map of keys");
+  reject_duplicate_keys(at);
 }
 
 bool MapReader::has(const std::string& key) const { return static_cast<bool>(at_.node[key]); }
