@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
@@ -497,22 +495,11 @@ int Scene::material_index(const std::string& name) const {
 }
 
 Scene parse_scene(const std::string& yaml, const std::string& name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(yaml, name);
   if (!root.IsMap()) throw SceneError(name + ":1: (top level): expected a map of keys");
   return read(root, name);
 }
 
-Scene read_scene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path);
-}
+Scene read_scene(const std::string& path) { return parse_scene(read_input_file(path, "scene"), path); }
 
 }  // namespace pd

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 namespace pd {
 
@@ -51,6 +54,29 @@ YamlAt MapReader::get(const std::string& key) {
   const YAML::Node n = at_.node[key];
   if (!n) at_.fail("missing required key '" + key + "'");
   return at_.child(n, key);
+}
+
+std::string read_input_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw SceneError(path + ": no such " + what + " file");
+  if (std::filesystem::is_directory(status))
+    throw SceneError(path + ": is a directory, not a " + what + " file (give the .yaml file itself)");
+  if (!std::filesystem::is_regular_file(status)) throw SceneError(path + ": not a regular file, cannot read it as a " + what + " file");
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the " + what + " file (permissions?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(path + ": cannot read the " + what + " file");
+  return text.str();
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
 }
 
 double as_number(const YamlAt& at) {

@@ -1,7 +1,5 @@
 // The study file reader (strict keys, like scenes).
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -70,16 +68,8 @@ std::string paper_key(const std::string& problem, const std::string& law, const 
 }
 
 StudySpec read_study(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the study file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(read_input_file(path, "study"), path);
+  if (!root.IsMap()) throw SceneError(path + ":1: (top level): expected a map of keys");
   const YamlAt top{root, path, ""};
   MapReader m(top);
   StudySpec s;
