@@ -62,9 +62,12 @@ Sweep read_sweep(MapReader& m, bool required, const std::vector<std::string>& pr
 
 std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
                       int count, const std::string& smoothing) {
+  // Appended piece by piece: `key += "|" + std::to_string(count)` made GCC 12 warn
+  // (-Wrestrict, a false positive in the inlined temporary's copy).
   std::string key = problem + "|" + law + "|" + influence + "|" + std::to_string(ratio);
-  if (count > 0) key += "|" + std::to_string(count);
-  return smoothing.empty() ? key : key + "|smoothed " + smoothing;
+  if (count > 0) key.append("|").append(std::to_string(count));
+  if (!smoothing.empty()) key.append("|smoothed ").append(smoothing);
+  return key;
 }
 
 StudySpec read_study(const std::string& path) {
