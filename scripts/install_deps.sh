@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev libfmt-dev
           libyaml-cpp-dev libgtest-dev libbenchmark-dev libomp-dev python3
-          nlohmann-json3-dev python3-matplotlib clang libclang-rt-14-dev
+          nlohmann-json3-dev libcli11-dev python3-matplotlib clang libclang-rt-14-dev
           libopenblas0-pthread)  # OpenBLAS: CHOLMOD's supernodal factorisation is 4x faster than with reference BLAS
 if [ "${1:-}" = "--profile" ]; then packages+=(linux-perf valgrind); fi
 missing=()

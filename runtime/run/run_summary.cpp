@@ -4,11 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "run/simulation.hpp"
+#include "version.hpp"
 
 namespace pd {
 
 std::string RunSummary::json() const {
   nlohmann::ordered_json j;
+  j["pd"] = {{"version", version()}, {"commit", git_commit()}};  // which binary wrote this
   j["scene"] = scene;
   j["law"] = law;
   j["influence"] = influence;
