@@ -90,7 +90,10 @@ int run_scene(const RunOptions& options) {
       s = sim.run();
     }
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
-    fmt::print(stderr, "pd run: {}\n", e.what());
+    // Those found while setting up the body (a horizon beyond the body, overflowing
+    // moduli) know no file: name it, so every bad-input message starts with it.
+    const std::string message = e.what();
+    fmt::print(stderr, "pd run: {}{}\n", message.rfind(scene_path, 0) == 0 ? "" : scene_path + ": ", message);
     return 2;
   } catch (const Interrupted& e) {
     // Dynamic runs write snapshots and checkpoints as they go; those are complete files.

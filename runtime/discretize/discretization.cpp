@@ -231,6 +231,11 @@ bool segment_crosses_polygon(const double* p, const double* q, const std::vector
 }  // namespace
 
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds) {
+  return cut_bonds(cracks, p, bonds, nullptr);
+}
+
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack) {
+  if (crossed_per_crack) crossed_per_crack->assign(cracks.size(), 0);
   int broken = 0;
   const int d = p.dim;
   for (int i = 0; i < p.size(); ++i)
@@ -240,8 +245,10 @@ int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds
       const int lo = std::min(i, bonds.neighbor[b]), hi = std::max(i, bonds.neighbor[b]);
       const double* xa = p.position(lo);
       const double* xb = p.position(hi);
-      for (const Crack& c : cracks) {
+      for (std::size_t k = 0; k < cracks.size(); ++k) {
+        const Crack& c = cracks[k];
         const bool cross = d == 2 ? segments_cross(xa, xb, c.points[0], c.points[1]) : segment_crosses_polygon(xa, xb, c.points);
+        if (cross && crossed_per_crack) ++(*crossed_per_crack)[k];
         if (cross && bonds.alpha[b] != 0.0) {
           bonds.alpha[b] = 0.0;
           ++broken;

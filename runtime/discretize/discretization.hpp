@@ -40,5 +40,8 @@ double mean_short_family_size(const Bonds& bonds, double short_delta, double (*i
 // Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
 // broken bonds (each counted once per direction).
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);
+// The same, also counting per crack the bond directions it crosses (cut by it or already
+// cut by an earlier crack): a crack that crosses none has no effect.
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack);
 
 }  // namespace pd

@@ -270,6 +270,19 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   return bc;
 }
 
+// A parameter the law does not take is most likely a misspelt one (`stabb` for `stab`):
+// the law then ran with its default, or refused, so say which names it takes.
+void warn_unused_parameters(const abi::LawDescriptor& law, const YamlAt& material,
+                            const std::map<std::string, double>& parameters, std::vector<std::string>& warnings) {
+  for (const std::string& name : unused_parameters(law, parameters)) {
+    std::string taken;
+    for (int i = 0; i < law.n_params; ++i) taken += (i ? ", " : "") + std::string(law.param_names[i]);
+    const YamlAt at = material.child(material.node["parameters"], "parameters").child(material.node["parameters"][name], name);
+    warnings.push_back(at.location() + ": law " + law.name + " takes no parameter '" + name + "', it is ignored (the law's parameters: " +
+                       (taken.empty() ? "none" : taken) + ")");
+  }
+}
+
 Scene read(const YAML::Node& root, const std::string& file) {
   Scene s;
   s.file = file;
@@ -352,6 +365,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       } catch (const std::invalid_argument& e) {
         mi.fail(e.what());
       }
+      warn_unused_parameters(*law, mi, s.materials.back().parameters, s.warnings);
     }
   }
   for (std::size_t i = 0; i < s.inclusions.size(); ++i)
@@ -386,6 +400,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
         crack.time_where = tf.location();
       }
       c.finish();
+      crack.where = ci.location();
       s.cracks.push_back(crack);
     }
   }
@@ -418,7 +433,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
     if (!(preconditioner_max >= 0) || preconditioner_max > 9e18)
       sv.get("preconditioner_max_nonzeros").fail("must be a non-negative count");
     s.solver.preconditioner_max_nonzeros = static_cast<long long>(preconditioner_max);
-    if (s.solver.tolerance <= 0 || s.solver.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
+    if (s.solver.tolerance <= 0) sv.get("tolerance").fail("tolerances must be positive");  // only a given one is <= 0
+    if (s.solver.krylov_tolerance <= 0) sv.get("krylov_tolerance").fail("tolerances must be positive");
     if (s.solver.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
     sv.finish();
   }

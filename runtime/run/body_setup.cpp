@@ -21,7 +21,13 @@ BodySetup set_up_body(const Scene& scene, RunSummary& summary) {
   summary.influence = b.influence->name;
   summary.particles = b.particles.size();
   summary.bonds = b.bonds.bond_count() / 2;
-  summary.broken_bonds = cut_bonds(scene.cracks, b.particles, b.bonds) / 2;
+  std::vector<int> crossed;
+  summary.broken_bonds = cut_bonds(scene.cracks, b.particles, b.bonds, &crossed) / 2;
+  summary.warnings = scene.warnings;
+  for (std::size_t c = 0; c < scene.cracks.size(); ++c)
+    if (crossed[c] == 0)
+      summary.warnings.push_back(scene.cracks[c].where + ": the crack crosses no bond (it lies outside the body, in a hole, "
+                                 "or between particles closer than a spacing): it has no effect");
   const Particles& p = b.particles;
   for (int i = 0; i < p.size(); ++i)
     if (b.bonds.family_size(i) == 0)

@@ -16,6 +16,7 @@ std::string RunSummary::json() const {
   j["influence"] = influence;
   j["kernel_variant"] = variant;
   j["effects"] = effects;
+  if (!warnings.empty()) j["warnings"] = warnings;
   j["particles"] = particles;
   j["bonds"] = bonds;
   j["broken_bonds"] = broken_bonds;

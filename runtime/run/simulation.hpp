@@ -35,6 +35,7 @@ struct RunSummary {
   int broken_bonds = 0;
   std::string variant;
   std::vector<std::string> effects;
+  std::vector<std::string> warnings;  // the scene's and the setup's, each also logged as "  warning: ..."
   std::string solver_path;  // the linear-solver path and why (run/solver_path.hpp)
   NewtonResult newton;                    // static runs
   std::optional<long long> bonds_broken_by_damage;  // static runs with `damage`: broken between load steps
