@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/memory_check.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
@@ -67,6 +68,10 @@ int run_scene(const RunOptions& options) {
     scene = read_scene(scene_path);
   } catch (const SceneError& e) {
     fmt::print(stderr, "pd run: {}\n", e.what());
+    return 2;
+  }
+  if (const auto refusal = memory_refusal(scene, available_memory())) {  // before any allocation
+    fmt::print(stderr, "pd run: {}\n", *refusal);
     return 2;
   }
   if (!out_dir.empty()) scene.output.directory = out_dir;

@@ -79,6 +79,8 @@ cases = [
  ("yaml_empty_file", None, "", None, r"\(top level\)", "expected a map"),
  # setup-time checks that used to mislead ("increase the horizon ratio")
  ("overflowing_modulus", "E: 1,", "E: 1e308,", None, None, r"\d+ of \d+ families give law silling_plane_strain an infinite or NaN response.*overflow"),
+ ("memory_count_99999", "count: 6", "count: 99999", None, None,
+  r"domain: the scene needs at least [0-9.e+]+ GiB of memory for its particles and bonds alone \(1e\+10 particles.*this machine has [0-9.e+]+ GiB available"),
  ("horizon_beyond_the_body", "ratio: 3.0", "length: 5", None, None, "the horizon delta = 5 exceeds the body"),
 ]
 warn_cases = [
