@@ -1,44 +1,53 @@
-// pd: the command-line front end. Subcommands live in runtime/cli/.
+// pd: the command-line front end (CLI11). Subcommands live in runtime/cli/.
+// Exit codes: 0 done, 1 the command failed, 2 bad usage or bad input; a command's
+// --help lists its own.
 #include <fmt/core.h>
 
 #include <exception>
-#include <functional>
 #include <map>
 #include <string>
 
 #include "cli/commands.hpp"
-
-namespace {
-const std::map<std::string, std::pair<std::function<int(const pd::cli::Args&)>, const char*>>& commands() {
-  static const std::map<std::string, std::pair<std::function<int(const pd::cli::Args&)>, const char*>> table{
-      {"laws", {pd::cli::laws_command, "list the generated laws and influence functions (-v: op counts)"}},
-      {"check-law", {pd::cli::check_law_command, "NAME: verify a law's tangent against finite differences"}},
-      {"run", {pd::cli::run_command, "SCENE.yaml [--out DIR]: solve a scene and write its results"}},
-      {"study", {pd::cli::study_command, "STUDY.yaml [--out DIR] [--quick]: convergence and cost study"}},
-  };
-  return table;
-}
-
-int usage(int code) {
-  fmt::print(code ? stderr : stdout, "usage: pd COMMAND [ARGS]\n\ncommands:\n");
-  for (const auto& [name, entry] : commands()) fmt::print(code ? stderr : stdout, "  {:<12} {}\n", name, entry.second);
-  return code;
-}
-}  // namespace
+#include "version.hpp"
 
 int main(int argc, char** argv) {
-  if (argc < 2) return usage(2);
-  const std::string cmd = argv[1];
-  if (cmd == "-h" || cmd == "--help" || cmd == "help") return usage(0);
-  const auto it = commands().find(cmd);
-  if (it == commands().end()) {
-    fmt::print(stderr, "pd: unknown command '{}'\n", cmd);
-    return usage(2);
+  CLI::App app{"pd: peridynamic laws, scenes and studies (docs/scene_format.md describes scenes)", "pd"};
+  app.set_version_flag("--version", pd::version_line(), "print the version and the git commit, then exit");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  std::map<const CLI::App*, pd::cli::Command> commands;
+  for (auto add : {pd::cli::add_laws_command, pd::cli::add_check_law_command, pd::cli::add_run_command,
+                   pd::cli::add_study_command}) {
+    pd::cli::Command run = add(app);
+    commands[app.get_subcommands({}).back()] = std::move(run);
+  }
+  if (argc < 2) {  // no command: the list of commands, as an error
+    fmt::print(stderr, "{}", app.help());
+    return 2;
+  }
+  std::string names;
+  bool known = false;
+  for (const CLI::App* c : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + c->get_name();
+    known = known || c->get_name() == argv[1];
+  }
+  if (argv[1][0] != '-' && !known) {
+    fmt::print(stderr, "pd: unknown command '{}' (the commands: {}; pd --help)\n", argv[1], names);
+    return 2;
   }
   try {
-    return it->second.first(pd::cli::Args(argv + 2, argv + argc));
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; an unknown option, a stray argument, a missing or a
+    // malformed value is bad usage: CLI11 names it, and the exit code is 2 like bad input.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  const CLI::App* chosen = app.get_subcommands().front();
+  try {
+    return commands.at(chosen)();
   } catch (const std::exception& e) {
-    fmt::print(stderr, "pd {}: error: {}\n", cmd, e.what());
+    fmt::print(stderr, "pd {}: error: {}\n", chosen->get_name(), e.what());
     return 1;
   }
 }

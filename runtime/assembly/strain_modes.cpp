@@ -4,7 +4,10 @@
 #include <fmt/core.h>
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <stdexcept>
+
+#include "input/yaml_keys.hpp"  // SceneError
 
 namespace pd {
 
@@ -13,6 +16,7 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
   const abi::KernelVariant& variant = assembler.variant();
   const int n = in.size(), d = in.dim(), nk = d * (d + 1) / 2;
   std::vector<double> ratios(static_cast<std::size_t>(n), 1.0);
+  std::vector<char> finite(static_cast<std::size_t>(n), 1);
 #pragma omp parallel
   {
     FamilyGather g(in);
@@ -38,12 +42,24 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
           variant.jvp(f, dy.data(), df.data());
           for (int i = 0; i < m; ++i) response(i, k) = df[i];
         }
+      // The ratio is scale-free: normalising first keeps the Gram matrix finite for large
+      // but representable moduli (E = 1e200 squares to inf).
+      const double scale = response.cwiseAbs().maxCoeff();
+      if (!std::isfinite(scale)) {
+        finite[p] = 0;
+        continue;
+      }
+      if (scale > 0) response /= scale;
       const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(response.transpose() * response).eigenvalues();
       ratios[p] = eig[nk - 1] > 0 ? std::max(0.0, eig[0]) / eig[nk - 1] : 0.0;
     }
   }
   StrainModeReport report;
   for (int p = 0; p < n; ++p) {
+    if (!finite[p]) {
+      report.non_finite.push_back(p);
+      continue;
+    }
     if (ratios[p] < report.worst_ratio) report.worst_ratio = ratios[p], report.worst_particle = p;
     if (ratios[p] < tolerance) report.blind.push_back(p);
   }
@@ -53,18 +69,27 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
 StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h) {
   StrainModeReport report = find_strain_blind_families(assembler);
   const int n = assembler.inputs().size();
-  if (2 * static_cast<long long>(report.blind.size()) > n) {
-    const Particles& P = *assembler.inputs().particles;
+  const Particles& P = *assembler.inputs().particles;
+  const auto first_five = [&P](const std::vector<int>& which) {
     std::string list;
-    for (std::size_t k = 0; k < std::min<std::size_t>(report.blind.size(), 5); ++k)
-      list += fmt::format("{}particle {} at ({:.6g}, {:.6g})", k ? ", " : "", report.blind[k], P.position(report.blind[k])[0],
-                          P.position(report.blind[k])[1]);
+    for (std::size_t k = 0; k < std::min<std::size_t>(which.size(), 5); ++k)
+      list += fmt::format("{}particle {} at ({:.6g}, {:.6g})", k ? ", " : "", which[k], P.position(which[k])[0],
+                          P.position(which[k])[1]);
+    return list + (which.size() > 5 ? fmt::format(" and {} more", which.size() - 5) : "");
+  };
+  if (!report.non_finite.empty())  // bad input (exit 2), like a key out of range
+    throw SceneError(fmt::format(
+        "{} of {} families give law {} an infinite or NaN response to a homogeneous strain: {}; the law's parameters "
+        "(the material's moduli, or its `parameters`) overflow in double precision: give the moduli in units that "
+        "make them moderate (e.g. MPa or GPa instead of Pa)",
+        report.non_finite.size(), n, assembler.law().name, first_five(report.non_finite)));
+  if (2 * static_cast<long long>(report.blind.size()) > n) {
+    const std::string list = first_five(report.blind);
     throw std::runtime_error(fmt::format(
-        "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = {:.4g}): {}{}; "
+        "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = {:.4g}): {}; "
         "their bonds are too few or too aligned for this law (on a square lattice, delta/h < 1.42 leaves only the axial "
         "bonds, which do not stretch under shear): increase the horizon ratio",
-        report.blind.size(), n, assembler.law().name, influence, delta_over_h, list,
-        report.blind.size() > 5 ? fmt::format(" and {} more", report.blind.size() - 5) : ""));
+        report.blind.size(), n, assembler.law().name, influence, delta_over_h, list));
   }
   return report;
 }

@@ -13,6 +13,7 @@ namespace pd {
 
 struct StrainModeReport {
   std::vector<int> blind;   // families with no stiffness against some homogeneous strain
+  std::vector<int> non_finite;  // families whose response is inf or NaN (overflowing constants)
   double worst_ratio = 1;  // smallest lambda_min / lambda_max of a family's response Gram matrix
   int worst_particle = -1;
 };
@@ -23,8 +24,9 @@ struct StrainModeReport {
 // strains produces no force in that family.
 StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, double tolerance = 1e-12);
 
-// Throws std::runtime_error naming the law, influence, delta/h and particles when more
-// than half of the families are blind (the body then has a mechanism); returns the
+// Throws std::runtime_error naming the particles when a family's response is not finite
+// (material constants that overflow: "no stiffness" would mislead), and naming the law,
+// influence, delta/h and particles when more than half of the families are blind (the body then has a mechanism); returns the
 // report otherwise (a few blind families at corners are stiffened by their neighbours').
 StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h);
 

@@ -1,16 +1,18 @@
-// The `pd` subcommands. Each returns the process exit code.
+// The `pd` subcommands. Each add_*_command registers its subcommand, options and help on
+// the CLI11 app and returns what runs it once parsed (returning the process exit code).
 #pragma once
 
-#include <string>
-#include <vector>
+#include <CLI/CLI.hpp>
+
+#include <functional>
 
 namespace pd::cli {
 
-using Args = std::vector<std::string>;
+using Command = std::function<int()>;
 
-int laws_command(const Args& args);       // pd laws: the generated laws and influence functions
-int check_law_command(const Args& args);  // pd check-law NAME: tangent vs finite differences
-int run_command(const Args& args);        // pd run SCENE.yaml: solve a scene, write results
-int study_command(const Args& args);      // pd study STUDY.yaml: convergence and cost study
+Command add_laws_command(CLI::App& pd);       // pd laws: the generated laws and influence functions
+Command add_check_law_command(CLI::App& pd);  // pd check-law NAME: tangent vs finite differences
+Command add_run_command(CLI::App& pd);        // pd run SCENE.yaml: solve a scene, write results
+Command add_study_command(CLI::App& pd);      // pd study STUDY.yaml: convergence and cost study
 
 }  // namespace pd::cli

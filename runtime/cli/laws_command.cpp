@@ -2,6 +2,10 @@
 // generated tangent and tangent-vector product against central finite differences.
 #include <fmt/core.h>
 
+#include <cmath>
+#include <memory>
+#include <string>
+
 #include "cli/commands.hpp"
 #include "kernel_abi.hpp"
 #include "verify/tangent_check.hpp"
@@ -12,10 +16,8 @@ namespace {
 void print_ops(const char* what, const abi::OpCounts& c) {
   fmt::print("      {:<9} per bond: {:3} add {:3} mul {:3} div {:2} call\n", what, c.adds, c.muls, c.divs, c.calls);
 }
-}  // namespace
 
-int laws_command(const Args& args) {
-  const bool verbose = !args.empty() && args[0] == "-v";
+int list_laws(bool verbose) {
   fmt::print("Laws ({}):\n", abi::all_laws().size());
   for (const auto& law : abi::all_laws()) {
     std::string params;
@@ -34,18 +36,12 @@ int laws_command(const Args& args) {
   return 0;
 }
 
-int check_law_command(const Args& args) {
-  if (args.empty()) {
-    fmt::print(stderr, "usage: pd check-law NAME [--seed N]   (pd laws lists the names)\n");
-    return 2;
-  }
-  const abi::LawDescriptor* law = abi::find_law(args[0]);
+int check_law(const std::string& name, unsigned seed) {
+  const abi::LawDescriptor* law = abi::find_law(name);
   if (law == nullptr) {
-    fmt::print(stderr, "pd check-law: no law named '{}' (pd laws lists them)\n", args[0]);
+    fmt::print(stderr, "pd check-law: no law named '{}' (pd laws lists them)\n", name);
     return 2;
   }
-  unsigned seed = 1;
-  if (args.size() == 3 && args[1] == "--seed") seed = static_cast<unsigned>(std::stoul(args[2]));
   const verify::CheckTolerances tol;
   fmt::print("Checking {} ({}D) on random families, seed {}: generated tangent vs central differences\n"
              "of the generated residual (relative error per block kind; pass <= {:g}), JVP (<= {:g}), momentum\n"
@@ -68,6 +64,24 @@ int check_law_command(const Args& args) {
   }
   fmt::print("\n{}\n", ok ? "All checks passed." : "Some checks FAILED.");
   return ok ? 0 : 1;
+}
+}  // namespace
+
+Command add_laws_command(CLI::App& pd) {
+  CLI::App* cmd = pd.add_subcommand("laws", "list the generated laws and influence functions");
+  auto verbose = std::make_shared<bool>(false);
+  cmd->add_flag("-v,--verbose", *verbose, "also the operation counts per bond of each kernel");
+  return [verbose] { return list_laws(*verbose); };
+}
+
+Command add_check_law_command(CLI::App& pd) {
+  CLI::App* cmd = pd.add_subcommand("check-law", "verify a law's tangent against finite differences");
+  cmd->footer("Exit codes: 0 every check passed, 1 some check failed, 2 bad usage or no such law.\n");
+  auto name = std::make_shared<std::string>();
+  auto seed = std::make_shared<unsigned>(1);
+  cmd->add_option("NAME", *name, "the law (pd laws lists them)")->required();
+  cmd->add_option("--seed", *seed, "seed of the random families")->capture_default_str();
+  return [name, seed] { return check_law(*name, *seed); };
 }
 
 }  // namespace pd::cli

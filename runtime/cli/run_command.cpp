@@ -3,15 +3,19 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/core.h>
+#include <memory>
+#include <string>
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/memory_check.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
 #include "output/output_directory.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
+#include "version.hpp"
 
 namespace pd::cli {
 
@@ -43,46 +47,32 @@ void install_interrupt_handlers() {
 }  // namespace
 
 namespace {
-const char* kRunUsage =
-    "usage: pd run SCENE.yaml [--out DIR] [--restart CHECKPOINT]\n"
-    "  Solves the scene and writes DIR/result.vtu (ParaView), DIR/result.csv and DIR/summary.json;\n"
-    "  a scene with a dynamics section runs explicit dynamics or dynamic relaxation and also writes\n"
-    "  DIR/energies.csv, DIR/animation.pvd (snapshots) and DIR/checkpoint.bin as the scene asks;\n"
-    "  --restart resumes such a run from a checkpoint.\n"
-    "  DIR defaults to the scene's output.directory. The scene format: docs/scene_format.md.\n"
-    "  Exit codes: 0 solved, 1 solve failed, 2 bad input (the message names file, line and key),\n"
-    "  130 / 143 interrupted by SIGINT / SIGTERM (no result file is written).\n";
-}  // namespace
+const char* kRunDetails =
+    "Solves the scene and writes DIR/result.vtu (ParaView), DIR/result.csv and DIR/summary.json;\n"
+    "a scene with a dynamics section runs explicit dynamics or dynamic relaxation and also writes\n"
+    "DIR/energies.csv, DIR/animation.pvd (snapshots) and DIR/checkpoint.bin as the scene asks;\n"
+    "--restart resumes such a run from a checkpoint. The scene format: docs/scene_format.md.\n"
+    "Exit codes: 0 solved, 1 solve failed, 2 bad usage or bad input (the message names file, line\n"
+    "and key), 130 / 143 interrupted by SIGINT / SIGTERM (no result file is written).\n";
 
-int run_command(const Args& args) {
-  for (const auto& a : args)
-    if (a == "-h" || a == "--help") {
-      fmt::print("{}", kRunUsage);
-      return 0;
-    }
+struct RunOptions {
   std::string scene_path, out_dir, restart;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--out" && i + 1 < args.size())
-      out_dir = args[++i];
-    else if (args[i] == "--restart" && i + 1 < args.size())
-      restart = args[++i];
-    else if (scene_path.empty() && args[i].rfind("--", 0) != 0)
-      scene_path = args[i];
-    else {
-      fmt::print(stderr, "{}", kRunUsage);
-      return 2;
-    }
-  }
-  if (scene_path.empty()) {
-    fmt::print(stderr, "{}", kRunUsage);
-    return 2;
-  }
+};
+
+int run_scene(const RunOptions& options) {
+  const std::string& scene_path = options.scene_path;
+  const std::string& out_dir = options.out_dir;
+  const std::string& restart = options.restart;
   install_interrupt_handlers();
   Scene scene;
   try {
     scene = read_scene(scene_path);
   } catch (const SceneError& e) {
     fmt::print(stderr, "pd run: {}\n", e.what());
+    return 2;
+  }
+  if (const auto refusal = memory_refusal(scene, available_memory())) {  // before any allocation
+    fmt::print(stderr, "pd run: {}\n", *refusal);
     return 2;
   }
   if (!out_dir.empty()) scene.output.directory = out_dir;
@@ -98,6 +88,7 @@ int run_command(const Args& args) {
   try {
     const OutputDirectoryClaim claim(scene.output.directory);  // writable and ours, before any solve
     const auto log = [](const std::string& line) { fmt::print("{}\n", line); std::fflush(stdout); };
+    log(version_line());
     if (scene.dynamics) {
       DynamicSimulation sim(std::move(scene), log);
       s = sim.run();
@@ -106,7 +97,10 @@ int run_command(const Args& args) {
       s = sim.run();
     }
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
-    fmt::print(stderr, "pd run: {}\n", e.what());
+    // Those found while setting up the body (a horizon beyond the body, overflowing
+    // moduli) know no file: name it, so every bad-input message starts with it.
+    const std::string message = e.what();
+    fmt::print(stderr, "pd run: {}{}\n", message.rfind(scene_path, 0) == 0 ? "" : scene_path + ": ", message);
     return 2;
   } catch (const Interrupted& e) {
     // Dynamic runs write snapshots and checkpoints as they go; those are complete files.
@@ -119,6 +113,17 @@ int run_command(const Args& args) {
              s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);
   for (const auto& f : s.files) fmt::print("  {}\n", f);
   return 0;
+}
+}  // namespace
+
+Command add_run_command(CLI::App& pd) {
+  CLI::App* cmd = pd.add_subcommand("run", "solve a scene and write its results");
+  cmd->footer(kRunDetails);
+  auto options = std::make_shared<RunOptions>();
+  cmd->add_option("SCENE", options->scene_path, "the scene file (YAML)")->required();
+  cmd->add_option("--out", options->out_dir, "the output directory DIR (default: the scene's output.directory)");
+  cmd->add_option("--restart", options->restart, "resume a dynamic run from this checkpoint file");
+  return [options] { return run_scene(*options); };
 }
 
 }  // namespace pd::cli

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/core.h>
+#include <memory>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "input/yaml_keys.hpp"
@@ -9,26 +11,16 @@
 
 namespace pd::cli {
 
-int study_command(const Args& args) {
-  const char* usage =
-      "usage: pd study STUDY.yaml [--out DIR] [--quick]\n"
-      "  Runs every problem x law x influence x delta/h x resolution of the study (cached in DIR/points/,\n"
-      "  so an interrupted study resumes), then writes DIR/points.csv, DIR/orders.md and DIR/*.png.\n"
-      "  --quick runs the study's reduced sweep. DIR defaults to out/study.\n";
+namespace {
+struct StudyOptions {
   std::string path, out = "out/study";
   bool quick = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-h" || args[i] == "--help") return fmt::print("{}", usage), 0;
-    if (args[i] == "--quick")
-      quick = true;
-    else if (args[i] == "--out" && i + 1 < args.size())
-      out = args[++i];
-    else if (path.empty())
-      path = args[i];
-    else
-      return fmt::print(stderr, "{}", usage), 2;
-  }
-  if (path.empty()) return fmt::print(stderr, "{}", usage), 2;
+};
+
+int run_study_file(const StudyOptions& options) {
+  const std::string& path = options.path;
+  const std::string& out = options.out;
+  const bool quick = options.quick;
   StudySpec spec;
   try {
     spec = read_study(path);
@@ -47,6 +39,20 @@ int study_command(const Args& args) {
                o.smoothing.empty() ? "" : "smoothed " + o.smoothing, o.order, o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
   fmt::print("results: {}/points.csv, {}/orders.md, {}/*.png\n", out, out, out);
   return 0;
+}
+}  // namespace
+
+Command add_study_command(CLI::App& pd) {
+  CLI::App* cmd = pd.add_subcommand("study", "convergence and cost study");
+  cmd->footer(
+      "Runs every problem x law x influence x delta/h x resolution of the study (cached in DIR/points/,\n"
+      "so an interrupted study resumes), then writes DIR/points.csv, DIR/orders.md and DIR/*.png.\n"
+      "Exit codes: 0 done, 1 a run failed, 2 bad usage or a bad study file.\n");
+  auto options = std::make_shared<StudyOptions>();
+  cmd->add_option("STUDY", options->path, "the study file (YAML)")->required();
+  cmd->add_option("--out", options->out, "the output directory DIR")->capture_default_str();
+  cmd->add_flag("--quick", options->quick, "run the study's reduced sweep");
+  return [options] { return run_study_file(*options); };
 }
 
 }  // namespace pd::cli

@@ -71,6 +71,11 @@ bool crack_crosses(const Crack& c, const double* xa, const double* xb, int dim) 
 }
 
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds) {
+  return cut_bonds(cracks, p, bonds, nullptr);
+}
+
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack) {
+  if (crossed_per_crack) crossed_per_crack->assign(cracks.size(), 0);
   int broken = 0;
   const int d = p.dim;
   for (int i = 0; i < p.size(); ++i)
@@ -80,8 +85,9 @@ int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds
       const int lo = std::min(i, bonds.neighbor[b]), hi = std::max(i, bonds.neighbor[b]);
       const double* xa = p.position(lo);
       const double* xb = p.position(hi);
-      for (const Crack& c : cracks) {
-        const bool cross = crack_crosses(c, xa, xb, d);
+      for (std::size_t k = 0; k < cracks.size(); ++k) {
+        const bool cross = crack_crosses(cracks[k], xa, xb, d);
+        if (cross && crossed_per_crack) ++(*crossed_per_crack)[k];
         if (cross && bonds.alpha[b] != 0.0) {
           bonds.alpha[b] = 0.0;
           ++broken;

@@ -22,5 +22,8 @@ bool crack_crosses(const Crack& crack, const double* xa, const double* xb, int d
 // Sets alpha = 0 on every bond whose segment crosses a crack. Returns the count of
 // broken bonds (each counted once per direction).
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);
+// The same, also counting per crack the bond directions it crosses (cut by it or already
+// cut by an earlier crack): a crack that crosses none has no effect.
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack);
 
 }  // namespace pd

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "input/yaml_keys.hpp"  // SceneError
+
 namespace pd {
 
 double continuum_weighted_volume(double (*influence)(double, double), double delta, int dim) {
@@ -44,6 +46,18 @@ std::string describe(const Particles& p, const Bonds& b, const std::vector<Famil
   if (bad.size() > shown) s += fmt::format("; and {} more", bad.size() - shown);
   return s;
 }
+
+// The largest side of the particles' bounding box: a horizon beyond it cuts every family
+// by the boundary, and "increase the horizon ratio" would only make that worse.
+double largest_extent(const Particles& p) {
+  double extent = 0;
+  for (int r = 0; r < p.dim && p.size() > 0; ++r) {
+    double lo = p.position(0)[r], hi = lo;
+    for (int q = 1; q < p.size(); ++q) lo = std::min(lo, p.position(q)[r]), hi = std::max(hi, p.position(q)[r]);
+    extent = std::max(extent, hi - lo);
+  }
+  return extent;
+}
 }  // namespace
 
 FamilyQualityReport check_family_quality(const Particles& p, const Bonds& b, double (*influence)(double, double),
@@ -75,6 +89,12 @@ FamilyQualityReport check_family_quality(const Particles& p, const Bonds& b, dou
     if (condition > limits.max_shape_condition) singular.push_back({q, condition});
   }
   const double delta = n > 0 ? b.delta[0] : 0;
+  if (!light.empty() && delta > largest_extent(p))  // bad input (exit 2), like a key out of range
+    throw SceneError(fmt::format(
+        "the horizon delta = {:.6g} exceeds the body (its particles span at most {:.6g}): {} particle(s) have "
+        "(almost) no weighted volume, a family being cut by the boundary in every direction: {}; reduce the horizon "
+        "(horizon.ratio or horizon.length) below the body's size",
+        delta, largest_extent(p), light.size(), describe(p, b, light, "ratio")));
   if (!light.empty())
     throw std::runtime_error(fmt::format(
         "{} particle(s) have (almost) no weighted volume: sum w |xi|^2 V is below {:g} of a full horizon's with influence "

@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "input/particle_domain.hpp"
 #include "input/solver_reader.hpp"
@@ -311,6 +309,19 @@ void read_reference_at(const YamlAt& at, Probe& probe, int dim) {
     at.fail("region: only a box or side region has a reference point; give particles or a point");
 }
 
+// A parameter the law does not take is most likely a misspelt one (`stabb` for `stab`):
+// the law then ran with its default, or refused, so say which names it takes.
+void warn_unused_parameters(const abi::LawDescriptor& law, const YamlAt& material,
+                            const std::map<std::string, double>& parameters, std::vector<std::string>& warnings) {
+  for (const std::string& name : unused_parameters(law, parameters)) {
+    std::string taken;
+    for (int i = 0; i < law.n_params; ++i) taken += (i ? ", " : "") + std::string(law.param_names[i]);
+    const YamlAt at = material.child(material.node["parameters"], "parameters").child(material.node["parameters"][name], name);
+    warnings.push_back(at.location() + ": law " + law.name + " takes no parameter '" + name + "', it is ignored (the law's parameters: " +
+                       (taken.empty() ? "none" : taken) + ")");
+  }
+}
+
 Scene read(const YAML::Node& root, const std::string& file) {
   Scene s;
   s.file = file;
@@ -398,6 +409,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       } catch (const std::invalid_argument& e) {
         mi.fail(e.what());
       }
+      warn_unused_parameters(*law, mi, s.materials.back().parameters, s.warnings);
     }
   }
   if (cloud) attach_point_cloud(top.child(root["domain"], "domain"), *cloud, s);
@@ -435,6 +447,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
         crack.time_where = tf.location();
       }
       c.finish();
+      crack.where = ci.location();
       s.cracks.push_back(crack);
     }
   }
@@ -516,22 +529,11 @@ int Scene::material_index(const std::string& name) const {
 }
 
 Scene parse_scene(const std::string& yaml, const std::string& name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(yaml, name);
   if (!root.IsMap()) throw SceneError(name + ":1: (top level): expected a map of keys");
   return read(root, name);
 }
 
-Scene read_scene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path);
-}
+Scene read_scene(const std::string& path) { return parse_scene(read_input_file(path, "scene"), path); }
 
 }  // namespace pd

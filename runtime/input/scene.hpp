@@ -69,6 +69,7 @@ struct Crack {
   // Dynamic scenes: the pressure is scaled by f(t); without one it acts from t = 0.
   std::optional<TimeFunction> time;
   std::string time_where;  // "file:line: cracks[i].time_function"
+  std::string where;       // "file:line: cracks[i]", for warnings about the crack
 };
 
 // output.j_integral: a rectangular contour for the nonlocal J-integral (post/j_integral.hpp).
@@ -116,6 +117,9 @@ struct Scene {
   std::vector<MaterialSpec> materials;  // [0] is the body's material
   std::vector<BoundaryCondition> boundary;
   std::vector<Crack> cracks;
+  // What the reader accepted but a careful user would want to hear about ("file:line: key:
+  // message"): the run logs each as a warning and lists them in summary.json.
+  std::vector<std::string> warnings;
   SolverSpec solver;
   OutputSpec output;
   std::vector<Probe> probes;

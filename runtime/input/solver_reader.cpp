@@ -50,7 +50,8 @@ SolverSpec read_solver(const YamlAt& at) {
   if (!(preconditioner_max >= 0) || preconditioner_max > 9e18)
     sv.get("preconditioner_max_nonzeros").fail("must be a non-negative count");
   s.preconditioner_max_nonzeros = static_cast<long long>(preconditioner_max);
-  if (s.tolerance <= 0 || s.krylov_tolerance <= 0) sv.at().fail("tolerances must be positive");
+  if (s.tolerance <= 0) sv.get("tolerance").fail("tolerances must be positive");  // only a given one is <= 0
+  if (s.krylov_tolerance <= 0) sv.get("krylov_tolerance").fail("tolerances must be positive");
   if (s.max_iterations < 1) sv.get("max_iterations").fail("max_iterations must be at least 1");
   sv.finish();
   return s;

@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 namespace pd {
 
@@ -20,8 +24,27 @@ YamlAt YamlAt::child(const YAML::Node& n, const std::string& key) const {
 
 YamlAt YamlAt::element(const YAML::Node& n, std::size_t i) const { return {n, file, path + "[" + std::to_string(i) + "]"}; }
 
+namespace {
+int line_of(const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 : 0; }
+
+// yaml-cpp keeps every entry of a map with a repeated key but looks up only the first,
+// so `E: 1` followed by `E: 2` would silently mean 1: refuse it, naming both lines.
+void reject_duplicate_keys(const YamlAt& at) {
+  std::map<std::string, int> first_line;
+  for (auto it = at.node.begin(); it != at.node.end(); ++it) {
+    if (!it->first.IsScalar()) continue;
+    const std::string key = it->first.Scalar();
+    const auto [seen, fresh] = first_line.emplace(key, line_of(it->first));
+    if (!fresh)
+      at.child(it->first, key).fail("duplicate key '" + key + "' (first given on line " + std::to_string(seen->second) +
+                                    "; a key may appear once in a map)");
+  }
+}
+}  // namespace
+
 MapReader::MapReader(const YamlAt& at) : at_(at) {
   if (!at.node.IsMap()) at.fail("expected a map of keys");
+  reject_duplicate_keys(at);
 }
 
 bool MapReader::has(const std::string& key) const { return static_cast<bool>(at_.node[key]); }
@@ -31,6 +54,29 @@ YamlAt MapReader::get(const std::string& key) {
   const YAML::Node n = at_.node[key];
   if (!n) at_.fail("missing required key '" + key + "'");
   return at_.child(n, key);
+}
+
+std::string read_input_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw SceneError(path + ": no such " + what + " file");
+  if (std::filesystem::is_directory(status))
+    throw SceneError(path + ": is a directory, not a " + what + " file (give the .yaml file itself)");
+  if (!std::filesystem::is_regular_file(status)) throw SceneError(path + ": not a regular file, cannot read it as a " + what + " file");
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the " + what + " file (permissions?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(path + ": cannot read the " + what + " file");
+  return text.str();
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
 }
 
 double as_number(const YamlAt& at) {

@@ -52,6 +52,12 @@ class MapReader {
   std::set<std::string> used_;
 };
 
+// The text of a scene or study file; `what` ("scene", "study") names it in the errors:
+// a missing, unreadable or non-regular file (a directory) is a SceneError naming the path.
+std::string read_input_file(const std::string& path, const std::string& what);
+// Parses YAML text, turning a syntax error into "file:line: YAML syntax error: ...".
+YAML::Node parse_yaml(const std::string& text, const std::string& file);
+
 double as_number(const YamlAt& at);
 std::vector<double> as_numbers(const YamlAt& at);
 std::string as_text(const YamlAt& at);

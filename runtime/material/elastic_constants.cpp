@@ -41,6 +41,16 @@ IsotropicElastic IsotropicElastic::plane_stress_equivalent() const {
   return from_E_nu(E * (1 + 2 * nu) / ((1 + nu) * (1 + nu)), nu / (1 + nu));
 }
 
+std::vector<std::string> unused_parameters(const abi::LawDescriptor& law, const std::map<std::string, double>& extra) {
+  std::vector<std::string> unused;
+  for (const auto& [name, value] : extra) {
+    bool taken = false;
+    for (int i = 0; i < law.n_params; ++i) taken = taken || name == law.param_names[i];
+    if (!taken) unused.push_back(name);
+  }
+  return unused;
+}
+
 std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
                                    PlaneAssumption plane, const std::map<std::string, double>& extra) {
   const IsotropicElastic m = (law.dim == 2 && plane == PlaneAssumption::Stress) ? elastic.plane_stress_equivalent() : elastic;

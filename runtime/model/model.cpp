@@ -20,7 +20,13 @@ Model build_model(const Scene& scene) {
   m.particles = discretize(scene);
   m.bonds = find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight);
   m.bond_count = m.bonds.bond_count() / 2;
-  m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds) / 2;
+  std::vector<int> crossed;
+  m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
+  m.warnings = scene.warnings;
+  for (std::size_t c = 0; c < scene.cracks.size(); ++c)
+    if (crossed[c] == 0)
+      m.warnings.push_back(scene.cracks[c].where + ": the crack crosses no bond (it lies outside the body, in a hole, "
+                           "or between particles closer than a spacing): it has no effect");
   const Particles& p = m.particles;
   for (int i = 0; i < p.size(); ++i)
     if (m.bonds.family_size(i) == 0)

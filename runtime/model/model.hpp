@@ -28,6 +28,7 @@ struct Model {
   FamilyQualityReport quality;
   long long bond_count = 0;    // each bond once (not per direction)
   int cut_by_cracks = 0;       // bonds the scene's pre-cracks cut, each once
+  std::vector<std::string> warnings;  // the scene's and the set-up's (a crack that crosses no bond)
   // domain.quadrature: obq — the per-bond weights and collocation assembly (eq. 2.13 of
   // paper 001), and the log line that says how many families kept the volume rule.
   std::unique_ptr<Collocation> collocation;

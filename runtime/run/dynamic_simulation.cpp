@@ -117,6 +117,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
                    summary_.particles, summary_.bonds, scene_.delta(), scene_.delta() / scene_.h, summary_.setup_seconds));
   for (const auto& e : summary_.effects) log_("  effect: " + e);
+  for (const auto& w : summary_.warnings) log_("  warning: " + w);
 }
 
 void DynamicSimulation::setup_constraints() {

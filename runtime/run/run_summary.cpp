@@ -5,6 +5,7 @@
 
 #include "output/run_id.hpp"
 #include "run/run_summary.hpp"
+#include "version.hpp"
 
 namespace pd {
 
@@ -15,16 +16,19 @@ void RunSummary::describe(const Scene& s, const Model& model) {
   particles = model.particles.size();
   bonds = model.bond_count;
   broken_bonds = model.cut_by_cracks;
+  warnings = model.warnings;
 }
 
 std::string RunSummary::json() const {
   nlohmann::ordered_json j;
   j["run_id"] = run_id();  // also in the .pvd and every .vtu of this run
+  j["pd"] = {{"version", version()}, {"commit", git_commit()}};  // which binary wrote this
   j["scene"] = scene;
   j["law"] = law;
   j["influence"] = influence;
   j["kernel_variant"] = variant;
   j["effects"] = effects;
+  if (!warnings.empty()) j["warnings"] = warnings;
   j["particles"] = particles;
   j["bonds"] = bonds;
   j["broken_bonds"] = broken_bonds;

@@ -29,6 +29,7 @@ struct RunSummary {
   int broken_bonds = 0;
   std::string variant;
   std::vector<std::string> effects;
+  std::vector<std::string> warnings;  // the scene's and the setup's, each also logged as "  warning: ..."
   std::string solver_path;  // the linear-solver path and why (SolverPlan::reason)
   NewtonResult newton;                    // static runs
   std::optional<long long> bonds_broken_by_damage;  // static runs with `damage`: broken between load steps

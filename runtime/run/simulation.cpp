@@ -80,6 +80,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
                    summary_.particles, summary_.bonds, scene_.delta(), scene_.delta() / scene_.h, summary_.setup_seconds));
   for (const auto& e : summary_.effects) log_("  effect: " + e);
+  for (const auto& w : summary_.warnings) log_("  warning: " + w);
   log_("  solver path: " + summary_.solver_path);
   log_(fmt::format("  families: smallest weighted volume {:.3g} of a full horizon's (particle {}), largest shape-tensor "
                    "condition number {:.3g} (particle {}), weakest response to a homogeneous strain {:.3g} of the strongest "

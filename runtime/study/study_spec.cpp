@@ -1,7 +1,5 @@
 // The study file reader (strict keys, like scenes).
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -64,22 +62,17 @@ Sweep read_sweep(MapReader& m, bool required, const std::vector<std::string>& pr
 
 std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
                       int count, const std::string& smoothing) {
+  // Appended piece by piece: `key += "|" + std::to_string(count)` made GCC 12 warn
+  // (-Wrestrict, a false positive in the inlined temporary's copy).
   std::string key = problem + "|" + law + "|" + influence + "|" + std::to_string(ratio);
-  if (count > 0) key += "|" + std::to_string(count);
-  return smoothing.empty() ? key : key + "|smoothed " + smoothing;
+  if (count > 0) key.append("|").append(std::to_string(count));
+  if (!smoothing.empty()) key.append("|smoothed ").append(smoothing);
+  return key;
 }
 
 StudySpec read_study(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the study file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(read_input_file(path, "study"), path);
+  if (!root.IsMap()) throw SceneError(path + ":1: (top level): expected a map of keys");
   const YamlAt top{root, path, ""};
   MapReader m(top);
   StudySpec s;

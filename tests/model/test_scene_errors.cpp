@@ -244,7 +244,7 @@ TEST(SceneErrors, CracksSolverOutputProbes) {
       {"linear: auto", "linear: magic", "solver.linear", "'magic' is not one of: auto, cholmod, umfpack, cg, bicgstab"},
       {"linear: auto", "nonlinear: picard", "solver.nonlinear", "'picard' is not one of: newton"},
       {"load_steps: 1", "load_steps: 0", "solver.load_steps", "load_steps must be at least 1"},
-      {"tolerance: 1.0e-10", "tolerance: -1", "solver", "tolerances must be positive", "solver:"},
+      {"tolerance: 1.0e-10", "tolerance: -1", "solver.tolerance", "tolerances must be positive", "tolerance: -1"},
       {"max_iterations: 30", "max_iterations: 0", "solver.max_iterations", "max_iterations must be at least 1"},
       {"max_iterations: 30", "max_iterations: 30.5", "solver.max_iterations", "expected an integer"},
       {"max_iterations: 30", "max_iterations: 30, colour: red", "solver.colour", "unknown key 'colour'", "solver:"},
