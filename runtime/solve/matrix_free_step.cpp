@@ -21,13 +21,23 @@ LinearSolverOptions direct_whatever_the_size() {
   return o;
 }
 
+// The preconditioner's factorisation is not the run's linear solver: its choice is logged
+// indented, under its own name, beside the driver's one "linear solver:" line.
+StepLog preconditioner_log(const StepLog& log) {
+  if (!log) return log;
+  return [log](const std::string& line) {
+    const std::string prefix = "linear solver: ";
+    log("  preconditioner factor: " + (line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : line));
+  };
+}
+
 class MatrixFreeStep final : public LinearStep {
  public:
   MatrixFreeStep(const NewtonSettings& s, const NonlinearSystem& system, StepLog log)
       : s_(s),
         log_(std::move(log)),
         approximate_(s.matrix_free_preconditioner == MatrixFreePreconditioner::approximate_tangent),
-        P_solver_(direct_whatever_the_size(), system.symmetric(), log_),
+        P_solver_(direct_whatever_the_size(), system.symmetric(), preconditioner_log(log_)),
         use_cg_(system.symmetric()),
         v_full_(system.size()),
         Kv_full_(system.size()),

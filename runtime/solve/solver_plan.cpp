@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace pd {
 
@@ -71,10 +73,12 @@ SolverChoice choose_linear_solver(LinearMethod method, Preconditioner preconditi
   const bool direct = nonzeros <= direct_max_nonzeros;
   const LinearMethod m = direct ? (symmetric ? LinearMethod::cholmod : LinearMethod::umfpack)
                                 : (symmetric ? LinearMethod::cg : LinearMethod::bicgstab);
+  const std::string rule = direct_max_nonzeros == std::numeric_limits<long long>::max()
+                               ? std::string("direct at any size")
+                               : fmt::format("{} {} nonzeros", direct ? "direct up to" : "Krylov above", direct_max_nonzeros);
   return {m, preconditioner,
-          fmt::format("{} unknowns, {} nonzeros, {} -> {} ({} {} nonzeros)", unknowns, nonzeros,
-                      symmetric ? "symmetric" : "non-symmetric", name_of(m), direct ? "direct up to" : "Krylov above",
-                      direct_max_nonzeros)};
+          fmt::format("{} unknowns, {} nonzeros, {} -> {} ({})", unknowns, nonzeros,
+                      symmetric ? "symmetric" : "non-symmetric", name_of(m), rule)};
 }
 
 std::optional<SolverChoice> fallback_after_failure(const SolverChoice& failed) {
