@@ -99,3 +99,32 @@ TEST(RunSummary, RelaxationTimeSeriesCarriesTheProbe) {
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, static_cast<int>(rows.size()));
 }
+
+// A matrix-free run logs one "linear solver:" line that says what ran; the short-horizon
+// preconditioner's own factorisation is an indented line of its own, without the
+// int64 maximum it is given as a size limit.
+TEST(RunSummary, MatrixFreeRunLogsOneLinearSolverLine) {
+  std::ifstream in(scene_path("crack.yaml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::size_t at = yaml.find("count: 80");
+  ASSERT_NE(at, std::string::npos);
+  yaml.replace(at, 9, "count: 40");
+  yaml += "solver: {linear: matrix_free, preconditioner: short_horizon}\n";
+  Captured c;
+  pd::Simulation sim(pd::parse_scene(yaml, "crack40.yaml"), c.sink());
+  sim.run(false);
+  int linear_lines = 0, factor_lines = 0;
+  std::istringstream lines(c.log);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("linear solver:") != std::string::npos) {
+      ++linear_lines;
+      EXPECT_EQ(line.rfind("  linear solver: matrix-free", 0), 0u) << line;
+    }
+    if (line.rfind("  preconditioner factor: ", 0) == 0) ++factor_lines;
+  }
+  EXPECT_EQ(linear_lines, 1) << c.log;
+  EXPECT_EQ(factor_lines, 1) << c.log;
+  EXPECT_EQ(c.log.find("9223372036854775807"), std::string::npos) << c.log;
+}
