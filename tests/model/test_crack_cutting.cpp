@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "discretize/discretization.hpp"
+#include "unit_box_cloud.hpp"
 
 namespace {
 
@@ -20,15 +21,7 @@ Vec cross(const Vec& a, const Vec& b) { return {a[1] * b[2] - a[2] * b[1], a[2] 
 double unit(double, double) { return 1.0; }
 
 pd::Particles cloud(int dim, double h, double perturbation, unsigned seed) {
-  pd::Scene s;
-  s.dim = dim;
-  s.lo = {0, 0, 0};
-  s.hi = {1, 1, 1};
-  s.h = h;
-  s.perturbation = perturbation;
-  s.seed = seed;
-  s.materials.resize(1);
-  return pd::discretize(s);
+  return pd_test::unit_box_particles(dim, h, perturbation, seed);
 }
 
 // Parametric intersection of p + t (q - p) and a + u (b - a), both parameters in (0, 1).

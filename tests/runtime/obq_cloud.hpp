@@ -9,6 +9,7 @@
 #include "discretize/discretization.hpp"
 #include "discretize/obq_weights.hpp"
 #include "kernel_abi.hpp"
+#include "unit_box_cloud.hpp"
 
 namespace obq_test {
 
@@ -21,18 +22,10 @@ struct Cloud {
 
 // The unit square (dim 2) or cube (dim 3).
 inline Cloud unit_box_cloud(int dim, double h, double horizon_ratio = 3.5, double perturbation = 0.2, int seed = 11) {
-  pd::Scene s;
-  s.dim = dim;
-  s.lo = {0, 0, 0};
-  s.hi = {1, 1, 1};
-  s.h = h;
-  s.perturbation = perturbation;
-  s.seed = seed;
-  s.materials.resize(1);
   Cloud c;
   c.h = h;
   c.delta = horizon_ratio * h;
-  c.particles = pd::discretize(s);
+  c.particles = pd_test::unit_box_particles(dim, h, perturbation, static_cast<unsigned>(seed));
   c.bonds = pd::find_bonds(c.particles, c.delta, pd::abi::find_influence("inv")->weight);
   c.full_ball.resize(c.particles.size());
   for (int p = 0; p < c.particles.size(); ++p) {
