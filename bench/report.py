@@ -197,6 +197,35 @@ def kernel_section(path):
     return out
 
 
+def native_section(portable_path, native_path):
+    """The same kernel benchmarks built portably (the release default) and with -march=native."""
+    def medians(path):
+        runs, _ = load_runs([path])
+        return {name: median_ns(e, "cpu_time") for name, e in runs.items()}
+    port, nat = medians(portable_path), medians(native_path)
+    kinds = ["generated_residual", "generated_tangent_factors", "generated_tangent_dense", "generated_jvp",
+             "sacado_dfad_tangent_dense", "forward_ad_fixed_tangent_dense", "central_fd_tangent_dense"]
+    out = ["### Flags: portable (release default) against `-march=native`\n",
+           "`build/bin/kernel_bench_native`: the generated kernels and the benchmark (AD references included) compiled "
+           "with `-march=native` (this host: AVX-512), run right after `kernel_bench` with the same options. Median ns, "
+           "CPU time; *×* = portable / native (above 1: native is faster).\n",
+           "| law | delta/h | " + " | ".join(k.replace("generated_", "").replace("_tangent_dense", "").replace("_dense", "")
+                                          for k in kinds) + " |",
+           "|---|---|" + "---|" * len(kinds)]
+    cases = sorted({tuple(n.split("/")[1:]) for n in port if n.startswith("generated_residual/")})
+    for law, label in cases:
+        cells = []
+        for k in kinds:
+            name = "%s/%s/%s" % (k, law, label)
+            if name in port and name in nat:
+                cells.append("%s / %s (%.2f×)" % (fmt_ns(port[name]), fmt_ns(nat[name]), port[name] / nat[name]))
+            else:
+                cells.append("–")
+        out.append("| %s | %s | %s |" % (law, label.replace("sqrt13", "3.61"), " | ".join(cells)))
+    out.append("")
+    return out
+
+
 def assembly_section(paths):
     runs, _ = load_runs(paths)
     rows = {}
@@ -301,6 +330,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--command", required=True)
     ap.add_argument("--kernels", required=True)
+    ap.add_argument("--kernels-native", help="kernel_bench_native's JSON (-march=native), for the flags table")
     ap.add_argument("--assembly", nargs="+", required=True)
     ap.add_argument("--solves", nargs="*", default=[], help="JSON lines of bench/solve_bench.py")
     ap.add_argument("--profile", nargs="*", default=[], help="markdown files appended as they are")
@@ -315,6 +345,8 @@ def main():
     out += machine_lines(context, a.build, a.seconds, a.command)
     out.append("")
     out += kernel_section(a.kernels)
+    if a.kernels_native and os.path.exists(a.kernels_native):
+        out += native_section(a.kernels, a.kernels_native)
     out += assembly_section(a.assembly)
     out += solve_section(a.solves)
     for path in a.profile:
