@@ -100,9 +100,13 @@ void DistributedBody::agree_finite(int bad_particle, const char* stage, const Fa
                              " at particle " + std::to_string(global));
 }
 
-void DistributedBody::internal_forces(const FamilyAssembler& a, const std::vector<double>& u,
-                                      std::vector<double>& f) const {
-  zero_local(f);
+// One per-family vector kernel over the owned families, scattered with `sign` into out
+// (owned and ghost particles): kernel(g, p, fam, local) fills the family's local vector.
+template <class Kernel>
+void DistributedBody::scatter_family_vectors(const FamilyAssembler& a, const char* stage, double sign,
+                                             const std::vector<double>& u, std::vector<double>& out,
+                                             Kernel&& kernel) const {
+  zero_local(out);
   FamilyGather g(a.inputs());
   const Collocation* coll = a.inputs().collocation;
   int bad = -1;
@@ -110,37 +114,31 @@ void DistributedBody::internal_forces(const FamilyAssembler& a, const std::vecto
     const int p = part_.owned_particle(i);
     const abi::Family fam = g.gather(p, u.data());
     const int L = fam.n_bonds;
-    double* f_loc = g.local_vector();
-    a.variant().residual(fam, f_loc);
-    if (coll) scale_neighbour_rows(*coll, *a.inputs().bonds, p, 1, f_loc);
-    if (!finite(f_loc, static_cast<std::size_t>(L + 1) * dim_)) bad = p;
+    double* local = g.local_vector();
+    kernel(g, p, fam, local);
+    if (coll) scale_neighbour_rows(*coll, *a.inputs().bonds, p, 1, local);
+    if (!finite(local, static_cast<std::size_t>(L + 1) * dim_)) bad = p;
     for (int k = 0; k <= L && bad < 0; ++k)
       for (int c = 0; c < dim_; ++c)
-        f[static_cast<std::ptrdiff_t>(g.particle(p, k)) * dim_ + c] += f_loc[k * dim_ + c];
+        out[static_cast<std::ptrdiff_t>(g.particle(p, k)) * dim_ + c] += sign * local[k * dim_ + c];
   }
-  agree_finite(bad, "force assembly", a);
+  agree_finite(bad, stage, a);
+}
+
+void DistributedBody::internal_forces(const FamilyAssembler& a, const std::vector<double>& u,
+                                      std::vector<double>& f) const {
+  scatter_family_vectors(
+      a, "force assembly", 1.0, u, f,
+      [&](FamilyGather&, int, const abi::Family& fam, double* out) { a.variant().residual(fam, out); });
 }
 
 void DistributedBody::tangent_product(const FamilyAssembler& a, const std::vector<double>& u,
                                       const std::vector<double>& v, std::vector<double>& Kv) const {
-  zero_local(Kv);
-  FamilyGather g(a.inputs());
-  const Collocation* coll = a.inputs().collocation;
-  int bad = -1;
-  for (int i = 0; i < part_.owned() && bad < 0; ++i) {
-    const int p = part_.owned_particle(i);
-    const abi::Family fam = g.gather(p, u.data());
-    const int L = fam.n_bonds;
-    double* df = g.local_vector();
-    a.variant().jvp(fam, g.gather_local(p, v.data()), df);
-    if (coll) scale_neighbour_rows(*coll, *a.inputs().bonds, p, 1, df);
-    if (!finite(df, static_cast<std::size_t>(L + 1) * dim_)) bad = p;
-    // K = -df/du: the solver's sign, as FamilyAssembler::stiffness_product.
-    for (int k = 0; k <= L && bad < 0; ++k)
-      for (int c = 0; c < dim_; ++c)
-        Kv[static_cast<std::ptrdiff_t>(g.particle(p, k)) * dim_ + c] -= df[k * dim_ + c];
-  }
-  agree_finite(bad, "matrix-free product", a);
+  // K = -df/du: the solver's sign, as FamilyAssembler::stiffness_product.
+  scatter_family_vectors(a, "matrix-free product", -1.0, u, Kv,
+                         [&](FamilyGather& g, int p, const abi::Family& fam, double* out) {
+                           a.variant().jvp(fam, g.gather_local(p, v.data()), out);
+                         });
 }
 
 Mat DistributedBody::create_matrix(const Bonds& bonds) const {

@@ -58,6 +58,9 @@ class DistributedBody {
 
  private:
   void agree_finite(int bad_particle, const char* stage, const FamilyAssembler& a) const;
+  template <class Kernel>
+  void scatter_family_vectors(const FamilyAssembler& a, const char* stage, double sign,
+                              const std::vector<double>& u, std::vector<double>& out, Kernel&& kernel) const;
   MPI_Comm comm_;
   int dim_;
   const Particles& particles_;
