@@ -19,17 +19,20 @@ report() {  # label, log, time file
   local wall rss its err
   wall=$(grep "Elapsed (wall" "$3" | awk '{print $NF}')
   rss=$(grep "Maximum resident" "$3" | awk '{print $NF}')
-  its=$(grep -o "[0-9]* Krylov iterations" "$2" | awk '{s += $1} END {print s + 0}')
-  err=$(grep -o "eq. 48): [0-9.e+-]*" "$2" | awk '{print $NF}')
+  # Krylov iterations summed over Newton steps: "N Krylov iterations" (PETSc), "N linear its" (serial).
+  its=$( (grep -oE "[0-9]+ (Krylov iterations|linear its)" "$2" || true) | awk '{s += $1} END {print s + 0}')
+  err=$( (grep -o "eq. 48): [0-9.e+-]*" "$2" || true) | awk '{print $NF}')
   echo "$1 | wall $wall | peak RSS $((rss / 1024)) MB | Krylov $its | field error $err | load $(cut -d' ' -f1 /proc/loadavg)"
 }
 echo "crack ${count}^2, delta/h = $ratio, $(date -u +%FT%TZ)"
 /usr/bin/time -v -o "$work/t_serial" "$pd" run "$work/serial.yaml" > "$work/serial.log" 2>&1
-report "serial auto ($(grep -o 'solver path: [a-z -]*' "$work/serial.log" | head -1))" "$work/serial.log" "$work/t_serial"
+report "serial auto" "$work/serial.log" "$work/t_serial"
 for n in $(seq 1 "$max_ranks"); do
   # GNU time on mpirun reports mpirun's own RSS: time each rank instead.
+  extra=""
+  if [ -n "$petsc_options" ]; then extra="--petsc-options='$petsc_options'"; fi
   mpirun -n "$n" --oversubscribe sh -c "/usr/bin/time -v -o $work/t_petsc_${n}_\$OMPI_COMM_WORLD_RANK \
-    $pd run $work/petsc.yaml --out $work/petsc_$n --petsc-options='$petsc_options'" > "$work/petsc_$n.log" 2>&1 || true
+    $pd run $work/petsc.yaml --out $work/petsc_$n $extra" > "$work/petsc_$n.log" 2>&1 || true
   worst=$(for f in "$work"/t_petsc_${n}_*; do grep "Maximum resident" "$f" | awk '{print $NF}'; done | sort -n | tail -1)
   cp "$(ls "$work"/t_petsc_${n}_* | head -1)" "$work/t_petsc_$n"
   sed -i "s/Maximum resident set size (kbytes): .*/Maximum resident set size (kbytes): $worst/" "$work/t_petsc_$n"

@@ -5,153 +5,18 @@
 #include <fmt/core.h>
 #include <petscsnes.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "petsc/distributed_body.hpp"
 #include "petsc/petsc_check.hpp"
+#include "petsc/snes_callbacks.hpp"
 #include "solve/distributed_backend.hpp"
 
 namespace pd {
 
 namespace {
-
-// Dirichlet rows: F_d = s (x_d - t_d) and J e_d = s e_d, with the columns zeroed too
-// (MatZeroRowsColumns), so J stays symmetric. s is the mean diagonal of the stiffness:
-// a unit diagonal among entries of order E h^dim would skew the spectrum AMG sees.
-struct SnesContext {
-  DistributedBody* body = nullptr;
-  const DistributedProblem* problem = nullptr;
-  double load = 0, dirichlet_scale = 1;
-  std::vector<char> constrained;            // [n*dim] model order
-  std::vector<PetscInt> constrained_rows;   // owned, PETSc global dofs
-  std::vector<PetscInt> constrained_local;  // the same as offsets into the owned array
-  std::vector<double> target_full;          // prescribed values at this load, model order
-  std::vector<double> u, v, w, e;           // full-length work arrays
-  std::vector<double> linearised;           // the Jacobian's point (the shell's u)
-  Vec previous_iterate = nullptr;
-  int step = 0, steps = 1, round = 0;
-  NewtonResult* result = nullptr;
-  const std::function<void(const std::string&)>* log = nullptr;
-  int rank = 0;
-  std::string error;  // an exception thrown inside a callback, rethrown after SNESSolve
-};
-
-// PETSc is C: an exception must not unwind through it. A callback's exception is kept
-// and PETSc told of a failure; solve_distributed throws it once SNESSolve has returned.
-template <class Body>
-PetscErrorCode guarded(SnesContext& c, Body&& body) {
-  try {
-    return body();
-  } catch (const std::exception& e) {
-    if (c.error.empty()) c.error = e.what();
-    return PETSC_ERR_USER;
-  }
-}
-
-// Adds the effects' owned rows of (forces or products) to out: their full-length output
-// holds garbage at particles far from this rank, which the owned rows never read.
-template <class Add>
-void add_effect_rows(SnesContext& c, std::vector<double>& out, Add&& add) {
-  if (c.problem->effects.empty()) return;
-  const int d = c.body->dim();
-  c.e.assign(out.size(), 0.0);
-  for (const Effect* eff : c.problem->effects) add(*eff, c.e.data());
-  const Partition& part = c.body->partition();
-  for (int i = 0; i < part.owned(); ++i) {
-    const std::ptrdiff_t p = part.owned_particle(i);
-    for (int k = 0; k < d; ++k) out[p * d + k] += c.e[p * d + k];
-  }
-}
-
-PetscErrorCode form_function(SNES, Vec x, Vec F, void* ctx) {
-  auto& c = *static_cast<SnesContext*>(ctx);
-  return guarded(c, [&]() -> PetscErrorCode {
-    const DistributedProblem& pb = *c.problem;
-    c.body->to_local(x, c.u);
-    c.body->internal_forces(*pb.tangent, c.u, c.w);
-    add_effect_rows(c, c.w, [&](const Effect& e, double* out) { e.add_forces(c.u.data(), c.load, out); });
-    for (int p : c.body->local_particles())
-      for (int k = 0; k < c.body->dim(); ++k)
-        c.w[static_cast<std::ptrdiff_t>(p) * c.body->dim() + k] *= -1;  // F = -r
-    c.body->from_local(c.w, F);
-    PetscScalar* f;
-    const PetscScalar* xa;
-    PetscCall(VecGetArray(F, &f));
-    PetscCall(VecGetArrayRead(x, &xa));
-    const Partition& part = c.body->partition();
-    const int d = c.body->dim();
-    for (std::size_t j = 0; j < c.constrained_local.size(); ++j) {
-      const PetscInt l = c.constrained_local[j];
-      const int p = part.owned_particle(static_cast<int>(l / d));
-      f[l] = c.dirichlet_scale * (xa[l] - c.target_full[static_cast<std::size_t>(p) * d + l % d]);
-    }
-    PetscCall(VecRestoreArrayRead(x, &xa));
-    PetscCall(VecRestoreArray(F, &f));
-    return 0;
-  });
-}
-
-PetscErrorCode shell_mult(Mat J, Vec v, Vec y) {
-  void* ctx;
-  PetscCall(MatShellGetContext(J, &ctx));
-  auto& c = *static_cast<SnesContext*>(ctx);
-  return guarded(c, [&]() -> PetscErrorCode {
-    c.body->to_local(v, c.v);
-    for (int p : c.body->local_particles())
-      for (int k = 0; k < c.body->dim(); ++k) {
-        const std::size_t i = static_cast<std::size_t>(p) * c.body->dim() + k;
-        if (c.constrained[i]) c.v[i] = 0;
-      }
-    c.body->tangent_product(*c.problem->tangent, c.linearised, c.v, c.w);
-    add_effect_rows(c, c.w, [&](const Effect& e, double* out) {
-      e.add_stiffness_product(c.linearised.data(), c.load, c.v.data(), out);
-    });
-    c.body->from_local(c.w, y);
-    PetscScalar* ya;
-    const PetscScalar* va;
-    PetscCall(VecGetArray(y, &ya));
-    PetscCall(VecGetArrayRead(v, &va));
-    for (PetscInt l : c.constrained_local) ya[l] = c.dirichlet_scale * va[l];
-    PetscCall(VecRestoreArrayRead(v, &va));
-    PetscCall(VecRestoreArray(y, &ya));
-    return 0;
-  });
-}
-
-PetscErrorCode form_jacobian(SNES, Vec x, Mat J, Mat P, void* ctx) {
-  auto& c = *static_cast<SnesContext*>(ctx);
-  return guarded(c, [&]() -> PetscErrorCode {
-    c.body->to_local(x, c.linearised);
-    c.body->assemble_matrix(*c.problem->preconditioner, c.linearised, P);
-    PetscCall(MatZeroRowsColumns(P, static_cast<PetscInt>(c.constrained_rows.size()),
-                                 c.constrained_rows.data(), c.dirichlet_scale, nullptr, nullptr));
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-    return 0;
-  });
-}
-
-PetscErrorCode monitor(SNES snes, PetscInt it, PetscReal fnorm, void* ctx) {
-  auto& c = *static_cast<SnesContext*>(ctx);
-  NewtonRecord rec;
-  rec.step = c.step, rec.iteration = static_cast<int>(it), rec.round = c.round, rec.load = c.load,
-  rec.residual = fnorm;
-  if (it > 0) {
-    KSP ksp;
-    PetscInt kits = 0;
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(KSPGetIterationNumber(ksp, &kits));
-    rec.linear_iterations = static_cast<int>(kits);
-  }
-  c.result->history.push_back(rec);
-  if (c.rank == 0 && *c.log)
-    (*c.log)(fmt::format(
-        "  load {:.3g} (step {}/{}) iteration {}: |F| = {:.6e}{}", c.load, c.step, c.steps, it, fnorm,
-        it > 0 ? fmt::format(", {} Krylov iterations", rec.linear_iterations) : std::string()));
-  return 0;
-}
-
 // The whole solution on every rank, in the model's order.
 void gather_all(DistributedBody& body, Vec x, Eigen::VectorXd& u) {
   VecScatter scatter;
@@ -193,6 +58,17 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
   const Partition& part = body.partition();
   NewtonResult result;
   result.unknowns = pb.dofs->free_count();
+  {  // What the partition costs: the ghost layer is what every product sends and receives.
+    const int local[2] = {part.owned(), static_cast<int>(part.ghosts.size())};
+    int lo[2], hi[2];
+    MPI_Allreduce(local, lo, 2, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+    MPI_Allreduce(local, hi, 2, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+    if (part.rank == 0 && log)
+      log(fmt::format(
+          "  partition: {} rank(s), Morton order, {}..{} particles and {}..{} ghosts (one horizon) per rank; "
+          "at most {:.1f}% of a rank's particles are ghosts",
+          part.ranks, lo[0], hi[0], lo[1], hi[1], 100.0 * hi[1] / std::max(lo[0], 1)));
+  }
 
   SnesContext c;
   c.body = &body, c.problem = &pb, c.result = &result, c.log = &log, c.rank = part.rank,
