@@ -125,6 +125,14 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
         "KSPSetTolerances");
   check(KSPGetPC(ksp, &pc), "KSPGetPC");
   check(PCSetType(pc, PCGAMG), "PCSetType");
+  if (s.adaptive_forcing) {
+    // Eisenstat-Walker forcing as the serial matrix-free path has it (their choice 2,
+    // gamma 0.9, exponent 2, at most max_forcing): loose linear solves far from the
+    // solution, tight near it. -snes_ksp_ew false turns it off (then krylov_tolerance).
+    check(SNESKSPSetUseEW(snes, PETSC_TRUE), "SNESKSPSetUseEW");
+    check(SNESKSPSetParametersEW(snes, 2, s.max_forcing, s.max_forcing, 0.9, 2.0, PETSC_DEFAULT, PETSC_DEFAULT),
+          "SNESKSPSetParametersEW");
+  }
   check(SNESSetFromOptions(snes), "SNESSetFromOptions");  // the scene's and the command line's options win
   {
     KSPType kt;
