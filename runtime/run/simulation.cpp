@@ -25,6 +25,7 @@
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
+#include "solve/distributed_backend.hpp"
 #include "solve/stopwatch.hpp"
 #include "solve/solver_plan.hpp"
 
@@ -47,7 +48,8 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
       plan_needs_short_family_size(scene_.solver) ? mean_short_family_size(model_.bonds, short_delta, influence->weight) : -1;
   plan_ = plan_solver(scene_.solver, model_.size(scene_, short_family));
   summary_.solver_path = plan_.reason;
-  if (plan_.short_horizon_preconditioner()) {
+  // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
+  if (plan_.short_horizon_preconditioner() && !(plan_.backend == Backend::petsc && short_delta >= scene_.delta())) {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
     // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
     short_bonds_ = find_bonds(model_.particles, short_delta, influence->weight);
@@ -160,7 +162,12 @@ RunSummary Simulation::run(bool write) {
       settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
       settings.max_resolves = scene_.damage->max_resolves;
     }
-    summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
+    if (plan_.backend == Backend::petsc) {
+      const FamilyAssembler* pc = approximation_ ? approximation_.get() : model_.assembler.get();
+      summary_.newton = solve_distributed({model_.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log_);
+    } else {
+      summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
+    }
   } else {
     summary_.newton.converged = true;
     summary_.newton.unknowns = dofs.free_count();

@@ -16,11 +16,22 @@ std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, 
 }
 
 bool plan_needs_short_family_size(const SolverSpec& spec) {
-  return spec.linear == LinearMethod::automatic && spec.preconditioner == Preconditioner::automatic;
+  return spec.backend == Backend::serial && spec.linear == LinearMethod::automatic &&
+         spec.preconditioner == Preconditioner::automatic;
 }
 
 SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
   SolverPlan plan{spec.nonlinear, spec.linear, spec.preconditioner, {}};
+  if (spec.backend == Backend::petsc) {  // PETSc decides the rest (petsc_options)
+    plan.backend = Backend::petsc;
+    plan.linear = LinearMethod::matrix_free;
+    plan.preconditioner = Preconditioner::short_horizon;
+    const double ratio = std::min(size.delta_over_h, spec.preconditioner_ratio);
+    plan.reason = fmt::format("PETSc: SNES Newton, Krylov on the generated tangent-vector product, the preconditioner "
+                              "(default GAMG) on the stiffness at delta/h = {:.3g}{}",
+                              ratio, spec.petsc_options.empty() ? "" : "; options " + spec.petsc_options);
+    return plan;
+  }
   if (spec.linear != LinearMethod::automatic) {
     plan.reason = fmt::format("linear: {} (scene)", name_of(spec.linear));
     return plan;

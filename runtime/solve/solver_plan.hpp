@@ -35,6 +35,10 @@ struct SolverPlan {
   LinearMethod linear = LinearMethod::automatic;
   Preconditioner preconditioner = Preconditioner::automatic;
   std::string reason;  // one line for the log and the summary ("solver path")
+  // petsc: SNES/KSP/PC over the MPI processes (solve/distributed_backend.hpp); matrix-free
+  // here too (the tangent is a shell matrix), with an assembled preconditioning matrix
+  // on the horizon min(delta, preconditioner_ratio h).
+  Backend backend = Backend::serial;
   bool matrix_free() const { return linear == LinearMethod::matrix_free; }
   // Matrix-free, preconditioned by the factorised stiffness of a shorter horizon.
   bool short_horizon_preconditioner() const { return matrix_free() && preconditioner != Preconditioner::diagonal; }
