@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assembly/moments.hpp"
+#include "assembly/scatter.hpp"
 #include "local_matrix.hpp"
 
 namespace pd {
@@ -19,8 +20,11 @@ struct ThreadScratch {
   FamilyGather gather;
   TangentScratch tangent;
   abi::TangentFactors factors;
+  std::vector<int> strides;  // column_stride of each local particle, for the scatter
   ThreadScratch(const FamilyInputs& in, int n_states)
-      : gather(in), factors(tangent.view(in.dim(), n_states, gather.max_bonds())) {}
+      : gather(in),
+        factors(tangent.view(in.dim(), n_states, gather.max_bonds())),
+        strides(static_cast<std::size_t>(gather.max_bonds()) + 1) {}
 };
 
 // True when all n values are finite: 0*x is 0 for finite x and NaN for NaN or Inf, so
@@ -62,7 +66,11 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.collocation = options.collocation;
   inputs_.cache_max_bonds();
   update_moments();
-  if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim);
+  const Coupling coupling = options.coupling.value_or(coupling_of_law(law.n_states));
+  if (coupling == Coupling::pairwise && law.n_states > 0)
+    throw std::invalid_argument(std::string("assembler: law ") + law.name + " has states; its tangent couples every two " +
+                                "particles of a family, not only the pairs of the pairwise pattern");
+  if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim, coupling);
 }
 
 void FamilyAssembler::update_moments() { compute_moments(inputs_, law_, variant_); }
@@ -134,18 +142,9 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
       form_local_matrix(d, S, fam, s.factors, M);
       if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, m, M);
       if (!all_finite(M, static_cast<std::size_t>(m) * m)) return "tangent";
-      const std::span<const int> slots = pat->family_slots(p);
-      for (int b = 0; b <= L; ++b) {
-        const int stride = pat->column_stride(s.gather.particle(p, b));
-        for (int a = 0; a <= L; ++a) {
-          const int base = slots[a * (L + 1) + b];
-          for (int r = 0; r < d; ++r) {
-            const double* row = M + static_cast<std::ptrdiff_t>(a * d + r) * m + b * d;
-            // K = -df/du: the solver's sign.
-            for (int q = 0; q < d; ++q) values[base + q * stride + r] -= row[q];
-          }
-        }
-      }
+      int* strides = s.strides.data();
+      for (int a = 0; a <= L; ++a) strides[a] = pat->column_stride(s.gather.particle(p, a));
+      scatter_family(d, pat->coupling(), M, L, pat->family_slots(p).data(), strides, values);
     } else {
       variant_.residual(fam, f_loc);
     }

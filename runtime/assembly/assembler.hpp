@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "assembly/family_colouring.hpp"
@@ -20,6 +21,10 @@ struct AssemblerOptions {
   // Non-null: collocation assembly with these per-bond weights (collocation.hpp); the
   // stiffness is then not symmetric and there is no energy. Must outlive the assembler.
   const Collocation* collocation = nullptr;
+  // The pattern's coupling; unset: the law's (coupling_of_law: pairwise for a law
+  // without states). Coupling::family on a pairwise law stores its structural zeros
+  // (the two-horizon pattern, for comparison); pairwise on a law with states throws.
+  std::optional<Coupling> coupling;
 };
 
 // Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over

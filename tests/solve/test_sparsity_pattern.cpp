@@ -46,7 +46,7 @@ void check_pattern(int dim, int nx, int ny, int nz, double ratio) {
         const int qb = b == 0 ? p : B.neighbor[B.offsets[p] + b - 1];
         for (int r = 0; r < dim; ++r)
           for (int q = 0; q < dim; ++q) {
-            const int s = slots[a * (L + 1) + b] + q * pat.column_stride(qb) + r;
+            const int s = slots[b * (L + 1) + a] + q * pat.column_stride(qb) + r;  // column-major slots
             const int col = qb * dim + q;
             ASSERT_GE(s, K.outerIndexPtr()[col]);
             ASSERT_LT(s, K.outerIndexPtr()[col + 1]);
