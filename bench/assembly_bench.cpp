@@ -18,6 +18,8 @@
 //   build/bin/assembly_bench --benchmark_filter='/200/35/' --benchmark_repetitions=3
 //   build/bin/assembly_bench --grids=100,200 --max_nonzeros=2e8   (which cases to register;
 //   the assembled cases only for grids whose K has at most max_nonzeros entries)
+//   build/bin/assembly_bench --chunk_size=256   (AssemblerOptions::chunk_size: runs of family
+//   indices instead of the default tiles, to compare the visiting orders)
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -35,6 +37,8 @@
 #include "material/elastic_constants.hpp"
 
 namespace {
+
+int g_chunk_size = 0;  // --chunk_size
 
 // Resident set size and its peak, bytes (/proc/self/status).
 long status_kb(const char* key) {
@@ -83,6 +87,7 @@ struct Grid {
     pd::AssemblerOptions o;
     o.intact = true;  // no broken bond: the variant with alpha folded to 1
     o.matrix = matrix;
+    o.chunk_size = g_chunk_size;
     a = std::make_unique<pd::FamilyAssembler>(
         p, b, *law, std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, o);
     u.resize(p.x.size());
@@ -221,6 +226,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--grids=", 8) == 0)
       sizes = int_list(argv[i] + 8);
+    else if (std::strncmp(argv[i], "--chunk_size=", 13) == 0)
+      g_chunk_size = std::atoi(argv[i] + 13);
     else if (std::strncmp(argv[i], "--max_nonzeros=", 15) == 0)
       max_nonzeros = std::atof(argv[i] + 15);
     else

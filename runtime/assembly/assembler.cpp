@@ -46,7 +46,7 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
     : law_(law),
       variant_(options.intact ? law.intact : law.damaged),
       options_(options),
-      colouring_(bonds, options.chunk_size) {
+      colouring_(particles, bonds, options.chunk_size) {
   if (law.dim != particles.dim || bonds.dim != particles.dim)
     throw std::invalid_argument(std::string("assembler: law ") + law.name + " is " + std::to_string(law.dim) +
                                 "D, the body is " + std::to_string(particles.dim) + "D");
@@ -105,8 +105,8 @@ void FamilyAssembler::for_each_family(const char* stage, Body&& body) const {
 #pragma omp for schedule(dynamic, 1)
       for (int i = colouring_.colour_start(c); i < colouring_.colour_start(c + 1); ++i) {
         const int chunk = colouring_.chunk_id(i);
-        for (int p = colouring_.chunk_begin(chunk); p < colouring_.chunk_end(chunk); ++p)
-          if (const char* failed = body(s, p)) {
+        for (int j = colouring_.chunk_begin(chunk); j < colouring_.chunk_end(chunk); ++j)
+          if (const int p = colouring_.family(j); const char* failed = body(s, p)) {
 #pragma omp critical(pd_assembly_error)
             if (bad < 0 || p < bad) bad = p, bad_stage = failed;
           }

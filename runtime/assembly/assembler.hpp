@@ -17,7 +17,7 @@ struct AssemblerOptions {
   bool intact = false;  // the variant with alpha folded to 1: only when no bond is broken
   bool matrix = true;   // build the sparsity pattern and slots (false: matrix-free use only)
   int threads = 0;      // 0: OpenMP's default
-  int chunk_size = 0;   // families per colouring chunk; 0: automatic
+  int chunk_size = 0;   // 0: tiles of two horizons as colouring chunks; > 0: runs of this many family indices
   // Non-null: collocation assembly with these per-bond weights (collocation.hpp); the
   // stiffness is then not symmetric and there is no energy. Must outlive the assembler.
   const Collocation* collocation = nullptr;
