@@ -128,7 +128,11 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
     if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pat.nonzeros() || !K->isCompressed())
       *K = pat.matrix();
     values = K->valuePtr();
-    std::fill(values, values + K->nonZeros(), 0.0);
+    // Zeroed by the assembly's threads: one thread wrote K's 0.8 GB at 400^2, delta/h 3.5
+    // at about a tenth of the whole assembly's time.
+    const std::ptrdiff_t nz = K->nonZeros();
+#pragma omp parallel for schedule(static) num_threads(thread_count())
+    for (std::ptrdiff_t i = 0; i < nz; ++i) values[i] = 0.0;
   }
   if (!forces && !K) return;
   const SparsityPattern* pat = K ? pattern_.get() : nullptr;
