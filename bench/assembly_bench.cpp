@@ -20,6 +20,8 @@
 //   the assembled cases only for grids whose K has at most max_nonzeros entries)
 //   build/bin/assembly_bench --chunk_size=256   (AssemblerOptions::chunk_size: runs of family
 //   indices instead of the default tiles, to compare the visiting orders)
+//   build/bin/assembly_bench --law=bond_based_conical_2d   (another 2D law; a law without
+//   states gets the one-horizon pattern)
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -29,6 +31,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,7 +41,8 @@
 
 namespace {
 
-int g_chunk_size = 0;  // --chunk_size
+int g_chunk_size = 0;                              // --chunk_size
+std::string g_law = "silling_plane_strain";        // --law
 
 // Resident set size and its peak, bytes (/proc/self/status).
 long status_kb(const char* key) {
@@ -81,7 +85,8 @@ struct Grid {
     scene.h = 1.0 / n;
     scene.materials.resize(1);
     p = pd::discretize(scene);
-    const auto* law = pd::abi::find_law("silling_plane_strain");
+    const auto* law = pd::abi::find_law(g_law);
+    if (law == nullptr) throw std::invalid_argument("assembly_bench: no law " + g_law);
     b = pd::find_bonds(p, ratio10 / 10.0 * scene.h, pd::abi::find_influence("cubic")->weight);
     const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
     pd::AssemblerOptions o;
@@ -226,6 +231,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--grids=", 8) == 0)
       sizes = int_list(argv[i] + 8);
+    else if (std::strncmp(argv[i], "--law=", 6) == 0)
+      g_law = argv[i] + 6;
     else if (std::strncmp(argv[i], "--chunk_size=", 13) == 0)
       g_chunk_size = std::atoi(argv[i] + 13);
     else if (std::strncmp(argv[i], "--max_nonzeros=", 15) == 0)
