@@ -43,7 +43,7 @@ Model build_model(const Scene& scene) {
 
 ProblemSize Model::size(const Scene& scene, double short_family_size) const {
   return {particles.size(), 2.0 * static_cast<double>(bond_count) / particles.size(), particles.dim,
-          scene.delta() / scene.h, short_family_size};
+          scene.delta() / scene.h, short_family_size, coupling_of_law(law->n_states) == Coupling::pairwise};
 }
 
 AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads) {
