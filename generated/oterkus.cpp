@@ -899,6 +899,668 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   return d;
 }
 
+// oterkus_3d_damaged_moments: per bond 2 add, 14 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  double s_m1 = 0.0;
+  double s_m2 = 0.0;
+  double s_mx = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b0 = xi_0 * xi_0;
+    const double b1 = xi_1 * xi_1;
+    const double b2 = b0 + b1 + xi_2 * xi_2;
+    const double b3 = std::sqrt(b2);
+    s_m1 += b3 * V * alpha * w;
+    s_m2 += b2 * V * alpha * w;
+    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
+  }
+  moments[0] = s_m1;
+  moments[1] = s_m2;
+  moments[2] = s_mx;
+}
+
+// oterkus_3d_damaged_residual: per bond 12 add, 32 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
+  const double p7 = p5 * P_G;
+  for (int k = 0; k < L; ++k) {
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 3 + 1] = -b13;
+    forces[1] += b13;
+    forces[(k + 1) * 3 + 2] = -b14;
+    forces[2] += b14;
+  }
+}
+
+// oterkus_3d_damaged_tangent: per bond 41 add, 125 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 4.5 * P_K - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m1;
+  const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = 0.6666666666666666 * p6 * p7;
+  for (int k = 0; k < L; ++k) {
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    const double b23 = 2.0 * b18;
+    const double b24 = b23 * b15 * alpha * w;
+    const double b25 = p8 * b15 * b16;
+    const double b26 = p9 * b15;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = Y_2 * Y_2;
+    const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
+    const double b31 = b30 * b15;
+    const double b32 = b14 * b31 * b16;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * alpha * w;
+    const double b34 = b23 * b31 * alpha * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * alpha * w;
+    const double b36 = b34 * Y_1 * Y_0;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * alpha * w;
+    const double b38 = b34 * Y_2;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    const double b41 = p0 * b13;
+    const double b42 = b41 * b30 * b16 * V * alpha * w;
+    const double b43 = p0 * b17 * b15 * b16 * V * alpha * w;
+    const double b44 = b41 * b17 * b31 * b16 * V * alpha * w;
+    const double b45 = p10 * b13 * b30 * b16 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
+    if (forces != nullptr) forces[2] += b22;
+    factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
+    factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
+    factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
+    factors.direct[k * 9 + 3] = b33 * Y_1 - b36;
+    factors.direct[k * 9 + 4] = b24 + b35 * Y_1 - b34 * b28;
+    factors.direct[k * 9 + 5] = b37 * Y_1 - b40;
+    factors.direct[k * 9 + 6] = b33 * Y_2 - b39;
+    factors.direct[k * 9 + 7] = b35 * Y_2 - b40;
+    factors.direct[k * 9 + 8] = b24 + b37 * Y_2 - b34 * b29;
+    factors.right[(k * 1 + 0) * 3 + 0] = b42 * Y_0 + b43 * xi_0 - b44 * Y_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b42 * Y_1 + b43 * xi_1 - b44 * Y_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b42 * Y_2 + b43 * xi_2 - b44 * Y_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+  }
+}
+
+// oterkus_3d_damaged_jvp: per bond 52 add, 134 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
+    s_theta += b7 * b8 * b9 * V * alpha * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m1;
+  const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
+  for (int k = 0; k < L; ++k) {
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * alpha * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = Y_2 * Y_2;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
+    const double b34 = b33 * b24;
+    const double b35 = b23 * b34 * b25;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * alpha * w;
+    const double b37 = b26 * b34 * alpha * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * alpha * w;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * alpha * w;
+    const double b41 = b37 * Y_2;
+    const double b42 = b41 * Y_0;
+    const double b43 = p19 * b22 * b33 * b25 * alpha * w;
+    const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
+    const double b45 = b41 * Y_1;
+    const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
+    const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
+    df[(k + 1) * 3 + 0] = -b44;
+    df[0] += b44;
+    df[(k + 1) * 3 + 1] = -b46;
+    df[1] += b46;
+    df[(k + 1) * 3 + 2] = -b47;
+    df[2] += b47;
+  }
+}
+
+// oterkus_3d_damaged_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  outputs[0] = s_theta;
+}
+
+// oterkus_3d_intact_moments: per bond 2 add, 11 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  double s_m1 = 0.0;
+  double s_m2 = 0.0;
+  double s_mx = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b0 = xi_0 * xi_0;
+    const double b1 = xi_1 * xi_1;
+    const double b2 = b0 + b1 + xi_2 * xi_2;
+    const double b3 = std::sqrt(b2);
+    s_m1 += b3 * V * w;
+    s_m2 += b2 * V * w;
+    s_mx += 1.0 / b2 * V * w * b1 * b0;
+  }
+  moments[0] = s_m1;
+  moments[1] = s_m2;
+  moments[2] = s_mx;
+}
+
+// oterkus_3d_intact_residual: per bond 12 add, 30 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
+  const double p7 = p5 * P_G;
+  for (int k = 0; k < L; ++k) {
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 3 + 1] = -b13;
+    forces[1] += b13;
+    forces[(k + 1) * 3 + 2] = -b14;
+    forces[2] += b14;
+  }
+}
+
+// oterkus_3d_intact_tangent: per bond 41 add, 114 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 4.5 * P_K - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m1;
+  const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = 0.6666666666666666 * p6 * p7;
+  for (int k = 0; k < L; ++k) {
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    const double b23 = 2.0 * b18;
+    const double b24 = b23 * b15 * w;
+    const double b25 = p8 * b15 * b16;
+    const double b26 = p9 * b15;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = Y_2 * Y_2;
+    const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
+    const double b31 = b30 * b15;
+    const double b32 = b14 * b31 * b16;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * w;
+    const double b34 = b23 * b31 * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * w;
+    const double b36 = b34 * Y_1 * Y_0;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * w;
+    const double b38 = b34 * Y_2;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    const double b41 = p0 * b13;
+    const double b42 = b41 * b30 * b16 * V * w;
+    const double b43 = p0 * b17 * b15 * b16 * V * w;
+    const double b44 = b41 * b17 * b31 * b16 * V * w;
+    const double b45 = p10 * b13 * b30 * b16 * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
+    if (forces != nullptr) forces[2] += b22;
+    factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
+    factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
+    factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
+    factors.direct[k * 9 + 3] = b33 * Y_1 - b36;
+    factors.direct[k * 9 + 4] = b24 + b35 * Y_1 - b34 * b28;
+    factors.direct[k * 9 + 5] = b37 * Y_1 - b40;
+    factors.direct[k * 9 + 6] = b33 * Y_2 - b39;
+    factors.direct[k * 9 + 7] = b35 * Y_2 - b40;
+    factors.direct[k * 9 + 8] = b24 + b37 * Y_2 - b34 * b29;
+    factors.right[(k * 1 + 0) * 3 + 0] = b42 * Y_0 + b43 * xi_0 - b44 * Y_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b42 * Y_1 + b43 * xi_1 - b44 * Y_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b42 * Y_2 + b43 * xi_2 - b44 * Y_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+  }
+}
+
+// oterkus_3d_intact_jvp: per bond 52 add, 124 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * w;
+    s_theta += b7 * b8 * b9 * V * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m1;
+  const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
+  for (int k = 0; k < L; ++k) {
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = Y_2 * Y_2;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
+    const double b34 = b33 * b24;
+    const double b35 = b23 * b34 * b25;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * w;
+    const double b37 = b26 * b34 * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * w;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * w;
+    const double b41 = b37 * Y_2;
+    const double b42 = b41 * Y_0;
+    const double b43 = p19 * b22 * b33 * b25 * w;
+    const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
+    const double b45 = b41 * Y_1;
+    const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
+    const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
+    df[(k + 1) * 3 + 0] = -b44;
+    df[0] += b44;
+    df[(k + 1) * 3 + 1] = -b46;
+    df[1] += b46;
+    df[(k + 1) * 3 + 2] = -b47;
+    df[2] += b47;
+  }
+}
+
+// oterkus_3d_intact_outputs: per bond 8 add, 16 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  outputs[0] = s_theta;
+}
+
+pd::abi::LawDescriptor oterkus_3d_descriptor() {
+  static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "oterkus_3d";
+  d.summary = "Oterkus dilatation law, 3D (paper 003 eqs. 7-8, a, b, d from discrete sums); params K, G";
+  d.dim = 3;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
+  d.n_moments = 3;
+  d.n_states = 1;
+  d.damaged.moments = &oterkus_3d_damaged_moments;
+  d.damaged.residual = &oterkus_3d_damaged_residual;
+  d.damaged.residual_ops = {12, 32, 4, 2};
+  d.damaged.tangent = &oterkus_3d_damaged_tangent;
+  d.damaged.tangent_ops = {41, 125, 5, 2};
+  d.damaged.jvp = &oterkus_3d_damaged_jvp;
+  d.damaged.jvp_ops = {52, 134, 6, 2};
+  d.damaged.outputs = &oterkus_3d_damaged_outputs;
+  d.intact.moments = &oterkus_3d_intact_moments;
+  d.intact.residual = &oterkus_3d_intact_residual;
+  d.intact.residual_ops = {12, 30, 4, 2};
+  d.intact.tangent = &oterkus_3d_intact_tangent;
+  d.intact.tangent_ops = {41, 114, 5, 2};
+  d.intact.jvp = &oterkus_3d_intact_jvp;
+  d.intact.jvp_ops = {52, 124, 6, 2};
+  d.intact.outputs = &oterkus_3d_intact_outputs;
+  return d;
+}
+
 // oterkus_paper_d_plane_strain_damaged_moments: per bond 1 add, 10 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;

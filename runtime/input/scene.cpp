@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "input/block_domain.hpp"
 #include "input/particle_domain.hpp"
 #include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
@@ -12,9 +13,6 @@
 
 namespace pd {
 
-namespace {
-const std::vector<std::string> kSides{"left", "right", "bottom", "top", "back", "front"};
-
 Point to_point(const YamlAt& at, int dim) {
   const auto v = as_numbers(at);
   if (static_cast<int>(v.size()) != dim) at.fail("expected " + std::to_string(dim) + " coordinates");
@@ -22,6 +20,9 @@ Point to_point(const YamlAt& at, int dim) {
   for (int i = 0; i < dim; ++i) p[i] = v[i];
   return p;
 }
+
+namespace {
+const std::vector<std::string> kSides{"left", "right", "bottom", "top", "back", "front"};
 
 int component_index(const YamlAt& at, const std::string& c, int dim) {
   const int i = c == "x" ? 0 : c == "y" ? 1 : c == "z" ? 2 : -1;
@@ -333,8 +334,10 @@ Scene read(const YAML::Node& root, const std::string& file) {
   // A body from a particle file, or a box lattice.
   const YAML::Node domain = root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
   const bool from_file = domain && domain.IsMap() && domain["particles"];
+  const bool from_blocks = domain && domain.IsMap() && domain["blocks"];
   std::optional<ParticleFile> cloud;
   if (from_file) cloud = read_particle_domain(m.get("domain"), s);
+  else if (from_blocks) read_block_domain(m.get("domain"), s);
   else {
     MapReader d(m.get("domain"));
     MapReader box(d.get("box"));
@@ -521,6 +524,13 @@ Scene read(const YAML::Node& root, const std::string& file) {
   return s;
 }
 }  // namespace
+
+std::vector<double> Scene::particle_horizons() const {
+  std::vector<double> delta(particle_spacing.size());
+  for (std::size_t i = 0; i < delta.size(); ++i)
+    delta[i] = horizon_length > 0 ? horizon_length : horizon_ratio * particle_spacing[i];
+  return delta;
+}
 
 int Scene::material_index(const std::string& name) const {
   for (std::size_t i = 0; i < materials.size(); ++i)

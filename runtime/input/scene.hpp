@@ -132,12 +132,20 @@ struct Scene {
   // domain.particles: the body read from a file (input/particle_domain.hpp), used by
   // discretize() instead of the box lattice.
   std::shared_ptr<const Particles> point_cloud;
+  // domain.blocks (input/block_domain.hpp): the lattice spacing of each particle of
+  // point_cloud; empty for a single lattice or a particle file.
+  std::vector<double> particle_spacing;
 
   double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
+  // The horizon of each particle of a body of blocks (ratio times its spacing, or the
+  // one length); empty otherwise, when delta() is everyone's.
+  std::vector<double> particle_horizons() const;
   int material_index(const std::string& name) const;
 };
 
 struct YamlAt;
+// A point of the scene: exactly dim numbers (SceneError naming the key otherwise).
+Point to_point(const YamlAt& at, int dim);
 // A region map (side / box / outside / collar / all); used by the section readers.
 Region read_region(const YamlAt& at, int dim);
 

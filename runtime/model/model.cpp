@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/lattice_blocks.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
@@ -18,7 +19,9 @@ Model build_model(const Scene& scene) {
   m.influence = abi::find_influence(scene.influence);
   if (!m.law || !m.influence) throw std::invalid_argument("unknown law or influence function");
   m.particles = discretize(scene);
-  m.bonds = find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight);
+  m.bonds = scene.particle_spacing.empty()
+                ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
+                : find_bonds_per_particle(m.particles, scene.particle_horizons(), m.influence->weight);  // domain.blocks
   m.bond_count = m.bonds.bond_count() / 2;
   std::vector<int> crossed;
   m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
