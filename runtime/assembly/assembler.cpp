@@ -131,7 +131,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
     if (K) {
       variant_.tangent(fam, f_loc, s.factors);
       double* M = s.gather.local_matrix();
-      form_local_matrix(d, S, fam, s.factors, M);
+      form_local_matrix(variant_, d, S, fam, s.factors, M);
       if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, m, M);
       if (!all_finite(M, static_cast<std::size_t>(m) * m)) return "tangent";
       const std::span<const int> slots = pat->family_slots(p);
