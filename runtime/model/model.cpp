@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "discretize/compensation.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
 #include "discretize/partial_volume.hpp"
@@ -38,6 +39,10 @@ Model build_model(const Scene& scene) {
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)
     m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
+  if (scene.compensation) {
+    const CompensationInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight};
+    apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
+  }
   if (scene.quadrature == Quadrature::Obq)
     m.collocation = std::make_unique<Collocation>(make_obq_collocation(m.particles, m.bonds, m.collocation_description));
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
