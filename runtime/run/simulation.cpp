@@ -19,6 +19,7 @@
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
 #include "damage/critical_stretch.hpp"
+#include "post/peridynamic_stress.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
 #include "model/model.hpp"
@@ -184,7 +185,8 @@ RunSummary Simulation::run(bool write) {
     if (!std::isfinite(u[i]))
       throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / model_.particles.dim, summary_.law));
   u_.assign(u.data(), u.data() + u.size());
-  summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_);
+  if (wants_stress(scene_)) stress_ = peridynamic_stress(*model_.assembler, u_.data());
+  summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_, &stress_);
   log_zero_energy_content(model_.particles, model_.bonds, u_, summary_.law, log_);
   if (scene_.reference) {
     summary_.has_field_error = true;
@@ -232,6 +234,7 @@ void Simulation::write_outputs() {
   fields.push_back({"internal_force", d, force});
   if (!u_smooth_.empty()) fields.push_back({"smoothed_displacement", d, u_smooth_});
   append_law_outputs(*model_.assembler, model_.particles, u_, fields);
+  if (scene_.output.stress) fields.push_back({"stress", d * d, stress_});
   const std::string dir = scene_.output.directory;
   // The files form one result: when a signal stops the writing half-way, the files this
   // run already renamed into place go too (a result without its summary is partial).

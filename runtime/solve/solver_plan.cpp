@@ -10,8 +10,8 @@
 
 namespace pd {
 
-std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim) {
-  const double rows_per_particle = std::pow(2.0, dim) * mean_family_size + 1.0;
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim, bool pairwise) {
+  const double rows_per_particle = (pairwise ? 1.0 : std::pow(2.0, dim)) * mean_family_size + 1.0;
   return static_cast<std::int64_t>(std::llround(particles * rows_per_particle * dim * dim));
 }
 
@@ -40,7 +40,7 @@ SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
     plan.reason = fmt::format("assembled tangent (the scene's preconditioner {})", name_of(spec.preconditioner));
     return plan;
   }
-  const std::int64_t k_estimate = estimated_tangent_nonzeros(size.particles, size.mean_family_size, size.dim);
+  const std::int64_t k_estimate = estimated_tangent_nonzeros(size.particles, size.mean_family_size, size.dim, size.pairwise);
   if (k_estimate <= spec.direct_max_nonzeros) {
     plan.reason = fmt::format("assembled tangent: about {:.3g} nonzeros, within direct_max_nonzeros {:.3g}",
                               static_cast<double>(k_estimate), static_cast<double>(spec.direct_max_nonzeros));
@@ -52,7 +52,7 @@ SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
   const double short_family = size.short_family_size >= 0
                                   ? size.short_family_size
                                   : size.mean_family_size * std::pow(short_ratio / size.delta_over_h, size.dim);
-  const std::int64_t p_estimate = estimated_tangent_nonzeros(size.particles, short_family, size.dim);
+  const std::int64_t p_estimate = estimated_tangent_nonzeros(size.particles, short_family, size.dim, size.pairwise);
   const std::string over = fmt::format("assembled tangent would have about {:.3g} nonzeros (> direct_max_nonzeros {:.3g})",
                                        static_cast<double>(k_estimate), static_cast<double>(spec.direct_max_nonzeros));
   plan.linear = LinearMethod::matrix_free;

@@ -12,10 +12,12 @@
 
 namespace pd {
 
-// Nonzeros of the assembled tangent, estimated from the mean family size: every
-// family couples all its particles (two-horizon reach), so a particle's row holds
-// about the particles within 2 delta, 2^dim L_mean + 1 of them, each a dim x dim block.
-std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim);
+// Nonzeros of the assembled tangent, estimated from the mean family size. A law with
+// states couples all the particles of a family (two-horizon reach), so a particle's row
+// holds about the particles within 2 delta, 2^dim L_mean + 1 of them, each a dim x dim
+// block; a pairwise law (no states, sparsity_pattern.hpp) only its own family's
+// L_mean + 1.
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim, bool pairwise = false);
 
 // What plan_solver needs to know of the model.
 struct ProblemSize {
@@ -26,6 +28,7 @@ struct ProblemSize {
   // The preconditioner's mean family size (mean_short_family_size); negative: scaled
   // from mean_family_size by the horizons' volume ratio.
   double short_family_size = -1;
+  bool pairwise = false;  // the law has no states: one-horizon pattern (Coupling::pairwise)
 };
 
 struct SolverPlan {
