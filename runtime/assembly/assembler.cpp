@@ -143,12 +143,26 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
     if (K) {
       variant_.tangent(fam, f_loc, s.factors);
       double* M = s.gather.local_matrix();
-      form_local_matrix(variant_, d, S, fam, s.factors, M);
-      if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, m, M);
-      if (!all_finite(M, static_cast<std::size_t>(m) * m)) return "tangent";
       int* strides = s.strides.data();
       for (int a = 0; a <= L; ++a) strides[a] = pat->column_stride(s.gather.particle(p, a));
-      scatter_family(d, pat->coupling(), M, L, pat->family_slots(p).data(), strides, values);
+      const int* slots = pat->family_slots(p).data();
+      if (options_.collocation) {
+        // Row scales may be large: check the scaled matrix itself.
+        form_local_matrix(variant_, d, S, fam, s.factors, M);
+        scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, m, M);
+        if (!all_finite(M, static_cast<std::size_t>(m) * m)) return "tangent";
+        scatter_family(d, pat->coupling(), M, L, slots, strides, values);
+      } else {
+        // The O(L) check on the factors bounds every entry of the matrix formed from them.
+        if (!factors_finite(d, S, fam, s.factors)) return "tangent";
+        if (S == 0 && pat->coupling() == Coupling::pairwise) {
+          form_pair_blocks(d, fam, s.factors, M);  // (L+1) d x d blocks, not the dense matrix
+          scatter_pair_blocks(d, M, L, slots, strides, values);
+        } else {
+          form_local_matrix(variant_, d, S, fam, s.factors, M);
+          scatter_family(d, pat->coupling(), M, L, slots, strides, values);
+        }
+      }
     } else {
       variant_.residual(fam, f_loc);
     }

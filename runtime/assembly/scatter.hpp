@@ -46,6 +46,31 @@ void scatter_family(Coupling coupling, const double* __restrict M, int L, const 
   }
 }
 
+// A law without states, pairwise pattern: from the (L+1) blocks of form_pair_blocks
+// (local_matrix.hpp: M[0][0] = B[0], M[0][k] = M[k][0] = B[k], M[k][k] = -B[k], each
+// row-major) instead of the dense matrix, whose other blocks are zero.
+template <int D>
+void scatter_pair_blocks(const double* __restrict B, int L, const int* __restrict slots, const int* __restrict strides,
+                         double* __restrict values) {
+  auto add = [&](const double* blk, int base, int stride, double sign) {
+    for (int q = 0; q < D; ++q)
+      for (int r = 0; r < D; ++r) values[base + q * stride + r] -= sign * blk[r * D + q];
+  };
+  add(B, slots[0], strides[0], 1.0);
+  for (int k = 1; k <= L; ++k) {
+    const double* blk = B + static_cast<std::ptrdiff_t>(k) * D * D;
+    add(blk, slots[k], strides[0], 1.0);
+    add(blk, slots[L + 2 * k - 1], strides[k], 1.0);
+    add(blk, slots[L + 2 * k], strides[k], -1.0);
+  }
+}
+
+inline void scatter_pair_blocks(int dim, const double* B, int L, const int* slots, const int* strides, double* values) {
+  if (dim == 2) return scatter_pair_blocks<2>(B, L, slots, strides, values);
+  if (dim == 3) return scatter_pair_blocks<3>(B, L, slots, strides, values);
+  scatter_pair_blocks<1>(B, L, slots, strides, values);
+}
+
 inline void scatter_family(int dim, Coupling coupling, const double* M, int L, const int* slots, const int* strides,
                            double* values) {
   if (dim == 2) return scatter_family<2>(coupling, M, L, slots, strides, values);
