@@ -356,7 +356,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     if (d.has("quadrature")) {
       const YamlAt q = d.get("quadrature");
       const std::optional<Quadrature> choice = parse_quadrature(d.text("quadrature"));
-      if (!choice) q.fail("unknown quadrature (volume, partial_linear, partial_exact, obq)");
+      if (!choice) q.fail("unknown quadrature (volume, partial_linear, partial_exact, obq, obq_cut)");
       s.quadrature = *choice;
     }
     if (d.has("perturbation")) {
