@@ -18,6 +18,10 @@
 //   build/bin/assembly_bench --benchmark_filter='/200/35/' --benchmark_repetitions=3
 //   build/bin/assembly_bench --grids=100,200 --max_nonzeros=2e8   (which cases to register;
 //   the assembled cases only for grids whose K has at most max_nonzeros entries)
+//   build/bin/assembly_bench --chunk_size=256   (AssemblerOptions::chunk_size: runs of family
+//   indices instead of the default tiles, to compare the visiting orders)
+//   build/bin/assembly_bench --law=bond_based_conical_2d   (another 2D law; a law without
+//   states gets the one-horizon pattern)
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -27,6 +31,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -35,6 +40,9 @@
 #include "material/elastic_constants.hpp"
 
 namespace {
+
+int g_chunk_size = 0;                              // --chunk_size
+std::string g_law = "silling_plane_strain";        // --law
 
 // Resident set size and its peak, bytes (/proc/self/status).
 long status_kb(const char* key) {
@@ -77,12 +85,14 @@ struct Grid {
     scene.h = 1.0 / n;
     scene.materials.resize(1);
     p = pd::discretize(scene);
-    const auto* law = pd::abi::find_law("silling_plane_strain");
+    const auto* law = pd::abi::find_law(g_law);
+    if (law == nullptr) throw std::invalid_argument("assembly_bench: no law " + g_law);
     b = pd::find_bonds(p, ratio10 / 10.0 * scene.h, pd::abi::find_influence("cubic")->weight);
     const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
     pd::AssemblerOptions o;
     o.intact = true;  // no broken bond: the variant with alpha folded to 1
     o.matrix = matrix;
+    o.chunk_size = g_chunk_size;
     a = std::make_unique<pd::FamilyAssembler>(
         p, b, *law, std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, o);
     u.resize(p.x.size());
@@ -221,6 +231,10 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--grids=", 8) == 0)
       sizes = int_list(argv[i] + 8);
+    else if (std::strncmp(argv[i], "--law=", 6) == 0)
+      g_law = argv[i] + 6;
+    else if (std::strncmp(argv[i], "--chunk_size=", 13) == 0)
+      g_chunk_size = std::atoi(argv[i] + 13);
     else if (std::strncmp(argv[i], "--max_nonzeros=", 15) == 0)
       max_nonzeros = std::atof(argv[i] + 15);
     else

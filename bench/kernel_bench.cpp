@@ -3,11 +3,12 @@
 // with delta/h = 1.5, 2, 3, 3.5 and sqrt(13) (8, 12, 28, 36, 44 bonds) in 2D and
 // delta/h = 3 (122 bonds) in 3D:
 //   generated residual, tangent factors, tangent formed into the dense local matrix
-//   (form_local_matrix), tangent-vector product (JVP);
+//   by the law's generated form kernel and by the generic form_local_matrix, the pair
+//   blocks of a law without states (form_pair_blocks), tangent-vector product (JVP);
 //   the dense tangent by forward-mode AD of a hand-written templated residual over all
-//   (L+1)*dim family dofs (Eigen AutoDiffScalar; Peridigm's approach with Sacado):
-//   once with a heap derivative vector (VectorXd, like Sacado's DFad) and once with a
-//   fixed-capacity one (no allocation at all);
+//   (L+1)*dim family dofs: Trilinos Sacado's DFad (Peridigm's approach) and SLFad
+//   (fixed capacity), when the build found Sacado; Eigen's AutoDiffScalar with a heap
+//   derivative vector (VectorXd) and with a fixed-capacity one (no allocation at all);
 //   the dense tangent by central finite differences of the generated residual (one
 //   residual pair per dof, Peridigm's default), allocation-free.
 // Before timing, the AD and FD benchmarks check their matrix against the generated one
@@ -25,6 +26,9 @@
 #include <string>
 #include <unsupported/Eigen/AutoDiff>
 #include <vector>
+#ifdef PD_HAVE_SACADO
+#include <Sacado_No_Kokkos.hpp>
+#endif
 
 #include "reference_laws.hpp"
 #include "verify/random_family.hpp"
@@ -133,25 +137,47 @@ void label(benchmark::State& state, const TestFamily& f) {
 }
 
 // Forward AD over all family dofs: seed y, evaluate the templated residual, read the
-// derivative vectors into the dense row-major matrix.
-template <class Der>
+// derivative vectors into the dense row-major matrix. AD is an Eigen AutoDiffScalar or a
+// Sacado Fad; the inputs' derivative storage is sized once and reseeded in place, as a
+// careful Peridigm-style user would (Peridigm builds Fad(n, i, value) per dof per call).
+template <class AD>
 struct ForwardAd {
-  using AD = Eigen::AutoDiffScalar<Der>;
+  static constexpr bool kSacado = requires(AD x) { x.fastAccessDx(0); };
   Ref ref;
   const TestFamily& f;
   int n;
   std::vector<AD> y, F;
   pd::bench::Workspace<AD> w;
-  ForwardAd(Ref r, const TestFamily& fam) : ref(r), f(fam), n(fam.dofs()), y(n), F(n) {}
+  ForwardAd(Ref r, const TestFamily& fam) : ref(r), f(fam), n(fam.dofs()), y(n), F(n) {
+    if constexpr (kSacado)
+      for (int i = 0; i < n; ++i) y[i] = AD(n, i, f.y[i]);
+  }
+  double value(int i) const {
+    if constexpr (kSacado) return F[i].val();
+    else return F[i].value();
+  }
   void run(double* M) {
     for (int i = 0; i < n; ++i) {
-      y[i].value() = f.y[i];
-      y[i].derivatives().setZero(n);
-      y[i].derivatives()[i] = 1.0;
+      if constexpr (kSacado) {
+        y[i].val() = f.y[i];  // the seeds stay e_i: the residual never writes its inputs
+      } else {
+        y[i].value() = f.y[i];
+        y[i].derivatives().setZero(n);
+        y[i].derivatives()[i] = 1.0;
+      }
     }
     reference(ref, f.view(), f.dim, y.data(), F.data(), w);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) M[i * n + j] = F[i].derivatives()[j];
+    for (int i = 0; i < n; ++i) {
+      if constexpr (kSacado) {
+        // A force no dof reaches stays a constant with no derivative entries.
+        if (F[i].size() == 0)
+          for (int j = 0; j < n; ++j) M[i * n + j] = 0.0;
+        else
+          for (int j = 0; j < n; ++j) M[i * n + j] = F[i].fastAccessDx(j);
+      } else {
+        for (int j = 0; j < n; ++j) M[i * n + j] = F[i].derivatives()[j];
+      }
+    }
   }
 };
 
@@ -221,16 +247,39 @@ void BM_generated_tangent_factors(benchmark::State& state, Case c) {
   label(state, f);
 }
 
-void BM_generated_tangent_dense(benchmark::State& state, Case c) {
+// The dense local matrix from the factors: the law's generated form kernel (structural
+// zeros skipped), or with `generic` runtime/local_matrix.hpp's forming for any law.
+void BM_generated_tangent_dense(benchmark::State& state, Case c, bool generic) {
   const TestFamily f = family(c);
   pd::TangentScratch scratch;
   const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
   std::vector<double> forces(static_cast<std::size_t>(f.dofs())), M(static_cast<std::size_t>(f.dofs() * f.dofs()));
   const pd::abi::Family fam = f.view();
+  const pd::abi::KernelVariant& v = f.law->intact;
+  for (auto _ : state) {
+    v.tangent(fam, forces.data(), fac);
+    if (generic)
+      pd::form_local_matrix(f.dim, f.law->n_states, fam, fac, M.data());
+    else
+      pd::form_local_matrix(v, f.dim, f.law->n_states, fam, fac, M.data());
+    benchmark::DoNotOptimize(M.data());
+    benchmark::ClobberMemory();
+  }
+  label(state, f);
+}
+
+// A law without states: the L+1 pair blocks (local_matrix.hpp), all a one-horizon
+// scatter needs, instead of the dense matrix.
+void BM_generated_tangent_pair_blocks(benchmark::State& state, Case c) {
+  const TestFamily f = family(c);
+  pd::TangentScratch scratch;
+  const auto fac = scratch.view(f.dim, 0, f.bonds());
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs())), B(static_cast<std::size_t>((f.bonds() + 1) * f.dim * f.dim));
+  const pd::abi::Family fam = f.view();
   for (auto _ : state) {
     f.law->intact.tangent(fam, forces.data(), fac);
-    pd::form_local_matrix(f.dim, f.law->n_states, fam, fac, M.data());
-    benchmark::DoNotOptimize(M.data());
+    pd::form_pair_blocks(f.dim, fam, fac, B.data());
+    benchmark::DoNotOptimize(B.data());
     benchmark::ClobberMemory();
   }
   label(state, f);
@@ -249,14 +298,14 @@ void BM_generated_jvp(benchmark::State& state, Case c) {
   label(state, f);
 }
 
-template <class Der>
+template <class AD>
 void BM_forward_ad_tangent_dense(benchmark::State& state, Case c) {
   const TestFamily f = family(c);
   const int n = f.dofs();
-  ForwardAd<Der> ad(c.ref, f);
+  ForwardAd<AD> ad(c.ref, f);
   std::vector<double> M(static_cast<std::size_t>(n * n)), forces(static_cast<std::size_t>(n));
   ad.run(M.data());
-  for (int i = 0; i < n; ++i) forces[i] = ad.F[i].value();
+  for (int i = 0; i < n; ++i) forces[i] = ad.value(i);
   check("hand-written residual", c, f, rel_diff(forces, f.forces(f.law->intact)), kResidualTolerance);
   const double diff = rel_diff(M, f.tangent_matrix(f.law->intact));
   check("forward-AD tangent", c, f, diff, kTolerance);
@@ -287,10 +336,17 @@ void BM_central_fd_tangent_dense(benchmark::State& state, Case c) {
 }
 
 // Derivative vectors: heap (like Sacado DFad) and fixed capacity (stack, no allocation).
-using HeapDer = Eigen::VectorXd;
+using EigenHeapAd = Eigen::AutoDiffScalar<Eigen::VectorXd>;
 template <int Max>
-using FixedDer = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
+using EigenFixedAd = Eigen::AutoDiffScalar<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>>;
 constexpr int kMax2d = 45 * 2, kMax3d = 123 * 3;
+#ifdef PD_HAVE_SACADO
+// Sacado's DFad: the derivative array on the heap, sized at run time (Peridigm's choice);
+// SLFad: a fixed-capacity array inside the scalar, Sacado's allocation-free variant.
+using SacadoDfad = Sacado::Fad::DFad<double>;
+template <int Max>
+using SacadoSlfad = Sacado::Fad::SLFad<double, Max>;
+#endif
 
 const Case kCases[] = {
     {"silling_plane_strain", Ref::Silling, 1.5, "1.5"},
@@ -326,15 +382,23 @@ void register_all() {
     const bool three_d = pd::abi::find_law(c.law) && pd::abi::find_law(c.law)->dim == 3;
     benchmark::RegisterBenchmark(("generated_residual" + suffix).c_str(), BM_generated_residual, c);
     benchmark::RegisterBenchmark(("generated_tangent_factors" + suffix).c_str(), BM_generated_tangent_factors, c);
-    benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c);
+    benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c, false);
+    benchmark::RegisterBenchmark(("generic_form_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c, true);
+    if (pd::abi::find_law(c.law) && pd::abi::find_law(c.law)->n_states == 0)
+      benchmark::RegisterBenchmark(("generated_tangent_pair_blocks" + suffix).c_str(), BM_generated_tangent_pair_blocks, c);
     benchmark::RegisterBenchmark(("generated_jvp" + suffix).c_str(), BM_generated_jvp, c);
-    benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<HeapDer>, c);
-    if (three_d)
-      benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
-                                   BM_forward_ad_tangent_dense<FixedDer<kMax3d>>, c);
-    else
-      benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
-                                   BM_forward_ad_tangent_dense<FixedDer<kMax2d>>, c);
+    benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<EigenHeapAd>, c);
+    benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
+                                 three_d ? BM_forward_ad_tangent_dense<EigenFixedAd<kMax3d>>
+                                         : BM_forward_ad_tangent_dense<EigenFixedAd<kMax2d>>,
+                                 c);
+#ifdef PD_HAVE_SACADO
+    benchmark::RegisterBenchmark(("sacado_dfad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<SacadoDfad>, c);
+    benchmark::RegisterBenchmark(("sacado_slfad_tangent_dense" + suffix).c_str(),
+                                 three_d ? BM_forward_ad_tangent_dense<SacadoSlfad<kMax3d>>
+                                         : BM_forward_ad_tangent_dense<SacadoSlfad<kMax2d>>,
+                                 c);
+#endif
     benchmark::RegisterBenchmark(("central_fd_tangent_dense" + suffix).c_str(), BM_central_fd_tangent_dense, c);
   }
 }

@@ -1,6 +1,6 @@
 // The four benchmarked laws written by hand, templated on the scalar type: the residual
-// that the forward-AD baseline differentiates (Eigen AutoDiffScalar over all family
-// dofs, as Peridigm does with Sacado for its elastic models). Intact bonds only
+// that the forward-AD baselines differentiate over all family dofs (Trilinos Sacado's
+// DFad, as Peridigm does for its elastic models, and Eigen's AutoDiffScalar). Intact bonds only
 // (alpha = 1), like the generated `intact` kernels the benchmark compares with.
 //
 // Written the way a competent hand implementation would be for AD: every per-bond
@@ -42,8 +42,10 @@ template <class S>
 void zero(S& x, const S& like) {
   if constexpr (std::is_same_v<S, double>) {
     x = 0.0;
+  } else if constexpr (requires { x.fastAccessDx(0); }) {
+    x = 0.0;  // Sacado: a constant (no derivative entries); the first += sizes it, keeping its storage
   } else {
-    x = like;  // sizes the derivative vector like the seeded inputs
+    x = like;  // Eigen: sizes the derivative vector like the seeded inputs
     x.value() = 0.0;
     x.derivatives().setZero();
   }

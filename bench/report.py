@@ -15,8 +15,15 @@ import subprocess
 from collections import defaultdict
 
 UNIT = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
-KERNEL_KINDS = ["generated_residual", "generated_tangent_factors", "generated_tangent_dense", "generated_jvp",
+KERNEL_KINDS = ["generated_residual", "generated_tangent_factors", "generated_tangent_dense", "generic_form_tangent_dense",
+                "generated_tangent_pair_blocks", "generated_jvp", "sacado_dfad_tangent_dense", "sacado_slfad_tangent_dense",
                 "forward_ad_tangent_dense", "forward_ad_fixed_tangent_dense", "central_fd_tangent_dense"]
+AD_KINDS = ["sacado_dfad_tangent_dense", "sacado_slfad_tangent_dense", "forward_ad_tangent_dense", "forward_ad_fixed_tangent_dense"]
+# The published PeriFlakes kernels (paper 000), dense K and R per family call, CPU time, median, as issue 19
+# quotes them for this machine kind: (law, bonds) -> (µs at -O2 -fno-math-errno, µs at -Ofast -march=native).
+# Not measured by this suite (PeriFlakes is not part of the build): the goals compare with them.
+PERIFLAKES_US = {("silling_plane_strain", 12): (1.62, 1.21), ("silling_plane_strain", 36): (11.8, 9.12),
+                 ("correspondence_plane_strain", 12): (0.94, 0.51), ("correspondence_plane_strain", 36): (6.21, 2.50)}
 LAWS = [("silling", "Silling dilatation law (`silling_plane_strain`, `silling_3d`)"),
         ("oterkus", "Oterkus dilatation law (`oterkus_plane_strain`; 2D only)"),
         ("correspondence", "Correspondence, no stabilisation (`correspondence_plane_strain`, `correspondence_3d`)"),
@@ -121,57 +128,101 @@ def kernel_section(path):
            "medians in ns of one family, CPU time (single-threaded kernels; the wall time of a shared machine also counts waiting for a core):\n",
            "- *residual*: the generated nodal forces; *factors*: the generated tangent kernel (forces and the factors "
            "direct/left/right of the kernel ABI, O(L)); *dense*: factors formed into the (L+1)d × (L+1)d local matrix by "
-           "`form_local_matrix` (what the assembler scatters); *JVP*: the generated tangent–vector product.",
+           "the law's generated form kernel (`KernelVariant::form`: the law's structurally zero factor entries skipped; "
+           "what the assembler scatters); *dense generic*: the same matrix by `form_local_matrix`'s generic forming; "
+           "*pair blocks*: for laws without states, the L+1 d × d blocks that are all of their local matrix "
+           "(`form_pair_blocks`); *JVP*: the generated tangent–vector product.",
            "- *AD*: forward-mode AD of a hand-written templated residual of the same law (`bench/reference_laws.hpp`) over "
-           "all (L+1)d family dofs with Eigen's `AutoDiffScalar` — *heap* with an `Eigen::VectorXd` derivative (like "
-           "Peridigm's Sacado DFad), *fixed* with a fixed-capacity derivative (90 resp. 369 doubles on the stack, no "
-           "allocation). Both reuse their AD workspace between calls and evaluate each per-bond quantity once.",
+           "all (L+1)d family dofs: Trilinos Sacado's `DFad<double>` (heap derivative array sized at run time, what "
+           "Peridigm uses) and `SLFad<double, N>` (fixed capacity, no allocation), Eigen's `AutoDiffScalar` with a "
+           "`VectorXd` derivative (heap) and with a fixed-capacity one (90 resp. 369 doubles). All reuse their AD "
+           "workspace and seeded inputs between calls and evaluate each per-bond quantity once. *best AD* is the fastest "
+           "of the four.",
            "- *FD*: central differences of the generated residual, one residual pair per dof (2(L+1)d calls), step "
            "1e-5 h, bond vectors perturbed in place (no allocation).",
            "- Before timing, each AD and FD benchmark checks its matrix against *dense*: max |difference| / max |entry| "
            "<= 1e-8, and the hand-written residual against the generated one to 1e-12; the benchmark exits with an error "
            "otherwise. Largest differences in this run: see the last column.",
-           "- Ratios: AD / dense and FD / dense compare like with like (all three produce the dense matrix); "
-           "AD / factors and FD / factors compare with what the generated tangent kernel itself produces (the "
-           "matrix-free path and the diagonal use only the factors).\n"]
-    summary = []
+           "- Ratios: AD / dense and FD / dense compare like with like (all produce the dense matrix); generic / dense is "
+           "what the generated form kernel saves; factors / residual is the tangent kernel's cost over the residual's.\n"]
+    goals, goals_3d = [], []
     for key, title in LAWS:
         rows = sorted(((k, v) for k, v in table.items() if k[0].startswith(key)),
                       key=lambda kv: (kv[0][0].endswith("3d"), kv[1]["generated_residual"][1][0].get("bonds", 0)))
         if not rows:
             continue
         out.append("### %s\n" % title)
-        out.append("| law | delta/h | bonds | residual | factors | dense | JVP | AD heap | AD fixed | FD | AD / dense (heap, fixed) | FD / dense | AD fixed / factors | FD / factors | max rel. diff AD, FD |")
-        out.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        out.append("| law | delta/h | bonds | residual | factors | dense | dense generic | pair blocks | JVP | Sacado DFad | Sacado SLFad | Eigen AD heap | Eigen AD fixed | FD | DFad / dense | best AD / dense | FD / dense | generic / dense | factors / residual | max rel. diff AD, FD |")
+        out.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for (law, label), row in rows:
             get = lambda k: row[k][0] if k in row else float("nan")
             bonds = int(row["generated_residual"][1][0].get("bonds", 0))
-            dense, fac = get("generated_tangent_dense"), get("generated_tangent_factors")
-            ad, adf, fd = get("forward_ad_tangent_dense"), get("forward_ad_fixed_tangent_dense"), get("central_fd_tangent_dense")
-            diffs = [max(e.get("rel_diff", 0) for e in row[k][1]) for k in
-                     ("forward_ad_tangent_dense", "central_fd_tangent_dense") if k in row]
-            out.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s, %s | %s | %s | %s | %s |" % (
-                law, label.replace("sqrt13", "3.61"), bonds, fmt_ns(get("generated_residual")), fmt_ns(fac), fmt_ns(dense),
-                fmt_ns(get("generated_jvp")), fmt_ns(ad), fmt_ns(adf), fmt_ns(fd), fmt_ratio(ratio(ad, dense)),
-                fmt_ratio(ratio(adf, dense)), fmt_ratio(ratio(fd, dense)), fmt_ratio(ratio(adf, fac)),
-                fmt_ratio(ratio(fd, fac)), ", ".join("%.1e" % d for d in diffs)))
-            if bonds == 28 and not law.endswith("3d"):
-                best_ad = min(ad, adf)
-                summary.append((law, ratio(best_ad, dense), ratio(fd, dense), ratio(best_ad, fac), ratio(fd, fac)))
+            dense, fac, res = get("generated_tangent_dense"), get("generated_tangent_factors"), get("generated_residual")
+            ads = [get(k) for k in AD_KINDS if k in row]
+            best_ad = min(ads) if ads else float("nan")
+            fd = get("central_fd_tangent_dense")
+            diffs = [max(max(e.get("rel_diff", 0) for e in row[k][1]) for k in kinds if k in row)
+                     for kinds in (AD_KINDS, ["central_fd_tangent_dense"]) if any(k in row for k in kinds)]
+            out.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                law, label.replace("sqrt13", "3.61"), bonds, fmt_ns(res), fmt_ns(fac), fmt_ns(dense),
+                fmt_ns(get("generic_form_tangent_dense")), fmt_ns(get("generated_tangent_pair_blocks")),
+                fmt_ns(get("generated_jvp")), fmt_ns(get("sacado_dfad_tangent_dense")), fmt_ns(get("sacado_slfad_tangent_dense")),
+                fmt_ns(get("forward_ad_tangent_dense")), fmt_ns(get("forward_ad_fixed_tangent_dense")), fmt_ns(fd),
+                fmt_ratio(ratio(get("sacado_dfad_tangent_dense"), dense)), fmt_ratio(ratio(best_ad, dense)),
+                fmt_ratio(ratio(fd, dense)), fmt_ratio(ratio(get("generic_form_tangent_dense"), dense)),
+                "%.2f" % ratio(fac, res), ", ".join("%.1e" % d for d in diffs)))
+            if (law, bonds) in PERIFLAKES_US:
+                goals.append((law, bonds, dense))
+            if law == "silling_3d":
+                goals_3d.append((law, label, dense, get("sacado_dfad_tangent_dense"), get("sacado_slfad_tangent_dense"), fac, res))
         out.append("")
-    if summary:
-        out.append("### Targets at 28 neighbours (2D, delta/h = 3): generated tangent >= 5× faster than forward AD, >= 30× faster than central FD\n")
-        out.append("AD is the faster of the two AD variants. *dense* is the generated tangent formed into the local matrix.\n")
-        out.append("| law | AD / dense | FD / dense | target met (dense) | AD / factors | FD / factors | target met (factors) |")
-        out.append("|---|---|---|---|---|---|---|")
-        for law, ad_d, fd_d, ad_f, fd_f in summary:
-            met = lambda a, f: ("yes" if a >= 5 and f >= 30 else "no (%s)" % ", ".join(
-                x for x, ok in (("AD", a >= 5), ("FD", f >= 30)) if not ok))
-            out.append("| %s | %s | %s | %s | %s | %s | %s |" % (law, fmt_ratio(ad_d), fmt_ratio(fd_d), met(ad_d, fd_d),
-                                                              fmt_ratio(ad_f), fmt_ratio(fd_f), met(ad_f, fd_f)))
+    if goals:
+        out.append("### Issue 19's kernel goals against the published PeriFlakes times\n")
+        out.append("*dense* of this run (the generated form kernel, default flags) against the PeriFlakes times issue 19 quotes "
+                   "(not measured here: PeriFlakes is not built by this suite). Goal: *dense* ≤ 1/10 of PeriFlakes at "
+                   "`-O2 -fno-math-errno` and ≤ 1/3 at `-Ofast -march=native`.\n")
+        out.append("| law | bonds | dense ns | PeriFlakes -O2 ns | ratio | goal ≥ 10× | PeriFlakes -Ofast native ns | ratio | goal ≥ 3× |")
+        out.append("|---|---|---|---|---|---|---|---|---|")
+        for law, bonds, dense in goals:
+            o2, ofast = (1e3 * t for t in PERIFLAKES_US[(law, bonds)])
+            r2, rf = ratio(o2, dense), ratio(ofast, dense)
+            out.append("| %s | %d | %s | %.0f | %s | %s | %.0f | %s | %s |" % (
+                law, bonds, fmt_ns(dense), o2, fmt_ratio(r2), "yes" if r2 >= 10 else "no", ofast, fmt_ratio(rf),
+                "yes" if rf >= 3 else "no"))
         out.append("")
-        out.append("Where a target is missed, what limits it is in *What bounds the hot paths* below (the dense "
-                   "matrix's forming, and for correspondence its per-state passes).\n")
+    for law, label, dense, dfad, slfad, fac, res in goals_3d:
+        out.append("**3D Silling at delta/h = %s** (goal: dense ≥ 25× faster than a Sacado forward-AD Jacobian; factors ≤ 1.5× "
+                   "the residual): Sacado DFad / dense %s, SLFad / dense %s; factors / residual %.2f.\n" % (
+                       label, fmt_ratio(ratio(dfad, dense)), fmt_ratio(ratio(slfad, dense)), ratio(fac, res)))
+    return out
+
+
+def native_section(portable_path, native_path):
+    """The same kernel benchmarks built portably (the release default) and with -march=native."""
+    def medians(path):
+        runs, _ = load_runs([path])
+        return {name: median_ns(e, "cpu_time") for name, e in runs.items()}
+    port, nat = medians(portable_path), medians(native_path)
+    kinds = ["generated_residual", "generated_tangent_factors", "generated_tangent_dense", "generated_jvp",
+             "sacado_dfad_tangent_dense", "forward_ad_fixed_tangent_dense", "central_fd_tangent_dense"]
+    out = ["### Flags: portable (release default) against `-march=native`\n",
+           "`build/bin/kernel_bench_native`: the generated kernels and the benchmark (AD references included) compiled "
+           "with `-march=native` (this host: AVX-512), run right after `kernel_bench` with the same options. Median ns, "
+           "CPU time; *×* = portable / native (above 1: native is faster).\n",
+           "| law | delta/h | " + " | ".join(k.replace("generated_", "").replace("_tangent_dense", "").replace("_dense", "")
+                                          for k in kinds) + " |",
+           "|---|---|" + "---|" * len(kinds)]
+    cases = sorted({tuple(n.split("/")[1:]) for n in port if n.startswith("generated_residual/")})
+    for law, label in cases:
+        cells = []
+        for k in kinds:
+            name = "%s/%s/%s" % (k, law, label)
+            if name in port and name in nat:
+                cells.append("%s / %s (%.2f×)" % (fmt_ns(port[name]), fmt_ns(nat[name]), port[name] / nat[name]))
+            else:
+                cells.append("–")
+        out.append("| %s | %s | %s |" % (law, label.replace("sqrt13", "3.61"), " | ".join(cells)))
+    out.append("")
     return out
 
 
@@ -279,6 +330,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--command", required=True)
     ap.add_argument("--kernels", required=True)
+    ap.add_argument("--kernels-native", help="kernel_bench_native's JSON (-march=native), for the flags table")
     ap.add_argument("--assembly", nargs="+", required=True)
     ap.add_argument("--solves", nargs="*", default=[], help="JSON lines of bench/solve_bench.py")
     ap.add_argument("--profile", nargs="*", default=[], help="markdown files appended as they are")
@@ -293,6 +345,8 @@ def main():
     out += machine_lines(context, a.build, a.seconds, a.command)
     out.append("")
     out += kernel_section(a.kernels)
+    if a.kernels_native and os.path.exists(a.kernels_native):
+        out += native_section(a.kernels, a.kernels_native)
     out += assembly_section(a.assembly)
     out += solve_section(a.solves)
     for path in a.profile:

@@ -32,7 +32,7 @@ else
   kreps=7 kmin=0.1 areps=5 amin=0.2 grids="100 200 400 1000" solve_grids="100 200 400 1000"
 fi
 start=$(date +%s)
-./scripts/build.sh --target kernel_bench --target assembly_bench --target pd
+./scripts/build.sh --target kernel_bench --target kernel_bench_native --target assembly_bench --target pd
 if [ "$profile" = 1 ]; then bench/profile.sh; fi
 out=build/bench
 mkdir -p "$out"
@@ -41,6 +41,12 @@ if stage kernels; then
   build/bin/kernel_bench --benchmark_repetitions="$kreps" --benchmark_min_time="$kmin" \
     --benchmark_enable_random_interleaving=true \
     --benchmark_out="$out/kernels.json" --benchmark_out_format=json >/dev/null
+  if [ -x build/bin/kernel_bench_native ]; then  # the same, built with -march=native (PD_BENCH_NATIVE)
+    echo "kernel_bench_native ..."
+    build/bin/kernel_bench_native --benchmark_repetitions="$kreps" --benchmark_min_time="$kmin" \
+      --benchmark_enable_random_interleaving=true \
+      --benchmark_out="$out/kernels_native.json" --benchmark_out_format=json >/dev/null
+  fi
 fi
 if stage assembly; then
   rm -f "$out"/assembly_*.json
@@ -62,7 +68,7 @@ if stage solves; then
       --max-seconds 900 --out "$out/solves_${r/./}.jsonl"
   done
 fi
-python3 bench/report.py --command "$command" --kernels "$out/kernels.json" --assembly "$out"/assembly_*.json \
+python3 bench/report.py --command "$command" --kernels "$out/kernels.json" --kernels-native "$out/kernels_native.json" --assembly "$out"/assembly_*.json \
   --solves "$out"/solves_*.jsonl --profile bench/profile.md bench/profile_notes.md --build build \
   --seconds "$(( $(date +%s) - start ))" > docs/performance.md.tmp
 mv docs/performance.md.tmp docs/performance.md

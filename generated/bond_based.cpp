@@ -22,7 +22,13 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -36,10 +42,13 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
-    forces[0] += b6;
+    lane0[lane] += b6;
     forces[(k + 1) * 2 + 1] = -b7;
-    forces[1] += b7;
+    lane1[lane] += b7;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_damaged_tangent: per bond 9 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -52,7 +61,13 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
   const double p2 = p1 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -78,14 +93,17 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b19 = b15 * (b17 * b10) * b11 * alpha;
     const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
+    lane0[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
+    lane1[lane] += b14;
     factors.direct[k * 4 + 0] = b16 + b18 * b4 - b19 * b4;
     factors.direct[k * 4 + 1] = b20;
     factors.direct[k * 4 + 2] = b20;
     factors.direct[k * 4 + 3] = b16 + b18 * b5 - b19 * b5;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_damaged_jvp: per bond 11 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -97,7 +115,13 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
   df[0] = 0.0; df[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -123,10 +147,13 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
     const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
     df[(k + 1) * 2 + 0] = -b16;
-    df[0] += b16;
+    lane0[lane] += b16;
     df[(k + 1) * 2 + 1] = -b17;
-    df[1] += b17;
+    lane1[lane] += b17;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_damaged_energy: per bond 4 add, 10 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -137,7 +164,12 @@ double bond_based_constant_2d_damaged_energy(const pd::abi::Family& fam) {
   double s_bond_energy = 0.0;
   const double p0 = 1.0 / delta;
   const double p1 = 0.954929658551372 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -148,10 +180,88 @@ double bond_based_constant_2d_damaged_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p1 * (b5 * b5) * (1.0 / b4) * V * alpha;
+    lane0[lane] += p1 * (b5 * b5) * (1.0 / b4) * V * alpha;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_constant_2d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_constant_2d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3];
+    }
+  }
 }
 
 // bond_based_constant_2d_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -169,7 +279,13 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -182,10 +298,13 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
-    forces[0] += b6;
+    lane0[lane] += b6;
     forces[(k + 1) * 2 + 1] = -b7;
-    forces[1] += b7;
+    lane1[lane] += b7;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_intact_tangent: per bond 9 add, 27 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -198,7 +317,13 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
   const double p2 = p1 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -223,14 +348,17 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b19 = b15 * (b17 * b10) * b11;
     const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
+    lane0[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
+    lane1[lane] += b14;
     factors.direct[k * 4 + 0] = b16 + b18 * b4 - b19 * b4;
     factors.direct[k * 4 + 1] = b20;
     factors.direct[k * 4 + 2] = b20;
     factors.direct[k * 4 + 3] = b16 + b18 * b5 - b19 * b5;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_intact_jvp: per bond 11 add, 29 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -242,7 +370,13 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
   df[0] = 0.0; df[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 1.909859317102744 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -267,10 +401,13 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
     const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
     df[(k + 1) * 2 + 0] = -b16;
-    df[0] += b16;
+    lane0[lane] += b16;
     df[(k + 1) * 2 + 1] = -b17;
-    df[1] += b17;
+    lane1[lane] += b17;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_constant_2d_intact_energy: per bond 4 add, 9 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -281,7 +418,12 @@ double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
   double s_bond_energy = 0.0;
   const double p0 = 1.0 / delta;
   const double p1 = 0.954929658551372 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -291,10 +433,88 @@ double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p1 * (b5 * b5) * (1.0 / b4) * V;
+    lane0[lane] += p1 * (b5 * b5) * (1.0 / b4) * V;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_constant_2d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_constant_2d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3];
+    }
+  }
 }
 
 pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
@@ -324,6 +544,7 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.damaged.jvp = &bond_based_constant_2d_damaged_jvp;
   d.damaged.jvp_ops = {11, 32, 3, 2};
   d.damaged.energy = &bond_based_constant_2d_damaged_energy;
+  d.damaged.form = &bond_based_constant_2d_damaged_form;
   d.intact.moments = &bond_based_constant_2d_intact_moments;
   d.intact.residual = &bond_based_constant_2d_intact_residual;
   d.intact.residual_ops = {4, 11, 2, 2};
@@ -332,6 +553,7 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.intact.jvp = &bond_based_constant_2d_intact_jvp;
   d.intact.jvp_ops = {11, 29, 3, 2};
   d.intact.energy = &bond_based_constant_2d_intact_energy;
+  d.intact.form = &bond_based_constant_2d_intact_form;
   return d;
 }
 
@@ -350,7 +572,13 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -364,10 +592,13 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
-    forces[0] += b6;
+    lane0[lane] += b6;
     forces[(k + 1) * 2 + 1] = -b7;
-    forces[1] += b7;
+    lane1[lane] += b7;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_damaged_tangent: per bond 10 add, 35 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -380,7 +611,13 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
   const double p2 = p1 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -407,14 +644,17 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b20 = b16 * (b18 * b11) * b12 * alpha;
     const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
-    if (forces != nullptr) forces[0] += b14;
+    lane0[lane] += b14;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b15;
-    if (forces != nullptr) forces[1] += b15;
+    lane1[lane] += b15;
     factors.direct[k * 4 + 0] = b17 + b19 * b4 - b20 * b4;
     factors.direct[k * 4 + 1] = b21;
     factors.direct[k * 4 + 2] = b21;
     factors.direct[k * 4 + 3] = b17 + b19 * b5 - b20 * b5;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_damaged_jvp: per bond 12 add, 35 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -426,7 +666,13 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
   df[0] = 0.0; df[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -453,10 +699,13 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
     const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
     df[(k + 1) * 2 + 0] = -b17;
-    df[0] += b17;
+    lane0[lane] += b17;
     df[(k + 1) * 2 + 1] = -b18;
-    df[1] += b18;
+    lane1[lane] += b18;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_damaged_energy: per bond 5 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -467,7 +716,12 @@ double bond_based_conical_2d_damaged_energy(const pd::abi::Family& fam) {
   double s_bond_energy = 0.0;
   const double p0 = 1.0 / delta;
   const double p1 = 3.819718634205488 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -478,10 +732,88 @@ double bond_based_conical_2d_damaged_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V * alpha;
+    lane0[lane] += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V * alpha;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_conical_2d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_conical_2d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3];
+    }
+  }
 }
 
 // bond_based_conical_2d_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -499,7 +831,13 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -512,10 +850,13 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
-    forces[0] += b6;
+    lane0[lane] += b6;
     forces[(k + 1) * 2 + 1] = -b7;
-    forces[1] += b7;
+    lane1[lane] += b7;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_intact_tangent: per bond 10 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -528,7 +869,13 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
   const double p2 = p1 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -554,14 +901,17 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b20 = b16 * (b18 * b11) * b12;
     const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
-    if (forces != nullptr) forces[0] += b14;
+    lane0[lane] += b14;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b15;
-    if (forces != nullptr) forces[1] += b15;
+    lane1[lane] += b15;
     factors.direct[k * 4 + 0] = b17 + b19 * b4 - b20 * b4;
     factors.direct[k * 4 + 1] = b21;
     factors.direct[k * 4 + 2] = b21;
     factors.direct[k * 4 + 3] = b17 + b19 * b5 - b20 * b5;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_intact_jvp: per bond 12 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -573,7 +923,13 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
   df[0] = 0.0; df[1] = 0.0; 
   const double p0 = 1.0 / delta;
   const double p1 = 7.639437268410976 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -599,10 +955,13 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
     const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
     df[(k + 1) * 2 + 0] = -b17;
-    df[0] += b17;
+    lane0[lane] += b17;
     df[(k + 1) * 2 + 1] = -b18;
-    df[1] += b18;
+    lane1[lane] += b18;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_intact_energy: per bond 5 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -613,7 +972,12 @@ double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
   double s_bond_energy = 0.0;
   const double p0 = 1.0 / delta;
   const double p1 = 3.819718634205488 * P_kappa2 * (p0 * p0 * p0);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -623,10 +987,88 @@ double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
     const double b5 = b3 - b4;
-    s_bond_energy += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V;
+    lane0[lane] += p1 * (b5 * b5) * (1.0 - p0 * b4) * (1.0 / b4) * V;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_conical_2d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_conical_2d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = 0.0;
+        row[2 + k * 2 + 1] = 0.0;
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3];
+    }
+  }
 }
 
 pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
@@ -656,6 +1098,7 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.damaged.jvp = &bond_based_conical_2d_damaged_jvp;
   d.damaged.jvp_ops = {12, 35, 3, 2};
   d.damaged.energy = &bond_based_conical_2d_damaged_energy;
+  d.damaged.form = &bond_based_conical_2d_damaged_form;
   d.intact.moments = &bond_based_conical_2d_intact_moments;
   d.intact.residual = &bond_based_conical_2d_intact_residual;
   d.intact.residual_ops = {5, 13, 2, 2};
@@ -664,6 +1107,7 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.intact.jvp = &bond_based_conical_2d_intact_jvp;
   d.intact.jvp_ops = {12, 32, 3, 2};
   d.intact.energy = &bond_based_conical_2d_intact_energy;
+  d.intact.form = &bond_based_conical_2d_intact_form;
   return d;
 }
 
@@ -683,7 +1127,14 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -700,12 +1151,16 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
     forces[(k + 1) * 3 + 0] = -b7;
-    forces[0] += b7;
+    lane0[lane] += b7;
     forces[(k + 1) * 3 + 1] = -b8;
-    forces[1] += b8;
+    lane1[lane] += b8;
     forces[(k + 1) * 3 + 2] = -b9;
-    forces[2] += b9;
+    lane2[lane] += b9;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_damaged_tangent: per bond 15 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -719,7 +1174,14 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1);
   const double p3 = p2 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -753,11 +1215,11 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b26 = b24 * Y_0 - b25 * Y_0;
     const double b27 = b24 * Y_1 - b25 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
-    if (forces != nullptr) forces[0] += b15;
+    lane0[lane] += b15;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
-    if (forces != nullptr) forces[1] += b16;
+    lane1[lane] += b16;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
-    if (forces != nullptr) forces[2] += b17;
+    lane2[lane] += b17;
     factors.direct[k * 9 + 0] = b19 + b21 * b5 - b22 * b5;
     factors.direct[k * 9 + 1] = b23;
     factors.direct[k * 9 + 2] = b26;
@@ -767,7 +1229,11 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
     factors.direct[k * 9 + 6] = b26;
     factors.direct[k * 9 + 7] = b27;
     factors.direct[k * 9 + 8] = b19 + b21 * b7 - b22 * b7;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_damaged_jvp: per bond 21 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -780,7 +1246,14 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -815,12 +1288,16 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b23 = V0 * (dY_0 * b17 + dY_1 * (b13 + b15 * b5 - b16 * b5) + dY_2 * b22) * V;
     const double b24 = V0 * (dY_0 * b20 + dY_1 * b22 + dY_2 * (b13 + b15 * b6 - b16 * b6)) * V;
     df[(k + 1) * 3 + 0] = -b21;
-    df[0] += b21;
+    lane0[lane] += b21;
     df[(k + 1) * 3 + 1] = -b23;
-    df[1] += b23;
+    lane1[lane] += b23;
     df[(k + 1) * 3 + 2] = -b24;
-    df[2] += b24;
+    lane2[lane] += b24;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_damaged_energy: per bond 6 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -832,7 +1309,12 @@ double bond_based_constant_3d_damaged_energy(const pd::abi::Family& fam) {
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 1.432394487827058 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -845,10 +1327,151 @@ double bond_based_constant_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p2 * (b6 * b6) * (1.0 / b5) * V * alpha;
+    lane0[lane] += p2 * (b6 * b6) * (1.0 / b5) * V * alpha;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_constant_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_constant_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2]);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5]);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6]);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7]);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8]);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8];
+    }
+  }
 }
 
 // bond_based_constant_3d_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -867,7 +1490,14 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -883,12 +1513,16 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
     forces[(k + 1) * 3 + 0] = -b7;
-    forces[0] += b7;
+    lane0[lane] += b7;
     forces[(k + 1) * 3 + 1] = -b8;
-    forces[1] += b8;
+    lane1[lane] += b8;
     forces[(k + 1) * 3 + 2] = -b9;
-    forces[2] += b9;
+    lane2[lane] += b9;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_intact_tangent: per bond 15 add, 38 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -902,7 +1536,14 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1);
   const double p3 = p2 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -935,11 +1576,11 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b26 = b24 * Y_0 - b25 * Y_0;
     const double b27 = b24 * Y_1 - b25 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b15;
-    if (forces != nullptr) forces[0] += b15;
+    lane0[lane] += b15;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b16;
-    if (forces != nullptr) forces[1] += b16;
+    lane1[lane] += b16;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b17;
-    if (forces != nullptr) forces[2] += b17;
+    lane2[lane] += b17;
     factors.direct[k * 9 + 0] = b19 + b21 * b5 - b22 * b5;
     factors.direct[k * 9 + 1] = b23;
     factors.direct[k * 9 + 2] = b26;
@@ -949,7 +1590,11 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
     factors.direct[k * 9 + 6] = b26;
     factors.direct[k * 9 + 7] = b27;
     factors.direct[k * 9 + 8] = b19 + b21 * b7 - b22 * b7;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_intact_jvp: per bond 21 add, 46 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -962,7 +1607,14 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 2.864788975654116 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -996,12 +1648,16 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b23 = V0 * (dY_0 * b17 + dY_1 * (b13 + b15 * b5 - b16 * b5) + dY_2 * b22) * V;
     const double b24 = V0 * (dY_0 * b20 + dY_1 * b22 + dY_2 * (b13 + b15 * b6 - b16 * b6)) * V;
     df[(k + 1) * 3 + 0] = -b21;
-    df[0] += b21;
+    lane0[lane] += b21;
     df[(k + 1) * 3 + 1] = -b23;
-    df[1] += b23;
+    lane1[lane] += b23;
     df[(k + 1) * 3 + 2] = -b24;
-    df[2] += b24;
+    lane2[lane] += b24;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_intact_energy: per bond 6 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1013,7 +1669,12 @@ double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 1.432394487827058 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1025,10 +1686,151 @@ double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p2 * (b6 * b6) * (1.0 / b5) * V;
+    lane0[lane] += p2 * (b6 * b6) * (1.0 / b5) * V;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_constant_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_constant_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2]);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5]);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6]);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7]);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8]);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8];
+    }
+  }
 }
 
 pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
@@ -1058,6 +1860,7 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.damaged.jvp = &bond_based_constant_3d_damaged_jvp;
   d.damaged.jvp_ops = {21, 49, 3, 2};
   d.damaged.energy = &bond_based_constant_3d_damaged_energy;
+  d.damaged.form = &bond_based_constant_3d_damaged_form;
   d.intact.moments = &bond_based_constant_3d_intact_moments;
   d.intact.residual = &bond_based_constant_3d_intact_residual;
   d.intact.residual_ops = {6, 14, 2, 2};
@@ -1066,6 +1869,7 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.intact.jvp = &bond_based_constant_3d_intact_jvp;
   d.intact.jvp_ops = {21, 46, 3, 2};
   d.intact.energy = &bond_based_constant_3d_intact_energy;
+  d.intact.form = &bond_based_constant_3d_intact_form;
   return d;
 }
 
@@ -1085,7 +1889,14 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1102,12 +1913,16 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
     forces[(k + 1) * 3 + 0] = -b7;
-    forces[0] += b7;
+    lane0[lane] += b7;
     forces[(k + 1) * 3 + 1] = -b8;
-    forces[1] += b8;
+    lane1[lane] += b8;
     forces[(k + 1) * 3 + 2] = -b9;
-    forces[2] += b9;
+    lane2[lane] += b9;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_damaged_tangent: per bond 16 add, 46 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -1121,7 +1936,14 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1);
   const double p3 = p2 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1156,11 +1978,11 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b27 = b25 * Y_0 - b26 * Y_0;
     const double b28 = b25 * Y_1 - b26 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b16;
-    if (forces != nullptr) forces[0] += b16;
+    lane0[lane] += b16;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b17;
-    if (forces != nullptr) forces[1] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b18;
-    if (forces != nullptr) forces[2] += b18;
+    lane2[lane] += b18;
     factors.direct[k * 9 + 0] = b20 + b22 * b5 - b23 * b5;
     factors.direct[k * 9 + 1] = b24;
     factors.direct[k * 9 + 2] = b27;
@@ -1170,7 +1992,11 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
     factors.direct[k * 9 + 6] = b27;
     factors.direct[k * 9 + 7] = b28;
     factors.direct[k * 9 + 8] = b20 + b22 * b7 - b23 * b7;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_damaged_jvp: per bond 22 add, 52 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1183,7 +2009,14 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1219,12 +2052,16 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b24 = V0 * (dY_0 * b18 + dY_1 * (b14 + b16 * b5 - b17 * b5) + dY_2 * b23) * V;
     const double b25 = V0 * (dY_0 * b21 + dY_1 * b23 + dY_2 * (b14 + b16 * b6 - b17 * b6)) * V;
     df[(k + 1) * 3 + 0] = -b22;
-    df[0] += b22;
+    lane0[lane] += b22;
     df[(k + 1) * 3 + 1] = -b24;
-    df[1] += b24;
+    lane1[lane] += b24;
     df[(k + 1) * 3 + 2] = -b25;
-    df[2] += b25;
+    lane2[lane] += b25;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_damaged_energy: per bond 7 add, 14 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1236,7 +2073,12 @@ double bond_based_conical_3d_damaged_energy(const pd::abi::Family& fam) {
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 7.16197243913529 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1249,10 +2091,151 @@ double bond_based_conical_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V * alpha;
+    lane0[lane] += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V * alpha;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_conical_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_conical_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2]);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5]);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6]);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7]);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8]);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8];
+    }
+  }
 }
 
 // bond_based_conical_3d_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -1271,7 +2254,14 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1) * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1287,12 +2277,16 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
     forces[(k + 1) * 3 + 0] = -b7;
-    forces[0] += b7;
+    lane0[lane] += b7;
     forces[(k + 1) * 3 + 1] = -b8;
-    forces[1] += b8;
+    lane1[lane] += b8;
     forces[(k + 1) * 3 + 2] = -b9;
-    forces[2] += b9;
+    lane2[lane] += b9;
+    }
   }
+  forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_intact_tangent: per bond 16 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
@@ -1306,7 +2300,14 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1);
   const double p3 = p2 * V0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1340,11 +2341,11 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b27 = b25 * Y_0 - b26 * Y_0;
     const double b28 = b25 * Y_1 - b26 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b16;
-    if (forces != nullptr) forces[0] += b16;
+    lane0[lane] += b16;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b17;
-    if (forces != nullptr) forces[1] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b18;
-    if (forces != nullptr) forces[2] += b18;
+    lane2[lane] += b18;
     factors.direct[k * 9 + 0] = b20 + b22 * b5 - b23 * b5;
     factors.direct[k * 9 + 1] = b24;
     factors.direct[k * 9 + 2] = b27;
@@ -1354,7 +2355,11 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
     factors.direct[k * 9 + 6] = b27;
     factors.direct[k * 9 + 7] = b28;
     factors.direct[k * 9 + 8] = b20 + b22 * b7 - b23 * b7;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_intact_jvp: per bond 22 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1367,7 +2372,14 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 14.32394487827058 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1402,12 +2414,16 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b24 = V0 * (dY_0 * b18 + dY_1 * (b14 + b16 * b5 - b17 * b5) + dY_2 * b23) * V;
     const double b25 = V0 * (dY_0 * b21 + dY_1 * b23 + dY_2 * (b14 + b16 * b6 - b17 * b6)) * V;
     df[(k + 1) * 3 + 0] = -b22;
-    df[0] += b22;
+    lane0[lane] += b22;
     df[(k + 1) * 3 + 1] = -b24;
-    df[1] += b24;
+    lane1[lane] += b24;
     df[(k + 1) * 3 + 2] = -b25;
-    df[2] += b25;
+    lane2[lane] += b25;
+    }
   }
+  df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_intact_energy: per bond 7 add, 13 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1419,7 +2435,12 @@ double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
   const double p0 = 1.0 / delta;
   const double p1 = p0 * p0;
   const double p2 = 7.16197243913529 * P_K * (p1 * p1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1431,10 +2452,151 @@ double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
     const double b6 = b4 - b5;
-    s_bond_energy += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V;
+    lane0[lane] += p2 * (b6 * b6) * (1.0 - p0 * b5) * (1.0 / b5) * V;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   const double W = s_bond_energy;
   return W;
+}
+
+// bond_based_conical_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 0 multiply-adds per d x d block (0 without the structure); 0 structurally zero factor entries skipped
+void bond_based_conical_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0]);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1]);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2]);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3]);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4]);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5]);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = 0.0;
+        row[3 + k * 3 + 1] = 0.0;
+        row[3 + k * 3 + 2] = 0.0;
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6]);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7]);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8]);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8];
+    }
+  }
 }
 
 pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
@@ -1464,6 +2626,7 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.damaged.jvp = &bond_based_conical_3d_damaged_jvp;
   d.damaged.jvp_ops = {22, 52, 3, 2};
   d.damaged.energy = &bond_based_conical_3d_damaged_energy;
+  d.damaged.form = &bond_based_conical_3d_damaged_form;
   d.intact.moments = &bond_based_conical_3d_intact_moments;
   d.intact.residual = &bond_based_conical_3d_intact_residual;
   d.intact.residual_ops = {7, 16, 2, 2};
@@ -1472,6 +2635,7 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.intact.jvp = &bond_based_conical_3d_intact_jvp;
   d.intact.jvp_ops = {22, 49, 3, 2};
   d.intact.energy = &bond_based_conical_3d_intact_energy;
+  d.intact.form = &bond_based_conical_3d_intact_form;
   return d;
 }
 

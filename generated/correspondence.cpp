@@ -14,7 +14,15 @@ void correspondence_plane_strain_damaged_moments(const pd::abi::Family& fam, dou
   double s_shape_0_1 = 0.0;
   double s_shape_1_0 = 0.0;
   double s_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -22,11 +30,16 @@ void correspondence_plane_strain_damaged_moments(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b0 = V * alpha * w;
     const double b1 = b0 * xi_1 * xi_0;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b1;
+    lane3[lane] += b0 * (xi_1 * xi_1);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -47,7 +60,15 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -58,11 +79,16 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -76,7 +102,13 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
   const double p12 = p3 * s_shape_0_0;
   const double p13 = p3 * s_shape_1_0;
   const double p14 = p7 + 2.0 * (p6 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -87,10 +119,13 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
     const double b17 = V0 * (p8 * b15 + p11 * b16) * V * alpha * w;
     const double b18 = V0 * (p11 * b15 + p14 * b16) * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b17;
-    forces[0] += b17;
+    lane4[lane] += b17;
     forces[(k + 1) * 2 + 1] = -b18;
-    forces[1] += b18;
+    lane5[lane] += b18;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_damaged_tangent: per bond 12 add, 60 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
@@ -107,7 +142,15 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -118,11 +161,16 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -150,7 +198,13 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
   const double p26 = p16 * s_shape_0_0;
   const double p27 = p14 * P_G;
   const double p28 = p26 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -164,9 +218,9 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
     const double b34 = b33 * xi_0;
     const double b35 = b33 * xi_1;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b31;
-    if (forces != nullptr) forces[0] += b31;
+    lane4[lane] += b31;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b32;
-    if (forces != nullptr) forces[1] += b32;
+    lane5[lane] += b32;
     factors.direct[k * 4 + 0] = 0.0;
     factors.direct[k * 4 + 1] = 0.0;
     factors.direct[k * 4 + 2] = 0.0;
@@ -187,7 +241,10 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
     factors.right[(k * 4 + 3) * 2 + 1] = b35;
     factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * alpha * w;
     factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * alpha * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_damaged_jvp: per bond 16 add, 58 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
@@ -204,7 +261,15 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
   double ds_deformed_shape_0_1 = 0.0;
   double ds_deformed_shape_1_0 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -214,11 +279,16 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double b0 = dY_0 * V * alpha * w;
     const double b1 = dY_1 * V * alpha * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b1 * xi_0;
+    lane3[lane] += b1 * xi_1;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p2 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p3 = (P_K - 0.6666666666666666 * P_G) * p2;
@@ -239,7 +309,13 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
   const double p18 = p11 * P_G;
   const double p19 = -p16 - p5 * s_shape_0_1 * P_G;
   const double p20 = p17 + p5 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -250,10 +326,13 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
     const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * alpha * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * alpha * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * alpha * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * alpha * w) * V;
     const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * alpha * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * alpha * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * alpha * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b23;
-    df[0] += b23;
+    lane4[lane] += b23;
     df[(k + 1) * 2 + 1] = -b24;
-    df[1] += b24;
+    lane5[lane] += b24;
+    }
   }
+  df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_damaged_energy: per bond 0 add, 8 mul, 0 div, 0 call; per family 14 add, 30 mul, 1 div, 0 call
@@ -269,7 +348,15 @@ double correspondence_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -280,11 +367,16 @@ double correspondence_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
@@ -308,7 +400,15 @@ void correspondence_plane_strain_damaged_outputs(const pd::abi::Family& fam, dou
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -319,16 +419,126 @@ void correspondence_plane_strain_damaged_outputs(const pd::abi::Family& fam, dou
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 8 structurally zero factor entries skipped
+void correspondence_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 2 + 0] = ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 2 + 0] = ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 // correspondence_plane_strain_intact_moments: per bond 0 add, 7 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -338,18 +548,31 @@ void correspondence_plane_strain_intact_moments(const pd::abi::Family& fam, doub
   double s_shape_0_1 = 0.0;
   double s_shape_1_0 = 0.0;
   double s_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b0 = V * w;
     const double b1 = b0 * xi_1 * xi_0;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b1;
+    lane3[lane] += b0 * (xi_1 * xi_1);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -370,7 +593,15 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -380,11 +611,16 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -398,7 +634,13 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
   const double p12 = p3 * s_shape_0_0;
   const double p13 = p3 * s_shape_1_0;
   const double p14 = p7 + 2.0 * (p6 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -408,10 +650,13 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
     const double b17 = V0 * (p8 * b15 + p11 * b16) * V * w;
     const double b18 = V0 * (p11 * b15 + p14 * b16) * V * w;
     forces[(k + 1) * 2 + 0] = -b17;
-    forces[0] += b17;
+    lane4[lane] += b17;
     forces[(k + 1) * 2 + 1] = -b18;
-    forces[1] += b18;
+    lane5[lane] += b18;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_intact_tangent: per bond 12 add, 48 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
@@ -428,7 +673,15 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -438,11 +691,16 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -470,7 +728,13 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
   const double p26 = p16 * s_shape_0_0;
   const double p27 = p14 * P_G;
   const double p28 = p26 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -483,9 +747,9 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
     const double b34 = b33 * xi_0;
     const double b35 = b33 * xi_1;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b31;
-    if (forces != nullptr) forces[0] += b31;
+    lane4[lane] += b31;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b32;
-    if (forces != nullptr) forces[1] += b32;
+    lane5[lane] += b32;
     factors.direct[k * 4 + 0] = 0.0;
     factors.direct[k * 4 + 1] = 0.0;
     factors.direct[k * 4 + 2] = 0.0;
@@ -506,7 +770,10 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
     factors.right[(k * 4 + 3) * 2 + 1] = b35;
     factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * w;
     factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_intact_jvp: per bond 16 add, 48 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
@@ -523,7 +790,15 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
   double ds_deformed_shape_0_1 = 0.0;
   double ds_deformed_shape_1_0 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
@@ -532,11 +807,16 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double b0 = dY_0 * V * w;
     const double b1 = dY_1 * V * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b1 * xi_0;
+    lane3[lane] += b1 * xi_1;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p2 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p3 = (P_K - 0.6666666666666666 * P_G) * p2;
@@ -557,7 +837,13 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
   const double p18 = p11 * P_G;
   const double p19 = -p16 - p5 * s_shape_0_1 * P_G;
   const double p20 = p17 + p5 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -567,10 +853,13 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
     const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * w) * V;
     const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * w) * V;
     df[(k + 1) * 2 + 0] = -b23;
-    df[0] += b23;
+    lane4[lane] += b23;
     df[(k + 1) * 2 + 1] = -b24;
-    df[1] += b24;
+    lane5[lane] += b24;
+    }
   }
+  df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_plane_strain_intact_energy: per bond 0 add, 7 mul, 0 div, 0 call; per family 14 add, 30 mul, 1 div, 0 call
@@ -586,7 +875,15 @@ double correspondence_plane_strain_intact_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -596,11 +893,16 @@ double correspondence_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
@@ -624,7 +926,15 @@ void correspondence_plane_strain_intact_outputs(const pd::abi::Family& fam, doub
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -634,16 +944,126 @@ void correspondence_plane_strain_intact_outputs(const pd::abi::Family& fam, doub
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 8 structurally zero factor entries skipped
+void correspondence_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 2 + 0] = ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 2 + 0] = ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
@@ -671,6 +1091,7 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.damaged.jvp_ops = {16, 58, 0, 0};
   d.damaged.energy = &correspondence_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_plane_strain_damaged_outputs;
+  d.damaged.form = &correspondence_plane_strain_damaged_form;
   d.intact.moments = &correspondence_plane_strain_intact_moments;
   d.intact.residual = &correspondence_plane_strain_intact_residual;
   d.intact.residual_ops = {4, 21, 0, 0};
@@ -680,6 +1101,7 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.intact.jvp_ops = {16, 48, 0, 0};
   d.intact.energy = &correspondence_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_plane_strain_intact_outputs;
+  d.intact.form = &correspondence_plane_strain_intact_form;
   return d;
 }
 
@@ -695,7 +1117,20 @@ void correspondence_3d_damaged_moments(const pd::abi::Family& fam, double* momen
   double s_shape_2_0 = 0.0;
   double s_shape_2_1 = 0.0;
   double s_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -707,16 +1142,26 @@ void correspondence_3d_damaged_moments(const pd::abi::Family& fam, double* momen
     const double b2 = b0 * xi_2;
     const double b3 = b2 * xi_0;
     const double b4 = b2 * xi_1;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_0_2 += b3;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_shape_1_2 += b4;
-    s_shape_2_0 += b3;
-    s_shape_2_1 += b4;
-    s_shape_2_2 += b0 * (xi_2 * xi_2);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b3;
+    lane3[lane] += b1;
+    lane4[lane] += b0 * (xi_1 * xi_1);
+    lane5[lane] += b4;
+    lane6[lane] += b3;
+    lane7[lane] += b4;
+    lane8[lane] += b0 * (xi_2 * xi_2);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -752,7 +1197,20 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -766,16 +1224,26 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -809,7 +1277,14 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
   const double p33 = p20 + 2.0 * (p15 - 1.0) * P_G;
   const double p34 = (p24 * s_deformed_shape_1_0 + p30 * s_deformed_shape_1_1 + p31 * s_deformed_shape_1_2 + p23 * s_deformed_shape_2_0 + p25 * s_deformed_shape_2_1 + p26 * s_deformed_shape_2_2) * P_G;
   const double p35 = p20 + 2.0 * (p19 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -823,12 +1298,16 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
     const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * V * alpha * w;
     const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b39;
-    forces[0] += b39;
+    lane9[lane] += b39;
     forces[(k + 1) * 3 + 1] = -b40;
-    forces[1] += b40;
+    lane10[lane] += b40;
     forces[(k + 1) * 3 + 2] = -b41;
-    forces[2] += b41;
+    lane11[lane] += b41;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_damaged_tangent: per bond 48 add, 157 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
@@ -855,7 +1334,20 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -869,16 +1361,26 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -950,7 +1452,14 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
   const double p71 = p70 + p25 * P_G;
   const double p72 = p29 * p26 * p8;
   const double p73 = p72 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -977,11 +1486,11 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
     const double b91 = p63 * b74;
     const double b92 = p66 * b74;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b77;
-    if (forces != nullptr) forces[0] += b77;
+    lane9[lane] += b77;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b78;
-    if (forces != nullptr) forces[1] += b78;
+    lane10[lane] += b78;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b79;
-    if (forces != nullptr) forces[2] += b79;
+    lane11[lane] += b79;
     factors.direct[k * 9 + 0] = 0.0;
     factors.direct[k * 9 + 1] = 0.0;
     factors.direct[k * 9 + 2] = 0.0;
@@ -1045,7 +1554,11 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
     factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * alpha * w;
     factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * alpha * w;
     factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * alpha * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_damaged_jvp: per bond 66 add, 168 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
@@ -1072,7 +1585,20 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
   double ds_deformed_shape_2_0 = 0.0;
   double ds_deformed_shape_2_1 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -1085,16 +1611,26 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
     const double b0 = dY_0 * V * alpha * w;
     const double b1 = dY_1 * V * alpha * w;
     const double b2 = dY_2 * V * alpha * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_0_2 += b0 * xi_2;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
-    ds_deformed_shape_1_2 += b1 * xi_2;
-    ds_deformed_shape_2_0 += b2 * xi_0;
-    ds_deformed_shape_2_1 += b2 * xi_1;
-    ds_deformed_shape_2_2 += b2 * xi_2;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b0 * xi_2;
+    lane3[lane] += b1 * xi_0;
+    lane4[lane] += b1 * xi_1;
+    lane5[lane] += b1 * xi_2;
+    lane6[lane] += b2 * xi_0;
+    lane7[lane] += b2 * xi_1;
+    lane8[lane] += b2 * xi_2;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  ds_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  ds_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  ds_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p3 = P_K - 0.6666666666666666 * P_G;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
@@ -1147,7 +1683,14 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
   const double p51 = p45 + 2.0 * p16 * p8 * P_G;
   const double p52 = p46 + 2.0 * p23 * p8 * P_G;
   const double p53 = p47 + 2.0 * p29 * p8 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1170,12 +1713,16 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
     const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * alpha * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * alpha * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * alpha * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * alpha * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * alpha * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * alpha * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * alpha * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * alpha * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * alpha * w) * V;
     const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * alpha * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * alpha * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * alpha * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * alpha * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * alpha * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * alpha * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * alpha * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * alpha * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b63;
-    df[0] += b63;
+    lane9[lane] += b63;
     df[(k + 1) * 3 + 1] = -b67;
-    df[1] += b67;
+    lane10[lane] += b67;
     df[(k + 1) * 3 + 2] = -b68;
-    df[2] += b68;
+    lane11[lane] += b68;
+    }
   }
+  df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_damaged_energy: per bond 0 add, 14 mul, 0 div, 0 call; per family 46 add, 91 mul, 1 div, 0 call
@@ -1201,7 +1748,20 @@ double correspondence_3d_damaged_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1215,16 +1775,26 @@ double correspondence_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -1282,7 +1852,20 @@ void correspondence_3d_damaged_outputs(const pd::abi::Family& fam, double* outpu
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1296,16 +1879,26 @@ void correspondence_3d_damaged_outputs(const pd::abi::Family& fam, double* outpu
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -1336,6 +1929,235 @@ void correspondence_3d_damaged_outputs(const pd::abi::Family& fam, double* outpu
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 27 structurally zero factor entries skipped
+void correspondence_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 // correspondence_3d_intact_moments: per bond 0 add, 12 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void correspondence_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
@@ -1348,7 +2170,20 @@ void correspondence_3d_intact_moments(const pd::abi::Family& fam, double* moment
   double s_shape_2_0 = 0.0;
   double s_shape_2_1 = 0.0;
   double s_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1359,16 +2194,26 @@ void correspondence_3d_intact_moments(const pd::abi::Family& fam, double* moment
     const double b2 = b0 * xi_2;
     const double b3 = b2 * xi_0;
     const double b4 = b2 * xi_1;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_0_2 += b3;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_shape_1_2 += b4;
-    s_shape_2_0 += b3;
-    s_shape_2_1 += b4;
-    s_shape_2_2 += b0 * (xi_2 * xi_2);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b3;
+    lane3[lane] += b1;
+    lane4[lane] += b0 * (xi_1 * xi_1);
+    lane5[lane] += b4;
+    lane6[lane] += b3;
+    lane7[lane] += b4;
+    lane8[lane] += b0 * (xi_2 * xi_2);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -1404,7 +2249,20 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1417,16 +2275,26 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -1460,7 +2328,14 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
   const double p33 = p20 + 2.0 * (p15 - 1.0) * P_G;
   const double p34 = (p24 * s_deformed_shape_1_0 + p30 * s_deformed_shape_1_1 + p31 * s_deformed_shape_1_2 + p23 * s_deformed_shape_2_0 + p25 * s_deformed_shape_2_1 + p26 * s_deformed_shape_2_2) * P_G;
   const double p35 = p20 + 2.0 * (p19 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1473,12 +2348,16 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
     const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * V * w;
     const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * V * w;
     forces[(k + 1) * 3 + 0] = -b39;
-    forces[0] += b39;
+    lane9[lane] += b39;
     forces[(k + 1) * 3 + 1] = -b40;
-    forces[1] += b40;
+    lane10[lane] += b40;
     forces[(k + 1) * 3 + 2] = -b41;
-    forces[2] += b41;
+    lane11[lane] += b41;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_intact_tangent: per bond 48 add, 125 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
@@ -1505,7 +2384,20 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1518,16 +2410,26 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -1599,7 +2501,14 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
   const double p71 = p70 + p25 * P_G;
   const double p72 = p29 * p26 * p8;
   const double p73 = p72 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1625,11 +2534,11 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
     const double b91 = p63 * b74;
     const double b92 = p66 * b74;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b77;
-    if (forces != nullptr) forces[0] += b77;
+    lane9[lane] += b77;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b78;
-    if (forces != nullptr) forces[1] += b78;
+    lane10[lane] += b78;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b79;
-    if (forces != nullptr) forces[2] += b79;
+    lane11[lane] += b79;
     factors.direct[k * 9 + 0] = 0.0;
     factors.direct[k * 9 + 1] = 0.0;
     factors.direct[k * 9 + 2] = 0.0;
@@ -1693,7 +2602,11 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
     factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * w;
     factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * w;
     factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_intact_jvp: per bond 66 add, 138 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
@@ -1720,7 +2633,20 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
   double ds_deformed_shape_2_0 = 0.0;
   double ds_deformed_shape_2_1 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
@@ -1732,16 +2658,26 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b0 = dY_0 * V * w;
     const double b1 = dY_1 * V * w;
     const double b2 = dY_2 * V * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_0_2 += b0 * xi_2;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
-    ds_deformed_shape_1_2 += b1 * xi_2;
-    ds_deformed_shape_2_0 += b2 * xi_0;
-    ds_deformed_shape_2_1 += b2 * xi_1;
-    ds_deformed_shape_2_2 += b2 * xi_2;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b0 * xi_2;
+    lane3[lane] += b1 * xi_0;
+    lane4[lane] += b1 * xi_1;
+    lane5[lane] += b1 * xi_2;
+    lane6[lane] += b2 * xi_0;
+    lane7[lane] += b2 * xi_1;
+    lane8[lane] += b2 * xi_2;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  ds_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  ds_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  ds_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p3 = P_K - 0.6666666666666666 * P_G;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
@@ -1794,7 +2730,14 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
   const double p51 = p45 + 2.0 * p16 * p8 * P_G;
   const double p52 = p46 + 2.0 * p23 * p8 * P_G;
   const double p53 = p47 + 2.0 * p29 * p8 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1816,12 +2759,16 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * w) * V;
     const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * w) * V;
     df[(k + 1) * 3 + 0] = -b63;
-    df[0] += b63;
+    lane9[lane] += b63;
     df[(k + 1) * 3 + 1] = -b67;
-    df[1] += b67;
+    lane10[lane] += b67;
     df[(k + 1) * 3 + 2] = -b68;
-    df[2] += b68;
+    lane11[lane] += b68;
+    }
   }
+  df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_3d_intact_energy: per bond 0 add, 13 mul, 0 div, 0 call; per family 46 add, 91 mul, 1 div, 0 call
@@ -1847,7 +2794,20 @@ double correspondence_3d_intact_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1860,16 +2820,26 @@ double correspondence_3d_intact_energy(const pd::abi::Family& fam) {
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -1927,7 +2897,20 @@ void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* output
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1940,16 +2923,26 @@ void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* output
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -1980,6 +2973,235 @@ void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* output
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 27 structurally zero factor entries skipped
+void correspondence_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      row[(k + 1) * 3 + 0] = ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 pd::abi::LawDescriptor correspondence_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
@@ -2005,6 +3227,7 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.damaged.jvp_ops = {66, 168, 0, 0};
   d.damaged.energy = &correspondence_3d_damaged_energy;
   d.damaged.outputs = &correspondence_3d_damaged_outputs;
+  d.damaged.form = &correspondence_3d_damaged_form;
   d.intact.moments = &correspondence_3d_intact_moments;
   d.intact.residual = &correspondence_3d_intact_residual;
   d.intact.residual_ops = {12, 40, 0, 0};
@@ -2014,6 +3237,7 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.intact.jvp_ops = {66, 138, 0, 0};
   d.intact.energy = &correspondence_3d_intact_energy;
   d.intact.outputs = &correspondence_3d_intact_outputs;
+  d.intact.form = &correspondence_3d_intact_form;
   return d;
 }
 
@@ -2026,7 +3250,17 @@ void correspondence_silling_plane_strain_damaged_moments(const pd::abi::Family& 
   double s_shape_1_1 = 0.0;
   double s_intact_volume = 0.0;
   double s_influence_volume = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2035,13 +3269,20 @@ void correspondence_silling_plane_strain_damaged_moments(const pd::abi::Family& 
     const double b0 = V * alpha;
     const double b1 = b0 * w;
     const double b2 = b1 * xi_1 * xi_0;
-    s_shape_0_0 += b1 * (xi_0 * xi_0);
-    s_shape_0_1 += b2;
-    s_shape_1_0 += b2;
-    s_shape_1_1 += b1 * (xi_1 * xi_1);
-    s_intact_volume += b0;
-    s_influence_volume += b1;
+    lane0[lane] += b1 * (xi_0 * xi_0);
+    lane1[lane] += b2;
+    lane2[lane] += b2;
+    lane3[lane] += b1 * (xi_1 * xi_1);
+    lane4[lane] += b0;
+    lane5[lane] += b1;
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_intact_volume += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_influence_volume += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -2068,7 +3309,15 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2079,11 +3328,16 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -2112,7 +3366,13 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
   const double p27 = p7 + 2.0 * (p6 - 1.0) * P_G;
   const double p28 = p14 - p18;
   const double p29 = p17 * s_shape_0_0 - p13 * s_shape_0_1;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -2125,10 +3385,13 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
     const double b32 = V0 * ((p8 * b30 + p19 * b31) * alpha * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * alpha * w) * V;
     const double b33 = V0 * ((p19 * b30 + p27 * b31) * alpha * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * alpha * w) * V;
     forces[(k + 1) * 2 + 0] = -b32;
-    forces[0] += b32;
+    lane4[lane] += b32;
     forces[(k + 1) * 2 + 1] = -b33;
-    forces[1] += b33;
+    lane5[lane] += b33;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_damaged_tangent: per bond 22 add, 78 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
@@ -2149,7 +3412,15 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2160,11 +3431,16 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -2207,7 +3483,13 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
   const double p41 = p31 * s_shape_0_0;
   const double p42 = p22 * P_G;
   const double p43 = p41 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -2226,9 +3508,9 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
     const double b52 = b49 * xi_1;
     const double b53 = p25 * b45 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b46;
-    if (forces != nullptr) forces[0] += b46;
+    lane4[lane] += b46;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b47;
-    if (forces != nullptr) forces[1] += b47;
+    lane5[lane] += b47;
     factors.direct[k * 4 + 0] = b48;
     factors.direct[k * 4 + 1] = 0.0;
     factors.direct[k * 4 + 2] = 0.0;
@@ -2249,7 +3531,10 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
     factors.right[(k * 4 + 3) * 2 + 1] = b52;
     factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * alpha * w;
     factors.left[(k * 4 + 3) * 2 + 1] = (p43 * b45 - p42 * b44) * alpha * w - b53;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_damaged_jvp: per bond 22 add, 70 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
@@ -2270,7 +3555,15 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
   double ds_deformed_shape_0_1 = 0.0;
   double ds_deformed_shape_1_0 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -2280,11 +3573,16 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double b0 = dY_0 * V * alpha * w;
     const double b1 = dY_1 * V * alpha * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b1 * xi_0;
+    lane3[lane] += b1 * xi_1;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p2 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p3 = (P_K - 0.6666666666666666 * P_G) * p2;
@@ -2308,7 +3606,13 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
   const double p21 = p11 * P_G;
   const double p22 = -p19 - p5 * s_shape_0_1 * P_G;
   const double p23 = p20 + p5 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -2323,10 +3627,13 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
     const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * alpha * w - b26) + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * alpha * w - b27) + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * alpha * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * alpha * w + p14 * dY_0 * alpha * w) * V;
     const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * alpha * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * alpha * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * alpha * w - b26) + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * alpha * w - b27) + p14 * dY_1 * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b28;
-    df[0] += b28;
+    lane4[lane] += b28;
     df[(k + 1) * 2 + 1] = -b29;
-    df[1] += b29;
+    lane5[lane] += b29;
+    }
   }
+  df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_damaged_energy: per bond 5 add, 17 mul, 0 div, 0 call; per family 20 add, 47 mul, 3 div, 0 call
@@ -2346,7 +3653,15 @@ double correspondence_silling_plane_strain_damaged_energy(const pd::abi::Family&
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2357,11 +3672,16 @@ double correspondence_silling_plane_strain_damaged_energy(const pd::abi::Family&
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   double s_nonaffine_energy = 0.0;
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = p3 * s_deformed_shape_0_0;
@@ -2372,7 +3692,12 @@ double correspondence_silling_plane_strain_damaged_energy(const pd::abi::Family&
   const double p9 = p3 * s_deformed_shape_1_1;
   const double p10 = p8 * s_shape_1_1 - p9 * s_shape_1_0;
   const double p11 = p9 * s_shape_0_0 - p8 * s_shape_0_1;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -2382,8 +3707,10 @@ double correspondence_silling_plane_strain_damaged_energy(const pd::abi::Family&
     const double w = fam.w[k];
     const double b12 = Y_0 - (p6 * xi_0 + p7 * xi_1);
     const double b13 = Y_1 - (p10 * xi_0 + p11 * xi_1);
-    s_nonaffine_energy += (b12 * b12 + b13 * b13) * V * alpha * w;
+    lane4[lane] += (b12 * b12 + b13 * b13) * V * alpha * w;
+    }
   }
+  s_nonaffine_energy += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   const double p14 = 2.0 * p3;
   const double p15 = 0.5 * (p14 * s_deformed_shape_0_0 * s_shape_1_1 - p14 * s_deformed_shape_0_1 * s_shape_1_0);
   const double p16 = p15 - 1.0;
@@ -2408,7 +3735,15 @@ void correspondence_silling_plane_strain_damaged_outputs(const pd::abi::Family& 
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2419,16 +3754,130 @@ void correspondence_silling_plane_strain_damaged_outputs(const pd::abi::Family& 
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_silling_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 6 structurally zero factor entries skipped
+void correspondence_silling_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 // correspondence_silling_plane_strain_intact_moments: per bond 0 add, 7 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -2440,20 +3889,37 @@ void correspondence_silling_plane_strain_intact_moments(const pd::abi::Family& f
   double s_shape_1_1 = 0.0;
   double s_intact_volume = 0.0;
   double s_influence_volume = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b0 = V * w;
     const double b1 = b0 * xi_1 * xi_0;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_intact_volume += V;
-    s_influence_volume += b0;
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b1;
+    lane3[lane] += b0 * (xi_1 * xi_1);
+    lane4[lane] += V;
+    lane5[lane] += b0;
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_intact_volume += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_influence_volume += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -2480,7 +3946,15 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2490,11 +3964,16 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -2523,7 +4002,13 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
   const double p27 = p7 + 2.0 * (p6 - 1.0) * P_G;
   const double p28 = p14 - p18;
   const double p29 = p17 * s_shape_0_0 - p13 * s_shape_0_1;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -2535,10 +4020,13 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
     const double b32 = V0 * ((p8 * b30 + p19 * b31) * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * w) * V;
     const double b33 = V0 * ((p19 * b30 + p27 * b31) * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * w) * V;
     forces[(k + 1) * 2 + 0] = -b32;
-    forces[0] += b32;
+    lane4[lane] += b32;
     forces[(k + 1) * 2 + 1] = -b33;
-    forces[1] += b33;
+    lane5[lane] += b33;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_intact_tangent: per bond 22 add, 61 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
@@ -2559,7 +4047,15 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2569,11 +4065,16 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -2616,7 +4117,13 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
   const double p41 = p31 * s_shape_0_0;
   const double p42 = p22 * P_G;
   const double p43 = p41 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -2634,9 +4141,9 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
     const double b52 = b49 * xi_1;
     const double b53 = p25 * b45 * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b46;
-    if (forces != nullptr) forces[0] += b46;
+    lane4[lane] += b46;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b47;
-    if (forces != nullptr) forces[1] += b47;
+    lane5[lane] += b47;
     factors.direct[k * 4 + 0] = b48;
     factors.direct[k * 4 + 1] = 0.0;
     factors.direct[k * 4 + 2] = 0.0;
@@ -2657,7 +4164,10 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
     factors.right[(k * 4 + 3) * 2 + 1] = b52;
     factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * w;
     factors.left[(k * 4 + 3) * 2 + 1] = (p43 * b45 - p42 * b44) * w - b53;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_intact_jvp: per bond 22 add, 56 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
@@ -2678,7 +4188,15 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
   double ds_deformed_shape_0_1 = 0.0;
   double ds_deformed_shape_1_0 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
@@ -2687,11 +4205,16 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double b0 = dY_0 * V * w;
     const double b1 = dY_1 * V * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b1 * xi_0;
+    lane3[lane] += b1 * xi_1;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p2 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p3 = (P_K - 0.6666666666666666 * P_G) * p2;
@@ -2715,7 +4238,13 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
   const double p21 = p11 * P_G;
   const double p22 = -p19 - p5 * s_shape_0_1 * P_G;
   const double p23 = p20 + p5 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -2729,10 +4258,13 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
     const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * w - b26) + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * w - b27) + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * w + p14 * dY_0 * w) * V;
     const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * w - b26) + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * w - b27) + p14 * dY_1 * w) * V;
     df[(k + 1) * 2 + 0] = -b28;
-    df[0] += b28;
+    lane4[lane] += b28;
     df[(k + 1) * 2 + 1] = -b29;
-    df[1] += b29;
+    lane5[lane] += b29;
+    }
   }
+  df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_silling_plane_strain_intact_energy: per bond 5 add, 15 mul, 0 div, 0 call; per family 20 add, 47 mul, 3 div, 0 call
@@ -2752,7 +4284,15 @@ double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& 
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2762,11 +4302,16 @@ double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& 
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   double s_nonaffine_energy = 0.0;
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = p3 * s_deformed_shape_0_0;
@@ -2777,7 +4322,12 @@ double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& 
   const double p9 = p3 * s_deformed_shape_1_1;
   const double p10 = p8 * s_shape_1_1 - p9 * s_shape_1_0;
   const double p11 = p9 * s_shape_0_0 - p8 * s_shape_0_1;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -2786,8 +4336,10 @@ double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& 
     const double w = fam.w[k];
     const double b12 = Y_0 - (p6 * xi_0 + p7 * xi_1);
     const double b13 = Y_1 - (p10 * xi_0 + p11 * xi_1);
-    s_nonaffine_energy += (b12 * b12 + b13 * b13) * V * w;
+    lane4[lane] += (b12 * b12 + b13 * b13) * V * w;
+    }
   }
+  s_nonaffine_energy += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   const double p14 = 2.0 * p3;
   const double p15 = 0.5 * (p14 * s_deformed_shape_0_0 * s_shape_1_1 - p14 * s_deformed_shape_0_1 * s_shape_1_0);
   const double p16 = p15 - 1.0;
@@ -2812,7 +4364,15 @@ void correspondence_silling_plane_strain_intact_outputs(const pd::abi::Family& f
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2822,16 +4382,130 @@ void correspondence_silling_plane_strain_intact_outputs(const pd::abi::Family& f
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_silling_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 6 structurally zero factor entries skipped
+void correspondence_silling_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      {
+        const double v = c * (factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
@@ -2859,6 +4533,7 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.damaged.jvp_ops = {22, 70, 0, 0};
   d.damaged.energy = &correspondence_silling_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_silling_plane_strain_damaged_outputs;
+  d.damaged.form = &correspondence_silling_plane_strain_damaged_form;
   d.intact.moments = &correspondence_silling_plane_strain_intact_moments;
   d.intact.residual = &correspondence_silling_plane_strain_intact_residual;
   d.intact.residual_ops = {10, 29, 0, 0};
@@ -2868,6 +4543,7 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.intact.jvp_ops = {22, 56, 0, 0};
   d.intact.energy = &correspondence_silling_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_silling_plane_strain_intact_outputs;
+  d.intact.form = &correspondence_silling_plane_strain_intact_form;
   return d;
 }
 
@@ -2885,7 +4561,22 @@ void correspondence_silling_3d_damaged_moments(const pd::abi::Family& fam, doubl
   double s_shape_2_2 = 0.0;
   double s_intact_volume = 0.0;
   double s_influence_volume = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2898,18 +4589,30 @@ void correspondence_silling_3d_damaged_moments(const pd::abi::Family& fam, doubl
     const double b3 = b1 * xi_2;
     const double b4 = b3 * xi_0;
     const double b5 = b3 * xi_1;
-    s_shape_0_0 += b1 * (xi_0 * xi_0);
-    s_shape_0_1 += b2;
-    s_shape_0_2 += b4;
-    s_shape_1_0 += b2;
-    s_shape_1_1 += b1 * (xi_1 * xi_1);
-    s_shape_1_2 += b5;
-    s_shape_2_0 += b4;
-    s_shape_2_1 += b5;
-    s_shape_2_2 += b1 * (xi_2 * xi_2);
-    s_intact_volume += b0;
-    s_influence_volume += b1;
+    lane0[lane] += b1 * (xi_0 * xi_0);
+    lane1[lane] += b2;
+    lane2[lane] += b4;
+    lane3[lane] += b2;
+    lane4[lane] += b1 * (xi_1 * xi_1);
+    lane5[lane] += b5;
+    lane6[lane] += b4;
+    lane7[lane] += b5;
+    lane8[lane] += b1 * (xi_2 * xi_2);
+    lane9[lane] += b0;
+    lane10[lane] += b1;
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  s_intact_volume += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  s_influence_volume += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -2951,7 +4654,20 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2965,16 +4681,26 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -3029,7 +4755,14 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
   const double p54 = p37 + p38 + p39;
   const double p55 = p47 + p48 + p49;
   const double p56 = p24 * s_deformed_shape_2_0 + p34 * s_deformed_shape_2_1 + p35 * s_deformed_shape_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3046,12 +4779,16 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
     const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * alpha * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * alpha * w) * V;
     const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * alpha * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * alpha * w) * V;
     forces[(k + 1) * 3 + 0] = -b60;
-    forces[0] += b60;
+    lane9[lane] += b60;
     forces[(k + 1) * 3 + 1] = -b61;
-    forces[1] += b61;
+    lane10[lane] += b61;
     forces[(k + 1) * 3 + 2] = -b62;
-    forces[2] += b62;
+    lane11[lane] += b62;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_damaged_tangent: per bond 69 add, 186 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
@@ -3082,7 +4819,20 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -3096,16 +4846,26 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -3198,7 +4958,14 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
   const double p92 = p91 + p25 * P_G;
   const double p93 = p29 * p26 * p8;
   const double p94 = p93 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3232,11 +4999,11 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
     const double b116 = p84 * b95;
     const double b117 = p87 * b95;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b98;
-    if (forces != nullptr) forces[0] += b98;
+    lane9[lane] += b98;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b99;
-    if (forces != nullptr) forces[1] += b99;
+    lane10[lane] += b99;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b100;
-    if (forces != nullptr) forces[2] += b100;
+    lane11[lane] += b100;
     factors.direct[k * 9 + 0] = b101;
     factors.direct[k * 9 + 1] = 0.0;
     factors.direct[k * 9 + 2] = 0.0;
@@ -3300,7 +5067,11 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
     factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * alpha * w;
     factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * alpha * w;
     factors.left[(k * 9 + 8) * 3 + 2] = (b112 + b117 + p94 * b97) * alpha * w - b114;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_damaged_jvp: per bond 78 add, 186 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
@@ -3331,7 +5102,20 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
   double ds_deformed_shape_2_0 = 0.0;
   double ds_deformed_shape_2_1 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -3344,16 +5128,26 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
     const double b0 = dY_0 * V * alpha * w;
     const double b1 = dY_1 * V * alpha * w;
     const double b2 = dY_2 * V * alpha * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_0_2 += b0 * xi_2;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
-    ds_deformed_shape_1_2 += b1 * xi_2;
-    ds_deformed_shape_2_0 += b2 * xi_0;
-    ds_deformed_shape_2_1 += b2 * xi_1;
-    ds_deformed_shape_2_2 += b2 * xi_2;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b0 * xi_2;
+    lane3[lane] += b1 * xi_0;
+    lane4[lane] += b1 * xi_1;
+    lane5[lane] += b1 * xi_2;
+    lane6[lane] += b2 * xi_0;
+    lane7[lane] += b2 * xi_1;
+    lane8[lane] += b2 * xi_2;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  ds_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  ds_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  ds_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p3 = P_K - 0.6666666666666666 * P_G;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
@@ -3409,7 +5203,14 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
   const double p54 = p48 + 2.0 * p16 * p8 * P_G;
   const double p55 = p49 + 2.0 * p23 * p8 * P_G;
   const double p56 = p50 + 2.0 * p29 * p8 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3438,12 +5239,16 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
     const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * alpha * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * alpha * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * alpha * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * alpha * w - b62) + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * alpha * w - b65) + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * alpha * w - b68) + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * alpha * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * alpha * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * alpha * w + p33 * dY_1 * alpha * w) * V;
     const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * alpha * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * alpha * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * alpha * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * alpha * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * alpha * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * alpha * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * alpha * w - b62) + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * alpha * w - b65) + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * alpha * w - b68) + p33 * dY_2 * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b69;
-    df[0] += b69;
+    lane9[lane] += b69;
     df[(k + 1) * 3 + 1] = -b73;
-    df[1] += b73;
+    lane10[lane] += b73;
     df[(k + 1) * 3 + 2] = -b74;
-    df[2] += b74;
+    lane11[lane] += b74;
+    }
   }
+  df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_damaged_energy: per bond 11 add, 29 mul, 0 div, 0 call; per family 66 add, 130 mul, 3 div, 0 call
@@ -3473,7 +5278,20 @@ double correspondence_silling_3d_damaged_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -3487,16 +5305,26 @@ double correspondence_silling_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   double s_nonaffine_energy = 0.0;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -3521,7 +5349,12 @@ double correspondence_silling_3d_damaged_energy(const pd::abi::Family& fam) {
   const double p24 = p9 * s_deformed_shape_2_0 + p10 * s_deformed_shape_2_1 + p11 * s_deformed_shape_2_2;
   const double p25 = p13 * s_deformed_shape_2_0 + p14 * s_deformed_shape_2_1 + p15 * s_deformed_shape_2_2;
   const double p26 = p17 * s_deformed_shape_2_0 + p18 * s_deformed_shape_2_1 + p19 * s_deformed_shape_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -3534,8 +5367,10 @@ double correspondence_silling_3d_damaged_energy(const pd::abi::Family& fam) {
     const double b27 = Y_0 - (p12 * xi_0 + p16 * xi_1 + p20 * xi_2);
     const double b28 = Y_1 - (p21 * xi_0 + p22 * xi_1 + p23 * xi_2);
     const double b29 = Y_2 - (p24 * xi_0 + p25 * xi_1 + p26 * xi_2);
-    s_nonaffine_energy += (b27 * b27 + b28 * b28 + b29 * b29) * V * alpha * w;
+    lane9[lane] += (b27 * b27 + b28 * b28 + b29 * b29) * V * alpha * w;
+    }
   }
+  s_nonaffine_energy += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   const double p30 = 2.0 * p8;
   const double p31 = 0.5 * (p30 * p5 * s_deformed_shape_0_0 + 2.0 * (p7 - p6) * p8 * s_deformed_shape_0_1 + p30 * p4 * s_deformed_shape_0_2);
   const double p32 = p31 - 1.0;
@@ -3574,7 +5409,20 @@ void correspondence_silling_3d_damaged_outputs(const pd::abi::Family& fam, doubl
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -3588,16 +5436,26 @@ void correspondence_silling_3d_damaged_outputs(const pd::abi::Family& fam, doubl
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -3628,6 +5486,241 @@ void correspondence_silling_3d_damaged_outputs(const pd::abi::Family& fam, doubl
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_silling_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 24 structurally zero factor entries skipped
+void correspondence_silling_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 // correspondence_silling_3d_intact_moments: per bond 0 add, 12 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void correspondence_silling_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
@@ -3642,7 +5735,22 @@ void correspondence_silling_3d_intact_moments(const pd::abi::Family& fam, double
   double s_shape_2_2 = 0.0;
   double s_intact_volume = 0.0;
   double s_influence_volume = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -3653,18 +5761,30 @@ void correspondence_silling_3d_intact_moments(const pd::abi::Family& fam, double
     const double b2 = b0 * xi_2;
     const double b3 = b2 * xi_0;
     const double b4 = b2 * xi_1;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_0_2 += b3;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_shape_1_2 += b4;
-    s_shape_2_0 += b3;
-    s_shape_2_1 += b4;
-    s_shape_2_2 += b0 * (xi_2 * xi_2);
-    s_intact_volume += V;
-    s_influence_volume += b0;
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b3;
+    lane3[lane] += b1;
+    lane4[lane] += b0 * (xi_1 * xi_1);
+    lane5[lane] += b4;
+    lane6[lane] += b3;
+    lane7[lane] += b4;
+    lane8[lane] += b0 * (xi_2 * xi_2);
+    lane9[lane] += V;
+    lane10[lane] += b0;
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  s_intact_volume += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  s_influence_volume += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -3706,7 +5826,20 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -3719,16 +5852,26 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -3783,7 +5926,14 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
   const double p54 = p37 + p38 + p39;
   const double p55 = p47 + p48 + p49;
   const double p56 = p24 * s_deformed_shape_2_0 + p34 * s_deformed_shape_2_1 + p35 * s_deformed_shape_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3799,12 +5949,16 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
     const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * w) * V;
     const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * w) * V;
     forces[(k + 1) * 3 + 0] = -b60;
-    forces[0] += b60;
+    lane9[lane] += b60;
     forces[(k + 1) * 3 + 1] = -b61;
-    forces[1] += b61;
+    lane10[lane] += b61;
     forces[(k + 1) * 3 + 2] = -b62;
-    forces[2] += b62;
+    lane11[lane] += b62;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_intact_tangent: per bond 69 add, 147 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
@@ -3835,7 +5989,20 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -3848,16 +6015,26 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -3950,7 +6127,14 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
   const double p92 = p91 + p25 * P_G;
   const double p93 = p29 * p26 * p8;
   const double p94 = p93 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3983,11 +6167,11 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
     const double b116 = p84 * b95;
     const double b117 = p87 * b95;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b98;
-    if (forces != nullptr) forces[0] += b98;
+    lane9[lane] += b98;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b99;
-    if (forces != nullptr) forces[1] += b99;
+    lane10[lane] += b99;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b100;
-    if (forces != nullptr) forces[2] += b100;
+    lane11[lane] += b100;
     factors.direct[k * 9 + 0] = b101;
     factors.direct[k * 9 + 1] = 0.0;
     factors.direct[k * 9 + 2] = 0.0;
@@ -4051,7 +6235,11 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
     factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * w;
     factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * w;
     factors.left[(k * 9 + 8) * 3 + 2] = (b112 + b117 + p94 * b97) * w - b114;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_intact_jvp: per bond 78 add, 150 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
@@ -4082,7 +6270,20 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
   double ds_deformed_shape_2_0 = 0.0;
   double ds_deformed_shape_2_1 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
@@ -4094,16 +6295,26 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
     const double b0 = dY_0 * V * w;
     const double b1 = dY_1 * V * w;
     const double b2 = dY_2 * V * w;
-    ds_deformed_shape_0_0 += b0 * xi_0;
-    ds_deformed_shape_0_1 += b0 * xi_1;
-    ds_deformed_shape_0_2 += b0 * xi_2;
-    ds_deformed_shape_1_0 += b1 * xi_0;
-    ds_deformed_shape_1_1 += b1 * xi_1;
-    ds_deformed_shape_1_2 += b1 * xi_2;
-    ds_deformed_shape_2_0 += b2 * xi_0;
-    ds_deformed_shape_2_1 += b2 * xi_1;
-    ds_deformed_shape_2_2 += b2 * xi_2;
+    lane0[lane] += b0 * xi_0;
+    lane1[lane] += b0 * xi_1;
+    lane2[lane] += b0 * xi_2;
+    lane3[lane] += b1 * xi_0;
+    lane4[lane] += b1 * xi_1;
+    lane5[lane] += b1 * xi_2;
+    lane6[lane] += b2 * xi_0;
+    lane7[lane] += b2 * xi_1;
+    lane8[lane] += b2 * xi_2;
+    }
   }
+  ds_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  ds_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  ds_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  ds_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  ds_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p3 = P_K - 0.6666666666666666 * P_G;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
@@ -4159,7 +6370,14 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
   const double p54 = p48 + 2.0 * p16 * p8 * P_G;
   const double p55 = p49 + 2.0 * p23 * p8 * P_G;
   const double p56 = p50 + 2.0 * p29 * p8 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -4187,12 +6405,16 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
     const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * w - b62) + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * w - b65) + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * w - b68) + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * w + p33 * dY_1 * w) * V;
     const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * w - b62) + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * w - b65) + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * w - b68) + p33 * dY_2 * w) * V;
     df[(k + 1) * 3 + 0] = -b69;
-    df[0] += b69;
+    lane9[lane] += b69;
     df[(k + 1) * 3 + 1] = -b73;
-    df[1] += b73;
+    lane10[lane] += b73;
     df[(k + 1) * 3 + 2] = -b74;
-    df[2] += b74;
+    lane11[lane] += b74;
+    }
   }
+  df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_silling_3d_intact_energy: per bond 11 add, 27 mul, 0 div, 0 call; per family 66 add, 130 mul, 3 div, 0 call
@@ -4222,7 +6444,20 @@ double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam) {
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -4235,16 +6470,26 @@ double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam) {
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   double s_nonaffine_energy = 0.0;
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -4269,7 +6514,12 @@ double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam) {
   const double p24 = p9 * s_deformed_shape_2_0 + p10 * s_deformed_shape_2_1 + p11 * s_deformed_shape_2_2;
   const double p25 = p13 * s_deformed_shape_2_0 + p14 * s_deformed_shape_2_1 + p15 * s_deformed_shape_2_2;
   const double p26 = p17 * s_deformed_shape_2_0 + p18 * s_deformed_shape_2_1 + p19 * s_deformed_shape_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -4281,8 +6531,10 @@ double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam) {
     const double b27 = Y_0 - (p12 * xi_0 + p16 * xi_1 + p20 * xi_2);
     const double b28 = Y_1 - (p21 * xi_0 + p22 * xi_1 + p23 * xi_2);
     const double b29 = Y_2 - (p24 * xi_0 + p25 * xi_1 + p26 * xi_2);
-    s_nonaffine_energy += (b27 * b27 + b28 * b28 + b29 * b29) * V * w;
+    lane9[lane] += (b27 * b27 + b28 * b28 + b29 * b29) * V * w;
+    }
   }
+  s_nonaffine_energy += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   const double p30 = 2.0 * p8;
   const double p31 = 0.5 * (p30 * p5 * s_deformed_shape_0_0 + 2.0 * (p7 - p6) * p8 * s_deformed_shape_0_1 + p30 * p4 * s_deformed_shape_0_2);
   const double p32 = p31 - 1.0;
@@ -4321,7 +6573,20 @@ void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -4334,16 +6599,26 @@ void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -4374,6 +6649,241 @@ void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_silling_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 24 structurally zero factor entries skipped
+void correspondence_silling_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      {
+        const double v = c * (factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
@@ -4399,6 +6909,7 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.damaged.jvp_ops = {78, 186, 0, 0};
   d.damaged.energy = &correspondence_silling_3d_damaged_energy;
   d.damaged.outputs = &correspondence_silling_3d_damaged_outputs;
+  d.damaged.form = &correspondence_silling_3d_damaged_form;
   d.intact.moments = &correspondence_silling_3d_intact_moments;
   d.intact.residual = &correspondence_silling_3d_intact_residual;
   d.intact.residual_ops = {24, 55, 0, 0};
@@ -4408,6 +6919,7 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.intact.jvp_ops = {78, 150, 0, 0};
   d.intact.energy = &correspondence_silling_3d_intact_energy;
   d.intact.outputs = &correspondence_silling_3d_intact_outputs;
+  d.intact.form = &correspondence_silling_3d_intact_form;
   return d;
 }
 
@@ -4418,7 +6930,15 @@ void correspondence_littlewood_plane_strain_damaged_moments(const pd::abi::Famil
   double s_shape_0_1 = 0.0;
   double s_shape_1_0 = 0.0;
   double s_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -4426,11 +6946,16 @@ void correspondence_littlewood_plane_strain_damaged_moments(const pd::abi::Famil
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b0 = V * alpha * w;
     const double b1 = b0 * xi_1 * xi_0;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b1;
+    lane3[lane] += b0 * (xi_1 * xi_1);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -4453,7 +6978,15 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -4464,11 +6997,16 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -4496,7 +7034,13 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
   const double p26 = p14 - p18;
   const double p27 = p17 * s_shape_0_0 - p13 * s_shape_0_1;
   const double p28 = p7 + 2.0 * (p6 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -4514,10 +7058,13 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
     const double b36 = V0 * ((p8 * b29 + p19 * b30) * alpha * w + b35 * Y_0) * V;
     const double b37 = V0 * ((p19 * b29 + p28 * b30) * alpha * w + b35 * Y_1) * V;
     forces[(k + 1) * 2 + 0] = -b36;
-    forces[0] += b36;
+    lane4[lane] += b36;
     forces[(k + 1) * 2 + 1] = -b37;
-    forces[1] += b37;
+    lane5[lane] += b37;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_littlewood_plane_strain_damaged_tangent: per bond 42 add, 129 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
@@ -4536,7 +7083,15 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -4547,11 +7102,16 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -4593,7 +7153,13 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
   const double p40 = p30 * s_shape_0_0;
   const double p41 = p22 * P_G;
   const double p42 = p40 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
@@ -4636,9 +7202,9 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     const double b75 = b71 * b44 * alpha * w;
     const double b76 = b75 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b59;
-    if (forces != nullptr) forces[0] += b59;
+    lane4[lane] += b59;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b60;
-    if (forces != nullptr) forces[1] += b60;
+    lane5[lane] += b60;
     factors.direct[k * 4 + 0] = b58 + b65 * Y_0 - b66 * b46;
     factors.direct[k * 4 + 1] = b67 * Y_0 - b68;
     factors.direct[k * 4 + 2] = b65 * Y_1 - b68;
@@ -4659,7 +7225,10 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     factors.right[(k * 4 + 3) * 2 + 1] = b74;
     factors.left[(k * 4 + 3) * 2 + 0] = (p40 * b43 - p41 * b44) * alpha * w - b76;
     factors.left[(k * 4 + 3) * 2 + 1] = (p42 * b44 - p41 * b43) * alpha * w - b75 * b47;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_littlewood_plane_strain_damaged_jvp: per bond 48 add, 137 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
@@ -4682,7 +7251,19 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
   double ds_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -4697,15 +7278,24 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
     const double b2 = dY_0 * V * alpha * w;
     const double b3 = b0 * Y_1;
     const double b4 = dY_1 * V * alpha * w;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    ds_deformed_shape_0_0 += b2 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    ds_deformed_shape_0_1 += b2 * xi_1;
-    s_deformed_shape_1_0 += b3 * xi_0;
-    ds_deformed_shape_1_0 += b4 * xi_0;
-    s_deformed_shape_1_1 += b3 * xi_1;
-    ds_deformed_shape_1_1 += b4 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b2 * xi_0;
+    lane2[lane] += b1 * xi_1;
+    lane3[lane] += b2 * xi_1;
+    lane4[lane] += b3 * xi_0;
+    lane5[lane] += b4 * xi_0;
+    lane6[lane] += b3 * xi_1;
+    lane7[lane] += b4 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_0_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_0 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_0 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_1_1 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_1_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p5 = 1.0 / delta;
   const double p6 = 3.819718634205488 * P_hourglass * (P_K + 0.3333333333333333 * P_G) * (p5 * p5 * p5);
@@ -4736,7 +7326,13 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
   const double p31 = p24 * P_G;
   const double p32 = -p29 - p18 * s_shape_0_1 * P_G;
   const double p33 = p30 + p18 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -4778,10 +7374,13 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
     const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) + dY_1 * (b54 * Y_0 - b55) + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * alpha * w - b59 * b35) + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * alpha * w - b60 * b35) + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * alpha * w - b61) + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * alpha * w - b62)) * V;
     const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) + dY_1 * (b47 + b54 * Y_1 - b53 * b36) + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * alpha * w - b61) + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * alpha * w - b62) + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * alpha * w - b59 * b36) + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * alpha * w - b60 * b36)) * V;
     df[(k + 1) * 2 + 0] = -b63;
-    df[0] += b63;
+    lane8[lane] += b63;
     df[(k + 1) * 2 + 1] = -b64;
-    df[1] += b64;
+    lane9[lane] += b64;
+    }
   }
+  df[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  df[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
 }
 
 // correspondence_littlewood_plane_strain_damaged_outputs: per bond 0 add, 8 mul, 0 div, 0 call; per family 8 add, 22 mul, 1 div, 0 call
@@ -4795,7 +7394,15 @@ void correspondence_littlewood_plane_strain_damaged_outputs(const pd::abi::Famil
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -4806,16 +7413,132 @@ void correspondence_littlewood_plane_strain_damaged_outputs(const pd::abi::Famil
     const double b0 = V * alpha * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_littlewood_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 4 structurally zero factor entries skipped
+void correspondence_littlewood_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 // correspondence_littlewood_plane_strain_intact_moments: per bond 0 add, 7 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -4825,18 +7548,31 @@ void correspondence_littlewood_plane_strain_intact_moments(const pd::abi::Family
   double s_shape_0_1 = 0.0;
   double s_shape_1_0 = 0.0;
   double s_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b0 = V * w;
     const double b1 = b0 * xi_1 * xi_0;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b1;
+    lane3[lane] += b0 * (xi_1 * xi_1);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_1_0;
@@ -4859,7 +7595,15 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -4869,11 +7613,16 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -4901,7 +7650,13 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
   const double p26 = p14 - p18;
   const double p27 = p17 * s_shape_0_0 - p13 * s_shape_0_1;
   const double p28 = p7 + 2.0 * (p6 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -4918,10 +7673,13 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
     const double b36 = V0 * ((p8 * b29 + p19 * b30) * w + b35 * Y_0) * V;
     const double b37 = V0 * ((p19 * b29 + p28 * b30) * w + b35 * Y_1) * V;
     forces[(k + 1) * 2 + 0] = -b36;
-    forces[0] += b36;
+    lane4[lane] += b36;
     forces[(k + 1) * 2 + 1] = -b37;
-    forces[1] += b37;
+    lane5[lane] += b37;
+    }
   }
+  forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_littlewood_plane_strain_intact_tangent: per bond 42 add, 111 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
@@ -4940,7 +7698,15 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -4950,11 +7716,16 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
@@ -4996,7 +7767,13 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
   const double p40 = p30 * s_shape_0_0;
   const double p41 = p22 * P_G;
   const double p42 = p40 + p4 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane4[4] = {};
+  double lane5[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
@@ -5038,9 +7815,9 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     const double b75 = b71 * b44 * w;
     const double b76 = b75 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b59;
-    if (forces != nullptr) forces[0] += b59;
+    lane4[lane] += b59;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b60;
-    if (forces != nullptr) forces[1] += b60;
+    lane5[lane] += b60;
     factors.direct[k * 4 + 0] = b58 + b65 * Y_0 - b66 * b46;
     factors.direct[k * 4 + 1] = b67 * Y_0 - b68;
     factors.direct[k * 4 + 2] = b65 * Y_1 - b68;
@@ -5061,7 +7838,10 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     factors.right[(k * 4 + 3) * 2 + 1] = b74;
     factors.left[(k * 4 + 3) * 2 + 0] = (p40 * b43 - p41 * b44) * w - b76;
     factors.left[(k * 4 + 3) * 2 + 1] = (p42 * b44 - p41 * b43) * w - b75 * b47;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
 // correspondence_littlewood_plane_strain_intact_jvp: per bond 48 add, 120 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
@@ -5084,7 +7864,19 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
   double ds_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
   double ds_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -5098,15 +7890,24 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
     const double b2 = dY_0 * V * w;
     const double b3 = b0 * Y_1;
     const double b4 = dY_1 * V * w;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    ds_deformed_shape_0_0 += b2 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    ds_deformed_shape_0_1 += b2 * xi_1;
-    s_deformed_shape_1_0 += b3 * xi_0;
-    ds_deformed_shape_1_0 += b4 * xi_0;
-    s_deformed_shape_1_1 += b3 * xi_1;
-    ds_deformed_shape_1_1 += b4 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b2 * xi_0;
+    lane2[lane] += b1 * xi_1;
+    lane3[lane] += b2 * xi_1;
+    lane4[lane] += b3 * xi_0;
+    lane5[lane] += b4 * xi_0;
+    lane6[lane] += b3 * xi_1;
+    lane7[lane] += b4 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_0_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_0 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_1_0 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_1_1 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_1_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p5 = 1.0 / delta;
   const double p6 = 3.819718634205488 * P_hourglass * (P_K + 0.3333333333333333 * P_G) * (p5 * p5 * p5);
@@ -5137,7 +7938,13 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
   const double p31 = p24 * P_G;
   const double p32 = -p29 - p18 * s_shape_0_1 * P_G;
   const double p33 = p30 + p18 * s_shape_0_0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -5178,10 +7985,13 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
     const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) + dY_1 * (b54 * Y_0 - b55) + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * w - b59 * b35) + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * w - b60 * b35) + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * w - b61) + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * w - b62)) * V;
     const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) + dY_1 * (b47 + b54 * Y_1 - b53 * b36) + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * w - b61) + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * w - b62) + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * w - b59 * b36) + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * w - b60 * b36)) * V;
     df[(k + 1) * 2 + 0] = -b63;
-    df[0] += b63;
+    lane8[lane] += b63;
     df[(k + 1) * 2 + 1] = -b64;
-    df[1] += b64;
+    lane9[lane] += b64;
+    }
   }
+  df[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  df[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
 }
 
 // correspondence_littlewood_plane_strain_intact_outputs: per bond 0 add, 7 mul, 0 div, 0 call; per family 8 add, 22 mul, 1 div, 0 call
@@ -5195,7 +8005,15 @@ void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family
   double s_deformed_shape_0_1 = 0.0;
   double s_deformed_shape_1_0 = 0.0;
   double s_deformed_shape_1_1 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -5205,16 +8023,132 @@ void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family
     const double b0 = V * w;
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
   const double p4 = 2.0 * p3;
   outputs[0] = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0) - 1.0;
   outputs[1] = 0.5 * (p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0);
   outputs[2] = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1) - 1.0;
+}
+
+// correspondence_littlewood_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 8 multiply-adds per d x d block (16 without the structure); 4 structurally zero factor entries skipped
+void correspondence_littlewood_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_2_0 = 0.0;
+  double rs_2_1 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 8 + 0];
+    ls_0_0 += c * factors.left[k * 8 + 0];
+    ls_0_1 += c * factors.left[k * 8 + 1];
+    rs_1_0 += factors.right[k * 8 + 2];
+    ls_1_0 += c * factors.left[k * 8 + 2];
+    ls_1_1 += c * factors.left[k * 8 + 3];
+    ls_2_0 += c * factors.left[k * 8 + 4];
+    rs_2_1 += factors.right[k * 8 + 5];
+    ls_2_1 += c * factors.left[k * 8 + 5];
+    ls_3_0 += c * factors.left[k * 8 + 6];
+    rs_3_1 += factors.right[k * 8 + 7];
+    ls_3_1 += c * factors.left[k * 8 + 7];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 8 + 0];
+      const double a_1 = -c * factors.left[i * 8 + 2];
+      const double a_2 = -c * factors.left[i * 8 + 4];
+      const double a_3 = -c * factors.left[i * 8 + 6];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 8 + 0] * rs_0_0 + factors.left[i * 8 + 2] * rs_1_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 8 + 4] * rs_2_1 + factors.left[i * 8 + 6] * rs_3_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 8 + 1];
+      const double a_1 = -c * factors.left[i * 8 + 3];
+      const double a_2 = -c * factors.left[i * 8 + 5];
+      const double a_3 = -c * factors.left[i * 8 + 7];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 8 + 0] + a_1 * factors.right[k * 8 + 2];
+        row[2 + k * 2 + 1] = a_2 * factors.right[k * 8 + 5] + a_3 * factors.right[k * 8 + 7];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 8 + 1] * rs_0_0 + factors.left[i * 8 + 3] * rs_1_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 8 + 5] * rs_2_1 + factors.left[i * 8 + 7] * rs_3_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 8 + 0] + ls_1_0 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_2_0 * factors.right[k * 8 + 5] + ls_3_0 * factors.right[k * 8 + 7];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 8 + 0] + ls_1_1 * factors.right[k * 8 + 2];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_2_1 * factors.right[k * 8 + 5] + ls_3_1 * factors.right[k * 8 + 7];
+    }
+  }
 }
 
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
@@ -5241,6 +8175,7 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.damaged.jvp = &correspondence_littlewood_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {48, 137, 3, 2};
   d.damaged.outputs = &correspondence_littlewood_plane_strain_damaged_outputs;
+  d.damaged.form = &correspondence_littlewood_plane_strain_damaged_form;
   d.intact.moments = &correspondence_littlewood_plane_strain_intact_moments;
   d.intact.residual = &correspondence_littlewood_plane_strain_intact_residual;
   d.intact.residual_ops = {14, 40, 2, 2};
@@ -5249,6 +8184,7 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.intact.jvp = &correspondence_littlewood_plane_strain_intact_jvp;
   d.intact.jvp_ops = {48, 120, 3, 2};
   d.intact.outputs = &correspondence_littlewood_plane_strain_intact_outputs;
+  d.intact.form = &correspondence_littlewood_plane_strain_intact_form;
   return d;
 }
 
@@ -5264,7 +8200,20 @@ void correspondence_littlewood_3d_damaged_moments(const pd::abi::Family& fam, do
   double s_shape_2_0 = 0.0;
   double s_shape_2_1 = 0.0;
   double s_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -5276,16 +8225,26 @@ void correspondence_littlewood_3d_damaged_moments(const pd::abi::Family& fam, do
     const double b2 = b0 * xi_2;
     const double b3 = b2 * xi_0;
     const double b4 = b2 * xi_1;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_0_2 += b3;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_shape_1_2 += b4;
-    s_shape_2_0 += b3;
-    s_shape_2_1 += b4;
-    s_shape_2_2 += b0 * (xi_2 * xi_2);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b3;
+    lane3[lane] += b1;
+    lane4[lane] += b0 * (xi_1 * xi_1);
+    lane5[lane] += b4;
+    lane6[lane] += b3;
+    lane7[lane] += b4;
+    lane8[lane] += b0 * (xi_2 * xi_2);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -5323,7 +8282,20 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -5337,16 +8309,26 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -5401,7 +8383,14 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
   const double p54 = p20 + 2.0 * (p15 - 1.0) * P_G;
   const double p55 = (p47 + p49 + p50 + p51) * P_G;
   const double p56 = p20 + 2.0 * (p19 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -5423,12 +8412,16 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
     const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * alpha * w + b64 * Y_1) * V;
     const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * alpha * w + b64 * Y_2) * V;
     forces[(k + 1) * 3 + 0] = -b65;
-    forces[0] += b65;
+    lane9[lane] += b65;
     forces[(k + 1) * 3 + 1] = -b66;
-    forces[1] += b66;
+    lane10[lane] += b66;
     forces[(k + 1) * 3 + 2] = -b67;
-    forces[2] += b67;
+    lane11[lane] += b67;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_littlewood_3d_damaged_tangent: per bond 118 add, 279 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
@@ -5457,7 +8450,20 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -5471,16 +8477,26 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -5573,7 +8589,14 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
   const double p92 = p91 + p25 * P_G;
   const double p93 = p29 * p26 * p8;
   const double p94 = p93 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -5650,11 +8673,11 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     const double b159 = p87 * b95;
     const double b160 = b153 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b115;
-    if (forces != nullptr) forces[0] += b115;
+    lane9[lane] += b115;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b116;
-    if (forces != nullptr) forces[1] += b116;
+    lane10[lane] += b116;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b117;
-    if (forces != nullptr) forces[2] += b117;
+    lane11[lane] += b117;
     factors.direct[k * 9 + 0] = b114 + b124 * Y_0 - b125 * b99;
     factors.direct[k * 9 + 1] = b126 * Y_0 - b127;
     factors.direct[k * 9 + 2] = b128 * Y_0 - b130;
@@ -5718,7 +8741,11 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * alpha * w - b154;
     factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * alpha * w - b160;
     factors.left[(k * 9 + 8) * 3 + 2] = (b149 + b159 + p94 * b97) * alpha * w - b151 * b101;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_littlewood_3d_damaged_jvp: per bond 142 add, 310 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
@@ -5756,7 +8783,29 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
   double ds_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -5776,25 +8825,44 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
     const double b4 = dY_1 * V * alpha * w;
     const double b5 = b0 * Y_2;
     const double b6 = dY_2 * V * alpha * w;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    ds_deformed_shape_0_0 += b2 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    ds_deformed_shape_0_1 += b2 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    ds_deformed_shape_0_2 += b2 * xi_2;
-    s_deformed_shape_1_0 += b3 * xi_0;
-    ds_deformed_shape_1_0 += b4 * xi_0;
-    s_deformed_shape_1_1 += b3 * xi_1;
-    ds_deformed_shape_1_1 += b4 * xi_1;
-    s_deformed_shape_1_2 += b3 * xi_2;
-    ds_deformed_shape_1_2 += b4 * xi_2;
-    s_deformed_shape_2_0 += b5 * xi_0;
-    ds_deformed_shape_2_0 += b6 * xi_0;
-    s_deformed_shape_2_1 += b5 * xi_1;
-    ds_deformed_shape_2_1 += b6 * xi_1;
-    s_deformed_shape_2_2 += b5 * xi_2;
-    ds_deformed_shape_2_2 += b6 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b2 * xi_0;
+    lane2[lane] += b1 * xi_1;
+    lane3[lane] += b2 * xi_1;
+    lane4[lane] += b1 * xi_2;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b4 * xi_0;
+    lane8[lane] += b3 * xi_1;
+    lane9[lane] += b4 * xi_1;
+    lane10[lane] += b3 * xi_2;
+    lane11[lane] += b4 * xi_2;
+    lane12[lane] += b5 * xi_0;
+    lane13[lane] += b6 * xi_0;
+    lane14[lane] += b5 * xi_1;
+    lane15[lane] += b6 * xi_1;
+    lane16[lane] += b5 * xi_2;
+    lane17[lane] += b6 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_0_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_0_2 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_0_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_1_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_1_0 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_1_1 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  ds_deformed_shape_1_1 += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  s_deformed_shape_1_2 += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  ds_deformed_shape_1_2 += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  s_deformed_shape_2_0 += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  ds_deformed_shape_2_0 += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  s_deformed_shape_2_1 += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  ds_deformed_shape_2_1 += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  s_deformed_shape_2_2 += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  ds_deformed_shape_2_2 += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p7 = 1.0 / delta;
   const double p8 = p7 * p7;
@@ -5859,7 +8927,14 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
   const double p67 = p61 + 2.0 * p27 * p14 * P_G;
   const double p68 = p62 + 2.0 * p29 * p14 * P_G;
   const double p69 = p63 + 2.0 * p31 * p14 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane18[4] = {};
+  double lane19[4] = {};
+  double lane20[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -5935,12 +9010,16 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
     const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) + dY_1 * (b86 + b95 * Y_1 - b94 * b72) + dY_2 * (b97 * Y_1 - b123) + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * alpha * w - b113) + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * alpha * w - b114) + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * alpha * w - b115) + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * alpha * w - b106 * b72) + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * alpha * w - b109 * b72) + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * alpha * w - b112 * b72) + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * alpha * w - b127) + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * alpha * w - b128) + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * alpha * w - b129)) * V;
     const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) + dY_1 * (b95 * Y_2 - b123) + dY_2 * (b86 + b97 * Y_2 - b94 * b73) + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * alpha * w - b117) + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * alpha * w - b119) + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * alpha * w - b121) + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * alpha * w - b127) + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * alpha * w - b128) + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * alpha * w - b129) + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * alpha * w - b106 * b73) + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * alpha * w - b109 * b73) + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * alpha * w - b112 * b73)) * V;
     df[(k + 1) * 3 + 0] = -b122;
-    df[0] += b122;
+    lane18[lane] += b122;
     df[(k + 1) * 3 + 1] = -b130;
-    df[1] += b130;
+    lane19[lane] += b130;
     df[(k + 1) * 3 + 2] = -b131;
-    df[2] += b131;
+    lane20[lane] += b131;
+    }
   }
+  df[0] += (lane18[0] + lane18[1]) + (lane18[2] + lane18[3]);
+  df[1] += (lane19[0] + lane19[1]) + (lane19[2] + lane19[3]);
+  df[2] += (lane20[0] + lane20[1]) + (lane20[2] + lane20[3]);
 }
 
 // correspondence_littlewood_3d_damaged_outputs: per bond 0 add, 14 mul, 0 div, 0 call; per family 36 add, 80 mul, 1 div, 0 call
@@ -5964,7 +9043,20 @@ void correspondence_littlewood_3d_damaged_outputs(const pd::abi::Family& fam, do
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -5978,16 +9070,26 @@ void correspondence_littlewood_3d_damaged_outputs(const pd::abi::Family& fam, do
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -6018,6 +9120,247 @@ void correspondence_littlewood_3d_damaged_outputs(const pd::abi::Family& fam, do
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_littlewood_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 18 structurally zero factor entries skipped
+void correspondence_littlewood_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 // correspondence_littlewood_3d_intact_moments: per bond 0 add, 12 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void correspondence_littlewood_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
@@ -6030,7 +9373,20 @@ void correspondence_littlewood_3d_intact_moments(const pd::abi::Family& fam, dou
   double s_shape_2_0 = 0.0;
   double s_shape_2_1 = 0.0;
   double s_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -6041,16 +9397,26 @@ void correspondence_littlewood_3d_intact_moments(const pd::abi::Family& fam, dou
     const double b2 = b0 * xi_2;
     const double b3 = b2 * xi_0;
     const double b4 = b2 * xi_1;
-    s_shape_0_0 += b0 * (xi_0 * xi_0);
-    s_shape_0_1 += b1;
-    s_shape_0_2 += b3;
-    s_shape_1_0 += b1;
-    s_shape_1_1 += b0 * (xi_1 * xi_1);
-    s_shape_1_2 += b4;
-    s_shape_2_0 += b3;
-    s_shape_2_1 += b4;
-    s_shape_2_2 += b0 * (xi_2 * xi_2);
+    lane0[lane] += b0 * (xi_0 * xi_0);
+    lane1[lane] += b1;
+    lane2[lane] += b3;
+    lane3[lane] += b1;
+    lane4[lane] += b0 * (xi_1 * xi_1);
+    lane5[lane] += b4;
+    lane6[lane] += b3;
+    lane7[lane] += b4;
+    lane8[lane] += b0 * (xi_2 * xi_2);
+    }
   }
+  s_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   moments[0] = s_shape_0_0;
   moments[1] = s_shape_0_1;
   moments[2] = s_shape_0_2;
@@ -6088,7 +9454,20 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -6101,16 +9480,26 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -6165,7 +9554,14 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
   const double p54 = p20 + 2.0 * (p15 - 1.0) * P_G;
   const double p55 = (p47 + p49 + p50 + p51) * P_G;
   const double p56 = p20 + 2.0 * (p19 - 1.0) * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -6186,12 +9582,16 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
     const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * w + b64 * Y_1) * V;
     const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * w + b64 * Y_2) * V;
     forces[(k + 1) * 3 + 0] = -b65;
-    forces[0] += b65;
+    lane9[lane] += b65;
     forces[(k + 1) * 3 + 1] = -b66;
-    forces[1] += b66;
+    lane10[lane] += b66;
     forces[(k + 1) * 3 + 2] = -b67;
-    forces[2] += b67;
+    lane11[lane] += b67;
+    }
   }
+  forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_littlewood_3d_intact_tangent: per bond 118 add, 239 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
@@ -6220,7 +9620,20 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -6233,16 +9646,26 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
@@ -6335,7 +9758,14 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
   const double p92 = p91 + p25 * P_G;
   const double p93 = p29 * p26 * p8;
   const double p94 = p93 + p27 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -6411,11 +9841,11 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     const double b159 = p87 * b95;
     const double b160 = b153 * Y_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b115;
-    if (forces != nullptr) forces[0] += b115;
+    lane9[lane] += b115;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b116;
-    if (forces != nullptr) forces[1] += b116;
+    lane10[lane] += b116;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b117;
-    if (forces != nullptr) forces[2] += b117;
+    lane11[lane] += b117;
     factors.direct[k * 9 + 0] = b114 + b124 * Y_0 - b125 * b99;
     factors.direct[k * 9 + 1] = b126 * Y_0 - b127;
     factors.direct[k * 9 + 2] = b128 * Y_0 - b130;
@@ -6479,7 +9909,11 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * w - b154;
     factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * w - b160;
     factors.left[(k * 9 + 8) * 3 + 2] = (b149 + b159 + p94 * b97) * w - b151 * b101;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  if (forces != nullptr) forces[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // correspondence_littlewood_3d_intact_jvp: per bond 142 add, 271 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
@@ -6517,7 +9951,29 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
   double ds_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
   double ds_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -6536,25 +9992,44 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
     const double b4 = dY_1 * V * w;
     const double b5 = b0 * Y_2;
     const double b6 = dY_2 * V * w;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    ds_deformed_shape_0_0 += b2 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    ds_deformed_shape_0_1 += b2 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    ds_deformed_shape_0_2 += b2 * xi_2;
-    s_deformed_shape_1_0 += b3 * xi_0;
-    ds_deformed_shape_1_0 += b4 * xi_0;
-    s_deformed_shape_1_1 += b3 * xi_1;
-    ds_deformed_shape_1_1 += b4 * xi_1;
-    s_deformed_shape_1_2 += b3 * xi_2;
-    ds_deformed_shape_1_2 += b4 * xi_2;
-    s_deformed_shape_2_0 += b5 * xi_0;
-    ds_deformed_shape_2_0 += b6 * xi_0;
-    s_deformed_shape_2_1 += b5 * xi_1;
-    ds_deformed_shape_2_1 += b6 * xi_1;
-    s_deformed_shape_2_2 += b5 * xi_2;
-    ds_deformed_shape_2_2 += b6 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b2 * xi_0;
+    lane2[lane] += b1 * xi_1;
+    lane3[lane] += b2 * xi_1;
+    lane4[lane] += b1 * xi_2;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b4 * xi_0;
+    lane8[lane] += b3 * xi_1;
+    lane9[lane] += b4 * xi_1;
+    lane10[lane] += b3 * xi_2;
+    lane11[lane] += b4 * xi_2;
+    lane12[lane] += b5 * xi_0;
+    lane13[lane] += b6 * xi_0;
+    lane14[lane] += b5 * xi_1;
+    lane15[lane] += b6 * xi_1;
+    lane16[lane] += b5 * xi_2;
+    lane17[lane] += b6 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_deformed_shape_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  ds_deformed_shape_0_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_0_2 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  ds_deformed_shape_0_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_1_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  ds_deformed_shape_1_0 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_1_1 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  ds_deformed_shape_1_1 += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  s_deformed_shape_1_2 += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  ds_deformed_shape_1_2 += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  s_deformed_shape_2_0 += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  ds_deformed_shape_2_0 += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  s_deformed_shape_2_1 += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  ds_deformed_shape_2_1 += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  s_deformed_shape_2_2 += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  ds_deformed_shape_2_2 += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p7 = 1.0 / delta;
   const double p8 = p7 * p7;
@@ -6619,7 +10094,14 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
   const double p67 = p61 + 2.0 * p27 * p14 * P_G;
   const double p68 = p62 + 2.0 * p29 * p14 * P_G;
   const double p69 = p63 + 2.0 * p31 * p14 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane18[4] = {};
+  double lane19[4] = {};
+  double lane20[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -6694,12 +10176,16 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
     const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) + dY_1 * (b86 + b95 * Y_1 - b94 * b72) + dY_2 * (b97 * Y_1 - b123) + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * w - b113) + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * w - b114) + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * w - b115) + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * w - b106 * b72) + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * w - b109 * b72) + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * w - b112 * b72) + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * w - b127) + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * w - b128) + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * w - b129)) * V;
     const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) + dY_1 * (b95 * Y_2 - b123) + dY_2 * (b86 + b97 * Y_2 - b94 * b73) + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * w - b117) + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * w - b119) + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * w - b121) + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * w - b127) + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * w - b128) + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * w - b129) + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * w - b106 * b73) + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * w - b109 * b73) + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * w - b112 * b73)) * V;
     df[(k + 1) * 3 + 0] = -b122;
-    df[0] += b122;
+    lane18[lane] += b122;
     df[(k + 1) * 3 + 1] = -b130;
-    df[1] += b130;
+    lane19[lane] += b130;
     df[(k + 1) * 3 + 2] = -b131;
-    df[2] += b131;
+    lane20[lane] += b131;
+    }
   }
+  df[0] += (lane18[0] + lane18[1]) + (lane18[2] + lane18[3]);
+  df[1] += (lane19[0] + lane19[1]) + (lane19[2] + lane19[3]);
+  df[2] += (lane20[0] + lane20[1]) + (lane20[2] + lane20[3]);
 }
 
 // correspondence_littlewood_3d_intact_outputs: per bond 0 add, 13 mul, 0 div, 0 call; per family 36 add, 80 mul, 1 div, 0 call
@@ -6723,7 +10209,20 @@ void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, dou
   double s_deformed_shape_2_0 = 0.0;
   double s_deformed_shape_2_1 = 0.0;
   double s_deformed_shape_2_2 = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -6736,16 +10235,26 @@ void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, dou
     const double b1 = b0 * Y_0;
     const double b2 = b0 * Y_1;
     const double b3 = b0 * Y_2;
-    s_deformed_shape_0_0 += b1 * xi_0;
-    s_deformed_shape_0_1 += b1 * xi_1;
-    s_deformed_shape_0_2 += b1 * xi_2;
-    s_deformed_shape_1_0 += b2 * xi_0;
-    s_deformed_shape_1_1 += b2 * xi_1;
-    s_deformed_shape_1_2 += b2 * xi_2;
-    s_deformed_shape_2_0 += b3 * xi_0;
-    s_deformed_shape_2_1 += b3 * xi_1;
-    s_deformed_shape_2_2 += b3 * xi_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
   }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
   const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
   const double p6 = s_shape_2_2 * s_shape_1_0;
@@ -6776,6 +10285,247 @@ void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, dou
   outputs[5] = 0.5 * (2.0 * p20 * p8 * s_deformed_shape_2_0 + 2.0 * p22 * p8 * s_deformed_shape_2_1 + 2.0 * p24 * p8 * s_deformed_shape_2_2) - 1.0;
 }
 
+// correspondence_littlewood_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 27 multiply-adds per d x d block (81 without the structure); 18 structurally zero factor entries skipped
+void correspondence_littlewood_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double ls_0_1 = 0.0;
+  double ls_0_2 = 0.0;
+  double rs_1_0 = 0.0;
+  double ls_1_0 = 0.0;
+  double ls_1_1 = 0.0;
+  double ls_1_2 = 0.0;
+  double rs_2_0 = 0.0;
+  double ls_2_0 = 0.0;
+  double ls_2_1 = 0.0;
+  double ls_2_2 = 0.0;
+  double ls_3_0 = 0.0;
+  double rs_3_1 = 0.0;
+  double ls_3_1 = 0.0;
+  double ls_3_2 = 0.0;
+  double ls_4_0 = 0.0;
+  double rs_4_1 = 0.0;
+  double ls_4_1 = 0.0;
+  double ls_4_2 = 0.0;
+  double ls_5_0 = 0.0;
+  double rs_5_1 = 0.0;
+  double ls_5_1 = 0.0;
+  double ls_5_2 = 0.0;
+  double ls_6_0 = 0.0;
+  double ls_6_1 = 0.0;
+  double rs_6_2 = 0.0;
+  double ls_6_2 = 0.0;
+  double ls_7_0 = 0.0;
+  double ls_7_1 = 0.0;
+  double rs_7_2 = 0.0;
+  double ls_7_2 = 0.0;
+  double ls_8_0 = 0.0;
+  double ls_8_1 = 0.0;
+  double rs_8_2 = 0.0;
+  double ls_8_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 27 + 0];
+    ls_0_0 += c * factors.left[k * 27 + 0];
+    ls_0_1 += c * factors.left[k * 27 + 1];
+    ls_0_2 += c * factors.left[k * 27 + 2];
+    rs_1_0 += factors.right[k * 27 + 3];
+    ls_1_0 += c * factors.left[k * 27 + 3];
+    ls_1_1 += c * factors.left[k * 27 + 4];
+    ls_1_2 += c * factors.left[k * 27 + 5];
+    rs_2_0 += factors.right[k * 27 + 6];
+    ls_2_0 += c * factors.left[k * 27 + 6];
+    ls_2_1 += c * factors.left[k * 27 + 7];
+    ls_2_2 += c * factors.left[k * 27 + 8];
+    ls_3_0 += c * factors.left[k * 27 + 9];
+    rs_3_1 += factors.right[k * 27 + 10];
+    ls_3_1 += c * factors.left[k * 27 + 10];
+    ls_3_2 += c * factors.left[k * 27 + 11];
+    ls_4_0 += c * factors.left[k * 27 + 12];
+    rs_4_1 += factors.right[k * 27 + 13];
+    ls_4_1 += c * factors.left[k * 27 + 13];
+    ls_4_2 += c * factors.left[k * 27 + 14];
+    ls_5_0 += c * factors.left[k * 27 + 15];
+    rs_5_1 += factors.right[k * 27 + 16];
+    ls_5_1 += c * factors.left[k * 27 + 16];
+    ls_5_2 += c * factors.left[k * 27 + 17];
+    ls_6_0 += c * factors.left[k * 27 + 18];
+    ls_6_1 += c * factors.left[k * 27 + 19];
+    rs_6_2 += factors.right[k * 27 + 20];
+    ls_6_2 += c * factors.left[k * 27 + 20];
+    ls_7_0 += c * factors.left[k * 27 + 21];
+    ls_7_1 += c * factors.left[k * 27 + 22];
+    rs_7_2 += factors.right[k * 27 + 23];
+    ls_7_2 += c * factors.left[k * 27 + 23];
+    ls_8_0 += c * factors.left[k * 27 + 24];
+    ls_8_1 += c * factors.left[k * 27 + 25];
+    rs_8_2 += factors.right[k * 27 + 26];
+    ls_8_2 += c * factors.left[k * 27 + 26];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 27 + 0];
+      const double a_1 = -c * factors.left[i * 27 + 3];
+      const double a_2 = -c * factors.left[i * 27 + 6];
+      const double a_3 = -c * factors.left[i * 27 + 9];
+      const double a_4 = -c * factors.left[i * 27 + 12];
+      const double a_5 = -c * factors.left[i * 27 + 15];
+      const double a_6 = -c * factors.left[i * 27 + 18];
+      const double a_7 = -c * factors.left[i * 27 + 21];
+      const double a_8 = -c * factors.left[i * 27 + 24];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 27 + 0] * rs_0_0 + factors.left[i * 27 + 3] * rs_1_0 + factors.left[i * 27 + 6] * rs_2_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 27 + 9] * rs_3_1 + factors.left[i * 27 + 12] * rs_4_1 + factors.left[i * 27 + 15] * rs_5_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 27 + 18] * rs_6_2 + factors.left[i * 27 + 21] * rs_7_2 + factors.left[i * 27 + 24] * rs_8_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 27 + 1];
+      const double a_1 = -c * factors.left[i * 27 + 4];
+      const double a_2 = -c * factors.left[i * 27 + 7];
+      const double a_3 = -c * factors.left[i * 27 + 10];
+      const double a_4 = -c * factors.left[i * 27 + 13];
+      const double a_5 = -c * factors.left[i * 27 + 16];
+      const double a_6 = -c * factors.left[i * 27 + 19];
+      const double a_7 = -c * factors.left[i * 27 + 22];
+      const double a_8 = -c * factors.left[i * 27 + 25];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 27 + 1] * rs_0_0 + factors.left[i * 27 + 4] * rs_1_0 + factors.left[i * 27 + 7] * rs_2_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 27 + 10] * rs_3_1 + factors.left[i * 27 + 13] * rs_4_1 + factors.left[i * 27 + 16] * rs_5_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 27 + 19] * rs_6_2 + factors.left[i * 27 + 22] * rs_7_2 + factors.left[i * 27 + 25] * rs_8_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 27 + 2];
+      const double a_1 = -c * factors.left[i * 27 + 5];
+      const double a_2 = -c * factors.left[i * 27 + 8];
+      const double a_3 = -c * factors.left[i * 27 + 11];
+      const double a_4 = -c * factors.left[i * 27 + 14];
+      const double a_5 = -c * factors.left[i * 27 + 17];
+      const double a_6 = -c * factors.left[i * 27 + 20];
+      const double a_7 = -c * factors.left[i * 27 + 23];
+      const double a_8 = -c * factors.left[i * 27 + 26];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 27 + 0] + a_1 * factors.right[k * 27 + 3] + a_2 * factors.right[k * 27 + 6];
+        row[3 + k * 3 + 1] = a_3 * factors.right[k * 27 + 10] + a_4 * factors.right[k * 27 + 13] + a_5 * factors.right[k * 27 + 16];
+        row[3 + k * 3 + 2] = a_6 * factors.right[k * 27 + 20] + a_7 * factors.right[k * 27 + 23] + a_8 * factors.right[k * 27 + 26];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 27 + 2] * rs_0_0 + factors.left[i * 27 + 5] * rs_1_0 + factors.left[i * 27 + 8] * rs_2_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 27 + 11] * rs_3_1 + factors.left[i * 27 + 14] * rs_4_1 + factors.left[i * 27 + 17] * rs_5_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 27 + 20] * rs_6_2 + factors.left[i * 27 + 23] * rs_7_2 + factors.left[i * 27 + 26] * rs_8_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 27 + 0] + ls_1_0 * factors.right[k * 27 + 3] + ls_2_0 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_3_0 * factors.right[k * 27 + 10] + ls_4_0 * factors.right[k * 27 + 13] + ls_5_0 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_6_0 * factors.right[k * 27 + 20] + ls_7_0 * factors.right[k * 27 + 23] + ls_8_0 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 27 + 0] + ls_1_1 * factors.right[k * 27 + 3] + ls_2_1 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_3_1 * factors.right[k * 27 + 10] + ls_4_1 * factors.right[k * 27 + 13] + ls_5_1 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_6_1 * factors.right[k * 27 + 20] + ls_7_1 * factors.right[k * 27 + 23] + ls_8_1 * factors.right[k * 27 + 26];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 27 + 0] + ls_1_2 * factors.right[k * 27 + 3] + ls_2_2 * factors.right[k * 27 + 6];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_3_2 * factors.right[k * 27 + 10] + ls_4_2 * factors.right[k * 27 + 13] + ls_5_2 * factors.right[k * 27 + 16];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_6_2 * factors.right[k * 27 + 20] + ls_7_2 * factors.right[k * 27 + 23] + ls_8_2 * factors.right[k * 27 + 26];
+    }
+  }
+}
+
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
@@ -6800,6 +10550,7 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.damaged.jvp = &correspondence_littlewood_3d_damaged_jvp;
   d.damaged.jvp_ops = {142, 310, 3, 2};
   d.damaged.outputs = &correspondence_littlewood_3d_damaged_outputs;
+  d.damaged.form = &correspondence_littlewood_3d_damaged_form;
   d.intact.moments = &correspondence_littlewood_3d_intact_moments;
   d.intact.residual = &correspondence_littlewood_3d_intact_residual;
   d.intact.residual_ops = {31, 69, 2, 2};
@@ -6808,6 +10559,7 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.intact.jvp = &correspondence_littlewood_3d_intact_jvp;
   d.intact.jvp_ops = {142, 271, 3, 2};
   d.intact.outputs = &correspondence_littlewood_3d_intact_outputs;
+  d.intact.form = &correspondence_littlewood_3d_intact_form;
   return d;
 }
 

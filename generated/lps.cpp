@@ -11,14 +11,21 @@ namespace pd::generated {
 void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -31,7 +38,12 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -39,13 +51,21 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
   const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
   const double p3 = 8.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -57,10 +77,13 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
     const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b5;
-    forces[0] += b5;
+    lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
-    forces[1] += b6;
+    lane2[lane] += b6;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_damaged_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -72,7 +95,12 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -80,8 +108,10 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
@@ -90,7 +120,13 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double p5 = 8.0 * P_mu;
   const double p6 = 8.0 * p1 * P_mu;
   const double p7 = p3 * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -109,9 +145,9 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double b16 = p0 * V * alpha * w;
     const double b17 = p7 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    if (forces != nullptr) forces[0] += b12;
+    lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    if (forces != nullptr) forces[1] += b13;
+    lane2[lane] += b13;
     factors.direct[k * 4 + 0] = b14 * b8;
     factors.direct[k * 4 + 1] = b15;
     factors.direct[k * 4 + 2] = b15;
@@ -120,7 +156,10 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_damaged_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
@@ -132,7 +171,12 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -140,13 +184,21 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    ds_theta += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1;
+    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
   const double p2 = 8.0 * p1 * P_mu;
   const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -163,10 +215,13 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
-    df[0] += b10;
+    lane1[lane] += b10;
     df[(k + 1) * 2 + 1] = -b11;
-    df[1] += b11;
+    lane2[lane] += b11;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_damaged_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
@@ -176,7 +231,12 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -185,11 +245,18 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -197,8 +264,10 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -209,7 +278,12 @@ void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* output
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -217,22 +291,120 @@ void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* output
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 // lps_plane_strain_intact_moments: per bond 1 add, 4 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -245,20 +417,33 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
   const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
   const double p3 = 8.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -269,10 +454,13 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
     const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
     forces[(k + 1) * 2 + 0] = -b5;
-    forces[0] += b5;
+    lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
-    forces[1] += b6;
+    lane2[lane] += b6;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_intact_tangent: per bond 9 add, 34 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -284,15 +472,22 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
@@ -301,7 +496,13 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double p5 = 8.0 * P_mu;
   const double p6 = 8.0 * p1 * P_mu;
   const double p7 = p3 * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -319,9 +520,9 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double b16 = p0 * V * w;
     const double b17 = p7 * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    if (forces != nullptr) forces[0] += b12;
+    lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    if (forces != nullptr) forces[1] += b13;
+    lane2[lane] += b13;
     factors.direct[k * 4 + 0] = b14 * b8;
     factors.direct[k * 4 + 1] = b15;
     factors.direct[k * 4 + 2] = b15;
@@ -330,7 +531,10 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_intact_jvp: per bond 6 add, 29 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
@@ -342,20 +546,33 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    ds_theta += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1;
+    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
   const double p2 = 8.0 * p1 * P_mu;
   const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -371,10 +588,13 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
-    df[0] += b10;
+    lane1[lane] += b10;
     df[(k + 1) * 2 + 1] = -b11;
-    df[1] += b11;
+    lane2[lane] += b11;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_plane_strain_intact_energy: per bond 7 add, 13 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
@@ -384,7 +604,12 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -392,19 +617,28 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -415,16 +649,112 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 pd::abi::LawDescriptor lps_plane_strain_descriptor() {
@@ -452,6 +782,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.damaged.jvp_ops = {6, 34, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
+  d.damaged.form = &lps_plane_strain_damaged_form;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
   d.intact.residual_ops = {9, 21, 1, 0};
@@ -461,6 +792,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.intact.jvp_ops = {6, 29, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
+  d.intact.form = &lps_plane_strain_intact_form;
   return d;
 }
 
@@ -468,15 +800,22 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
 void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -489,7 +828,12 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -499,13 +843,22 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
   const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
   const double p3 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -520,12 +873,16 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
     const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b5;
-    forces[0] += b5;
+    lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
-    forces[1] += b6;
+    lane2[lane] += b6;
     forces[(k + 1) * 3 + 2] = -b7;
-    forces[2] += b7;
+    lane3[lane] += b7;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_damaged_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -537,7 +894,12 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -547,8 +909,10 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
@@ -557,7 +921,14 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   const double p5 = 15.0 * P_mu;
   const double p6 = 15.0 * p1 * P_mu;
   const double p7 = p3 * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -583,11 +954,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double b21 = p0 * V * alpha * w;
     const double b22 = p7 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
+    lane1[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
+    lane2[lane] += b14;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    if (forces != nullptr) forces[2] += b15;
+    lane3[lane] += b15;
     factors.direct[k * 9 + 0] = b16 * b8;
     factors.direct[k * 9 + 1] = b17;
     factors.direct[k * 9 + 2] = b19;
@@ -603,7 +974,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_damaged_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
@@ -615,7 +990,12 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
@@ -625,13 +1005,22 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    ds_theta += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1 + p0 * dY_2 * V * alpha * w * xi_2;
+    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1 + p0 * dY_2 * V * alpha * w * xi_2;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
   const double p2 = 15.0 * p1 * P_mu;
   const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -654,12 +1043,16 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
     df[(k + 1) * 3 + 0] = -b13;
-    df[0] += b13;
+    lane1[lane] += b13;
     df[(k + 1) * 3 + 1] = -b14;
-    df[1] += b14;
+    lane2[lane] += b14;
     df[(k + 1) * 3 + 2] = -b15;
-    df[2] += b15;
+    lane3[lane] += b15;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_damaged_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
@@ -669,7 +1062,12 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -680,11 +1078,18 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -694,8 +1099,10 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -706,7 +1113,12 @@ void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -716,23 +1128,189 @@ void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 // lps_3d_intact_moments: per bond 2 add, 5 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -745,7 +1323,12 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -754,13 +1337,22 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
   const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
   const double p3 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -774,12 +1366,16 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
     const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * w;
     forces[(k + 1) * 3 + 0] = -b5;
-    forces[0] += b5;
+    lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
-    forces[1] += b6;
+    lane2[lane] += b6;
     forces[(k + 1) * 3 + 2] = -b7;
-    forces[2] += b7;
+    lane3[lane] += b7;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_intact_tangent: per bond 15 add, 48 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -791,7 +1387,12 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -800,8 +1401,10 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
@@ -810,7 +1413,14 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   const double p5 = 15.0 * P_mu;
   const double p6 = 15.0 * p1 * P_mu;
   const double p7 = p3 * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -835,11 +1445,11 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double b21 = p0 * V * w;
     const double b22 = p7 * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    if (forces != nullptr) forces[0] += b13;
+    lane1[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    if (forces != nullptr) forces[1] += b14;
+    lane2[lane] += b14;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    if (forces != nullptr) forces[2] += b15;
+    lane3[lane] += b15;
     factors.direct[k * 9 + 0] = b16 * b8;
     factors.direct[k * 9 + 1] = b17;
     factors.direct[k * 9 + 2] = b19;
@@ -855,7 +1465,11 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_intact_jvp: per bond 13 add, 48 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
@@ -867,7 +1481,12 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double w = fam.w[k];
@@ -876,13 +1495,22 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    ds_theta += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1 + p0 * dY_2 * V * w * xi_2;
+    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1 + p0 * dY_2 * V * w * xi_2;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
   const double p2 = 15.0 * p1 * P_mu;
   const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -904,12 +1532,16 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
     df[(k + 1) * 3 + 0] = -b13;
-    df[0] += b13;
+    lane1[lane] += b13;
     df[(k + 1) * 3 + 1] = -b14;
-    df[1] += b14;
+    lane2[lane] += b14;
     df[(k + 1) * 3 + 2] = -b15;
-    df[2] += b15;
+    lane3[lane] += b15;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_3d_intact_energy: per bond 12 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
@@ -919,7 +1551,12 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -929,11 +1566,18 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -942,8 +1586,10 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -954,7 +1600,12 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -963,9 +1614,168 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 pd::abi::LawDescriptor lps_3d_descriptor() {
@@ -993,6 +1803,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.damaged.jvp_ops = {13, 55, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
+  d.damaged.form = &lps_3d_damaged_form;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
   d.intact.residual_ops = {15, 29, 1, 0};
@@ -1002,6 +1813,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.intact.jvp_ops = {13, 48, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
+  d.intact.form = &lps_3d_intact_form;
   return d;
 }
 
@@ -1009,20 +1821,35 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
 void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_dilatation_moment_0_0 = 0.0;
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_1_0 = 0.0;
   double s_dilatation_moment_1_1 = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1030,11 +1857,16 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b1 = p0 * V * alpha * w;
     const double b2 = b1 * xi_1 * xi_0;
-    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
-    s_dilatation_moment_0_1 += b2;
-    s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
+    lane1[lane] += b1 * (xi_0 * xi_0);
+    lane2[lane] += b2;
+    lane3[lane] += b2;
+    lane4[lane] += b1 * (xi_1 * xi_1);
+    }
   }
+  s_dilatation_moment_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
   moments[2] = s_dilatation_moment_0_1;
@@ -1071,7 +1903,12 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1079,13 +1916,21 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
   const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
   const double p19 = 8.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1097,10 +1942,13 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
     const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b21;
-    forces[0] += b21;
+    lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
-    forces[1] += b22;
+    lane2[lane] += b22;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
@@ -1132,7 +1980,12 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1140,8 +1993,10 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
@@ -1150,7 +2005,13 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   const double p21 = 8.0 * P_mu;
   const double p22 = 8.0 * p17 * P_mu;
   const double p23 = p19 * p17;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1169,9 +2030,9 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double b32 = p22 * b27 * alpha * w;
     const double b33 = b32 * xi_1 * xi_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    if (forces != nullptr) forces[0] += b29;
+    lane1[lane] += b29;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    if (forces != nullptr) forces[1] += b31;
+    lane2[lane] += b31;
     factors.direct[k * 4 + 0] = b32 * b25;
     factors.direct[k * 4 + 1] = b33;
     factors.direct[k * 4 + 2] = b33;
@@ -1180,7 +2041,10 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * alpha * w;
     factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * alpha * w;
     factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * alpha * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
@@ -1212,7 +2076,12 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1220,13 +2089,21 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    ds_theta += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * alpha * w;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
   const double p18 = 8.0 * p17 * P_mu;
   const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1242,10 +2119,13 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
     const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
+    lane1[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    lane2[lane] += b26;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_damaged_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
@@ -1259,7 +2139,12 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -1268,8 +2153,10 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 2.0 * (1.0 / s_m);
   const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -1288,7 +2175,12 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
   const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
   const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1296,8 +2188,10 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -1328,7 +2222,12 @@ void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, doub
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1336,39 +2235,150 @@ void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, doub
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_corrected_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_corrected_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 // lps_corrected_plane_strain_intact_moments: per bond 1 add, 12 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_dilatation_moment_0_0 = 0.0;
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_1_0 = 0.0;
   double s_dilatation_moment_1_1 = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double b1 = p0 * V * w;
     const double b2 = b1 * xi_1 * xi_0;
-    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
-    s_dilatation_moment_0_1 += b2;
-    s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
+    lane1[lane] += b1 * (xi_0 * xi_0);
+    lane2[lane] += b2;
+    lane3[lane] += b2;
+    lane4[lane] += b1 * (xi_1 * xi_1);
+    }
   }
+  s_dilatation_moment_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
   moments[2] = s_dilatation_moment_0_1;
@@ -1405,20 +2415,33 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
   const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
   const double p19 = 8.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1429,10 +2452,13 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
     const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
     forces[(k + 1) * 2 + 0] = -b21;
-    forces[0] += b21;
+    lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
-    forces[1] += b22;
+    lane2[lane] += b22;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_intact_tangent: per bond 13 add, 45 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
@@ -1464,15 +2490,22 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
@@ -1481,7 +2514,13 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   const double p21 = 8.0 * P_mu;
   const double p22 = 8.0 * p17 * P_mu;
   const double p23 = p19 * p17;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1499,9 +2538,9 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double b32 = p22 * b27 * w;
     const double b33 = b32 * xi_1 * xi_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    if (forces != nullptr) forces[0] += b29;
+    lane1[lane] += b29;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    if (forces != nullptr) forces[1] += b31;
+    lane2[lane] += b31;
     factors.direct[k * 4 + 0] = b32 * b25;
     factors.direct[k * 4 + 1] = b33;
     factors.direct[k * 4 + 2] = b33;
@@ -1510,7 +2549,10 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * w;
     factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * w;
     factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_intact_jvp: per bond 10 add, 38 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
@@ -1542,20 +2584,33 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    ds_theta += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * w;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
   const double p18 = 8.0 * p17 * P_mu;
   const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -1570,10 +2625,13 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * w) * V;
     const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * w) * V;
     df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
+    lane1[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    lane2[lane] += b26;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // lps_corrected_plane_strain_intact_energy: per bond 9 add, 17 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
@@ -1587,7 +2645,12 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -1595,8 +2658,10 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 2.0 * (1.0 / s_m);
   const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -1615,15 +2680,22 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
   const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
   const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -1654,16 +2726,112 @@ void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, doubl
   const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
   const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
   const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_corrected_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_corrected_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
@@ -1691,6 +2859,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.damaged.jvp_ops = {10, 44, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
+  d.damaged.form = &lps_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
   d.intact.residual_ops = {13, 29, 1, 0};
@@ -1700,6 +2869,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.intact.jvp_ops = {10, 38, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
+  d.intact.form = &lps_corrected_plane_strain_intact_form;
   return d;
 }
 
@@ -1707,15 +2877,22 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
 void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_dilatation_moment_0_0 = 0.0;
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_0_2 = 0.0;
@@ -1726,7 +2903,20 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   double s_dilatation_moment_2_1 = 0.0;
   double s_dilatation_moment_2_2 = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1738,16 +2928,26 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
     const double b3 = b1 * xi_2;
     const double b4 = b3 * xi_0;
     const double b5 = b3 * xi_1;
-    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
-    s_dilatation_moment_0_1 += b2;
-    s_dilatation_moment_0_2 += b4;
-    s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
-    s_dilatation_moment_1_2 += b5;
-    s_dilatation_moment_2_0 += b4;
-    s_dilatation_moment_2_1 += b5;
-    s_dilatation_moment_2_2 += b1 * (xi_2 * xi_2);
+    lane1[lane] += b1 * (xi_0 * xi_0);
+    lane2[lane] += b2;
+    lane3[lane] += b4;
+    lane4[lane] += b2;
+    lane5[lane] += b1 * (xi_1 * xi_1);
+    lane6[lane] += b5;
+    lane7[lane] += b4;
+    lane8[lane] += b5;
+    lane9[lane] += b1 * (xi_2 * xi_2);
+    }
   }
+  s_dilatation_moment_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_0_2 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_0 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_dilatation_moment_1_1 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_dilatation_moment_1_2 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_dilatation_moment_2_0 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_dilatation_moment_2_1 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  s_dilatation_moment_2_2 += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
   moments[2] = s_dilatation_moment_0_1;
@@ -1815,7 +3015,12 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1825,13 +3030,22 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
   const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
   const double p40 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1846,12 +3060,16 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
     const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b42;
-    forces[0] += b42;
+    lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
-    forces[1] += b43;
+    lane2[lane] += b43;
     forces[(k + 1) * 3 + 2] = -b44;
-    forces[2] += b44;
+    lane3[lane] += b44;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_damaged_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
@@ -1909,7 +3127,12 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1919,8 +3142,10 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
@@ -1929,7 +3154,14 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double p42 = 15.0 * P_mu;
   const double p43 = 15.0 * p38 * P_mu;
   const double p44 = p40 * p38;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1956,11 +3188,11 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double b59 = b58 * xi_0;
     const double b60 = b58 * xi_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    if (forces != nullptr) forces[0] += b51;
+    lane1[lane] += b51;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    if (forces != nullptr) forces[1] += b53;
+    lane2[lane] += b53;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    if (forces != nullptr) forces[2] += b55;
+    lane3[lane] += b55;
     factors.direct[k * 9 + 0] = b56 * b46;
     factors.direct[k * 9 + 1] = b57;
     factors.direct[k * 9 + 2] = b59;
@@ -1976,7 +3208,11 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * alpha * w;
     factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * alpha * w;
     factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * alpha * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_damaged_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
@@ -2034,7 +3270,12 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2044,13 +3285,22 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    ds_theta += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * alpha * w;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
   const double p39 = 15.0 * p38 * P_mu;
   const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2072,12 +3322,16 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
     const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b49;
-    df[0] += b49;
+    lane1[lane] += b49;
     df[(k + 1) * 3 + 1] = -b50;
-    df[1] += b50;
+    lane2[lane] += b50;
     df[(k + 1) * 3 + 2] = -b51;
-    df[2] += b51;
+    lane3[lane] += b51;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_damaged_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
@@ -2096,7 +3350,12 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -2107,8 +3366,10 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 3.0 * (1.0 / s_m);
   const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -2148,7 +3409,12 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const double p36 = p21 * s_dilatation_moment_2_0 + p22 * s_dilatation_moment_2_1 + p23 * s_dilatation_moment_2_2;
   const double p37 = p25 * s_dilatation_moment_2_0 + p26 * s_dilatation_moment_2_1 + p27 * s_dilatation_moment_2_2;
   const double p38 = p29 * s_dilatation_moment_2_0 + p30 * s_dilatation_moment_2_1 + p31 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2158,8 +3424,10 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -2216,7 +3484,12 @@ void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* output
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2226,23 +3499,189 @@ void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* output
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_corrected_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_corrected_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 // lps_corrected_3d_intact_moments: per bond 2 add, 18 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_dilatation_moment_0_0 = 0.0;
   double s_dilatation_moment_0_1 = 0.0;
   double s_dilatation_moment_0_2 = 0.0;
@@ -2253,7 +3692,20 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   double s_dilatation_moment_2_1 = 0.0;
   double s_dilatation_moment_2_2 = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -2264,16 +3716,26 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
     const double b3 = b1 * xi_2;
     const double b4 = b3 * xi_0;
     const double b5 = b3 * xi_1;
-    s_dilatation_moment_0_0 += b1 * (xi_0 * xi_0);
-    s_dilatation_moment_0_1 += b2;
-    s_dilatation_moment_0_2 += b4;
-    s_dilatation_moment_1_0 += b2;
-    s_dilatation_moment_1_1 += b1 * (xi_1 * xi_1);
-    s_dilatation_moment_1_2 += b5;
-    s_dilatation_moment_2_0 += b4;
-    s_dilatation_moment_2_1 += b5;
-    s_dilatation_moment_2_2 += b1 * (xi_2 * xi_2);
+    lane1[lane] += b1 * (xi_0 * xi_0);
+    lane2[lane] += b2;
+    lane3[lane] += b4;
+    lane4[lane] += b2;
+    lane5[lane] += b1 * (xi_1 * xi_1);
+    lane6[lane] += b5;
+    lane7[lane] += b4;
+    lane8[lane] += b5;
+    lane9[lane] += b1 * (xi_2 * xi_2);
+    }
   }
+  s_dilatation_moment_0_0 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_1 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_0_2 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_0 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_dilatation_moment_1_1 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_dilatation_moment_1_2 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_dilatation_moment_2_0 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_dilatation_moment_2_1 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  s_dilatation_moment_2_2 += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   moments[0] = s_m;
   moments[1] = s_dilatation_moment_0_0;
   moments[2] = s_dilatation_moment_0_1;
@@ -2341,7 +3803,12 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2350,13 +3817,22 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
   const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
   const double p40 = 15.0 * P_mu;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2370,12 +3846,16 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
     const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
     forces[(k + 1) * 3 + 0] = -b42;
-    forces[0] += b42;
+    lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
-    forces[1] += b43;
+    lane2[lane] += b43;
     forces[(k + 1) * 3 + 2] = -b44;
-    forces[2] += b44;
+    lane3[lane] += b44;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_intact_tangent: per bond 27 add, 72 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
@@ -2433,7 +3913,12 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2442,8 +3927,10 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
@@ -2452,7 +3939,14 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double p42 = 15.0 * P_mu;
   const double p43 = 15.0 * p38 * P_mu;
   const double p44 = p40 * p38;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2478,11 +3972,11 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double b59 = b58 * xi_0;
     const double b60 = b58 * xi_1;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    if (forces != nullptr) forces[0] += b51;
+    lane1[lane] += b51;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    if (forces != nullptr) forces[1] += b53;
+    lane2[lane] += b53;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    if (forces != nullptr) forces[2] += b55;
+    lane3[lane] += b55;
     factors.direct[k * 9 + 0] = b56 * b46;
     factors.direct[k * 9 + 1] = b57;
     factors.direct[k * 9 + 2] = b59;
@@ -2498,7 +3992,11 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * w;
     factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * w;
     factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * w;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_intact_jvp: per bond 25 add, 68 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
@@ -2556,7 +4054,12 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2565,13 +4068,22 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    ds_theta += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * w;
+    }
   }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
   const double p39 = 15.0 * p38 * P_mu;
   const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -2592,12 +4104,16 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
     const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
     df[(k + 1) * 3 + 0] = -b49;
-    df[0] += b49;
+    lane1[lane] += b49;
     df[(k + 1) * 3 + 1] = -b50;
-    df[1] += b50;
+    lane2[lane] += b50;
     df[(k + 1) * 3 + 2] = -b51;
-    df[2] += b51;
+    lane3[lane] += b51;
+    }
   }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // lps_corrected_3d_intact_energy: per bond 18 add, 25 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
@@ -2616,7 +4132,12 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const double P_lambda = fam.params[0];
   const double P_mu = fam.params[1];
   double s_bond_energy = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -2626,8 +4147,10 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    s_bond_energy += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    }
   }
+  s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p1 = 3.0 * (1.0 / s_m);
   const double p2 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -2667,7 +4190,12 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const double p36 = p21 * s_dilatation_moment_2_0 + p22 * s_dilatation_moment_2_1 + p23 * s_dilatation_moment_2_2;
   const double p37 = p25 * s_dilatation_moment_2_0 + p26 * s_dilatation_moment_2_1 + p27 * s_dilatation_moment_2_2;
   const double p38 = p29 * s_dilatation_moment_2_0 + p30 * s_dilatation_moment_2_1 + p31 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2676,8 +4204,10 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * w;
+    }
   }
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
   return W;
 }
@@ -2734,7 +4264,12 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
   const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
   const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
   const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -2743,9 +4278,168 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_theta += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// lps_corrected_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
@@ -2773,6 +4467,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.damaged.jvp_ops = {25, 77, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
+  d.damaged.form = &lps_corrected_3d_damaged_form;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
   d.intact.residual_ops = {27, 47, 1, 0};
@@ -2782,6 +4477,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.intact.jvp_ops = {25, 68, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
+  d.intact.form = &lps_corrected_3d_intact_form;
   return d;
 }
 

@@ -11,12 +11,14 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam);
 void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments);
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam);
 void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor lps_plane_strain_descriptor();
 void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments);
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
@@ -24,12 +26,14 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_3d_damaged_energy(const pd::abi::Family& fam);
 void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments);
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_3d_intact_energy(const pd::abi::Family& fam);
 void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor lps_3d_descriptor();
 void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments);
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
@@ -37,12 +41,14 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam);
 void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_corrected_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments);
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam);
 void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_corrected_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor();
 void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moments);
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
@@ -50,12 +56,14 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam);
 void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_corrected_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments);
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam);
 void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void lps_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor lps_corrected_3d_descriptor();
 
 }  // namespace pd::generated

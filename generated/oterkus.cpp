@@ -13,7 +13,14 @@ void oterkus_plane_strain_damaged_moments(const pd::abi::Family& fam, double* mo
   double s_m1 = 0.0;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -23,10 +30,14 @@ void oterkus_plane_strain_damaged_moments(const pd::abi::Family& fam, double* mo
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
     const double b3 = std::sqrt(b2);
-    s_m1 += b3 * V * alpha * w;
-    s_m2 += b2 * V * alpha * w;
-    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
+    lane0[lane] += b3 * V * alpha * w;
+    lane1[lane] += b2 * V * alpha * w;
+    lane2[lane] += 1.0 / b2 * V * alpha * w * b1 * b0;
+    }
   }
+  s_m1 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_m2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_mx += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   moments[0] = s_m1;
   moments[1] = s_m2;
   moments[2] = s_mx;
@@ -44,7 +55,12 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -57,14 +73,22 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m1);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -79,10 +103,13 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 2 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -97,7 +124,12 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -110,8 +142,10 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -120,7 +154,13 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double p8 = 0.5 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -158,9 +198,9 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double b38 = b35 * b17 * b29 * b16 * V * alpha * w;
     const double b39 = p10 * b13 * b28 * b16 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
     factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
     factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
@@ -169,7 +209,10 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -185,7 +228,13 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -210,9 +259,12 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b11 = b1 * b10 * b9 * V * alpha * w;
     const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    s_theta += b7 * b8 * b9 * V * alpha * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
@@ -220,7 +272,13 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double p17 = 0.5 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -253,10 +311,13 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
-    df[0] += b40;
+    lane2[lane] += b40;
     df[(k + 1) * 2 + 1] = -b41;
-    df[1] += b41;
+    lane3[lane] += b41;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -265,7 +326,12 @@ void oterkus_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
   const double s_m1 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -276,9 +342,100 @@ void oterkus_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 // oterkus_plane_strain_intact_moments: per bond 1 add, 10 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -287,7 +444,14 @@ void oterkus_plane_strain_intact_moments(const pd::abi::Family& fam, double* mom
   double s_m1 = 0.0;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -296,10 +460,14 @@ void oterkus_plane_strain_intact_moments(const pd::abi::Family& fam, double* mom
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
     const double b3 = std::sqrt(b2);
-    s_m1 += b3 * V * w;
-    s_m2 += b2 * V * w;
-    s_mx += 1.0 / b2 * V * w * b1 * b0;
+    lane0[lane] += b3 * V * w;
+    lane1[lane] += b2 * V * w;
+    lane2[lane] += 1.0 / b2 * V * w * b1 * b0;
+    }
   }
+  s_m1 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_m2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_mx += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   moments[0] = s_m1;
   moments[1] = s_m2;
   moments[2] = s_mx;
@@ -317,7 +485,12 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -329,14 +502,22 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m1);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -350,10 +531,13 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 2 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -368,7 +552,12 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -380,8 +569,10 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -390,7 +581,13 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double p8 = 0.5 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -427,9 +624,9 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double b38 = b35 * b17 * b29 * b16 * V * w;
     const double b39 = p10 * b13 * b28 * b16 * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
     factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
     factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
@@ -438,7 +635,10 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -454,7 +654,13 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -478,9 +684,12 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b11 = b1 * b10 * b9 * V * w;
     const double b12 = p0 * b6 * b8 * b9 * V * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    s_theta += b7 * b8 * b9 * V * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    lane0[lane] += b7 * b8 * b9 * V * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
@@ -488,7 +697,13 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double p17 = 0.5 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -520,10 +735,13 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
-    df[0] += b40;
+    lane2[lane] += b40;
     df[(k + 1) * 2 + 1] = -b41;
-    df[1] += b41;
+    lane3[lane] += b41;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -532,7 +750,12 @@ void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
   const double s_m1 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -542,9 +765,100 @@ void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
@@ -572,6 +886,7 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.damaged.jvp = &oterkus_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {30, 100, 6, 2};
   d.damaged.outputs = &oterkus_plane_strain_damaged_outputs;
+  d.damaged.form = &oterkus_plane_strain_damaged_form;
   d.intact.moments = &oterkus_plane_strain_intact_moments;
   d.intact.residual = &oterkus_plane_strain_intact_residual;
   d.intact.residual_ops = {8, 25, 4, 2};
@@ -580,6 +895,669 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.intact.jvp = &oterkus_plane_strain_intact_jvp;
   d.intact.jvp_ops = {30, 91, 6, 2};
   d.intact.outputs = &oterkus_plane_strain_intact_outputs;
+  d.intact.form = &oterkus_plane_strain_intact_form;
+  return d;
+}
+
+// oterkus_3d_damaged_moments: per bond 2 add, 14 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  double s_m1 = 0.0;
+  double s_m2 = 0.0;
+  double s_mx = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b0 = xi_0 * xi_0;
+    const double b1 = xi_1 * xi_1;
+    const double b2 = b0 + b1 + xi_2 * xi_2;
+    const double b3 = std::sqrt(b2);
+    s_m1 += b3 * V * alpha * w;
+    s_m2 += b2 * V * alpha * w;
+    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
+  }
+  moments[0] = s_m1;
+  moments[1] = s_m2;
+  moments[2] = s_mx;
+}
+
+// oterkus_3d_damaged_residual: per bond 12 add, 32 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
+  const double p7 = p5 * P_G;
+  for (int k = 0; k < L; ++k) {
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 3 + 1] = -b13;
+    forces[1] += b13;
+    forces[(k + 1) * 3 + 2] = -b14;
+    forces[2] += b14;
+  }
+}
+
+// oterkus_3d_damaged_tangent: per bond 41 add, 125 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 4.5 * P_K - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m1;
+  const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = 0.6666666666666666 * p6 * p7;
+  for (int k = 0; k < L; ++k) {
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    const double b23 = 2.0 * b18;
+    const double b24 = b23 * b15 * alpha * w;
+    const double b25 = p8 * b15 * b16;
+    const double b26 = p9 * b15;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = Y_2 * Y_2;
+    const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
+    const double b31 = b30 * b15;
+    const double b32 = b14 * b31 * b16;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * alpha * w;
+    const double b34 = b23 * b31 * alpha * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * alpha * w;
+    const double b36 = b34 * Y_1 * Y_0;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * alpha * w;
+    const double b38 = b34 * Y_2;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    const double b41 = p0 * b13;
+    const double b42 = b41 * b30 * b16 * V * alpha * w;
+    const double b43 = p0 * b17 * b15 * b16 * V * alpha * w;
+    const double b44 = b41 * b17 * b31 * b16 * V * alpha * w;
+    const double b45 = p10 * b13 * b30 * b16 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
+    if (forces != nullptr) forces[2] += b22;
+    factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
+    factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
+    factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
+    factors.direct[k * 9 + 3] = b33 * Y_1 - b36;
+    factors.direct[k * 9 + 4] = b24 + b35 * Y_1 - b34 * b28;
+    factors.direct[k * 9 + 5] = b37 * Y_1 - b40;
+    factors.direct[k * 9 + 6] = b33 * Y_2 - b39;
+    factors.direct[k * 9 + 7] = b35 * Y_2 - b40;
+    factors.direct[k * 9 + 8] = b24 + b37 * Y_2 - b34 * b29;
+    factors.right[(k * 1 + 0) * 3 + 0] = b42 * Y_0 + b43 * xi_0 - b44 * Y_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b42 * Y_1 + b43 * xi_1 - b44 * Y_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b42 * Y_2 + b43 * xi_2 - b44 * Y_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+  }
+}
+
+// oterkus_3d_damaged_jvp: per bond 52 add, 134 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
+    s_theta += b7 * b8 * b9 * V * alpha * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m1;
+  const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
+  for (int k = 0; k < L; ++k) {
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * alpha * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = Y_2 * Y_2;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
+    const double b34 = b33 * b24;
+    const double b35 = b23 * b34 * b25;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * alpha * w;
+    const double b37 = b26 * b34 * alpha * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * alpha * w;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * alpha * w;
+    const double b41 = b37 * Y_2;
+    const double b42 = b41 * Y_0;
+    const double b43 = p19 * b22 * b33 * b25 * alpha * w;
+    const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
+    const double b45 = b41 * Y_1;
+    const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
+    const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
+    df[(k + 1) * 3 + 0] = -b44;
+    df[0] += b44;
+    df[(k + 1) * 3 + 1] = -b46;
+    df[1] += b46;
+    df[(k + 1) * 3 + 2] = -b47;
+    df[2] += b47;
+  }
+}
+
+// oterkus_3d_damaged_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+  }
+  outputs[0] = s_theta;
+}
+
+// oterkus_3d_intact_moments: per bond 2 add, 11 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  double s_m1 = 0.0;
+  double s_m2 = 0.0;
+  double s_mx = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b0 = xi_0 * xi_0;
+    const double b1 = xi_1 * xi_1;
+    const double b2 = b0 + b1 + xi_2 * xi_2;
+    const double b3 = std::sqrt(b2);
+    s_m1 += b3 * V * w;
+    s_m2 += b2 * V * w;
+    s_mx += 1.0 / b2 * V * w * b1 * b0;
+  }
+  moments[0] = s_m1;
+  moments[1] = s_m2;
+  moments[2] = s_mx;
+}
+
+// oterkus_3d_intact_residual: per bond 12 add, 30 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
+  const double p7 = p5 * P_G;
+  for (int k = 0; k < L; ++k) {
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b10 = 1.0 / b9;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    forces[(k + 1) * 3 + 0] = -b12;
+    forces[0] += b12;
+    forces[(k + 1) * 3 + 1] = -b13;
+    forces[1] += b13;
+    forces[(k + 1) * 3 + 2] = -b14;
+    forces[2] += b14;
+  }
+}
+
+// oterkus_3d_intact_tangent: per bond 41 add, 114 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = 2.0 * V0;
+  const double p5 = 0.5 * (1.0 / s_mx);
+  const double p6 = 4.5 * P_K - p5 * s_m2 * P_G;
+  const double p7 = 1.0 / s_m1;
+  const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
+  const double p9 = p5 * P_G;
+  const double p10 = 0.6666666666666666 * p6 * p7;
+  for (int k = 0; k < L; ++k) {
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b14 = p8 * b13;
+    const double b15 = 1.0 / b12;
+    const double b16 = 1.0 / b11;
+    const double b17 = b12 - b11;
+    const double b18 = b14 * b15 * b16 + p9 * b17;
+    const double b19 = p4 * b18 * b15 * V * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    const double b23 = 2.0 * b18;
+    const double b24 = b23 * b15 * w;
+    const double b25 = p8 * b15 * b16;
+    const double b26 = p9 * b15;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = Y_2 * Y_2;
+    const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
+    const double b31 = b30 * b15;
+    const double b32 = b14 * b31 * b16;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * w;
+    const double b34 = b23 * b31 * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * w;
+    const double b36 = b34 * Y_1 * Y_0;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * w;
+    const double b38 = b34 * Y_2;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    const double b41 = p0 * b13;
+    const double b42 = b41 * b30 * b16 * V * w;
+    const double b43 = p0 * b17 * b15 * b16 * V * w;
+    const double b44 = b41 * b17 * b31 * b16 * V * w;
+    const double b45 = p10 * b13 * b30 * b16 * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
+    if (forces != nullptr) forces[0] += b20;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
+    if (forces != nullptr) forces[1] += b21;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
+    if (forces != nullptr) forces[2] += b22;
+    factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
+    factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
+    factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
+    factors.direct[k * 9 + 3] = b33 * Y_1 - b36;
+    factors.direct[k * 9 + 4] = b24 + b35 * Y_1 - b34 * b28;
+    factors.direct[k * 9 + 5] = b37 * Y_1 - b40;
+    factors.direct[k * 9 + 6] = b33 * Y_2 - b39;
+    factors.direct[k * 9 + 7] = b35 * Y_2 - b40;
+    factors.direct[k * 9 + 8] = b24 + b37 * Y_2 - b34 * b29;
+    factors.right[(k * 1 + 0) * 3 + 0] = b42 * Y_0 + b43 * xi_0 - b44 * Y_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b42 * Y_1 + b43 * xi_1 - b44 * Y_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b42 * Y_2 + b43 * xi_2 - b44 * Y_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+  }
+}
+
+// oterkus_3d_intact_jvp: per bond 52 add, 124 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_K = fam.params[0];
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b1 = p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2);
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b3 = 1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2;
+    const double b4 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b4;
+    const double b5 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b5;
+    const double b6 = b4 - b5;
+    const double b7 = b1 * b6;
+    const double b8 = 1.0 / b4;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b3;
+    const double b11 = b1 * b10 * b9 * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * V * w;
+    s_theta += b7 * b8 * b9 * V * w;
+    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+  }
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p14 = 0.5 * (1.0 / s_mx);
+  const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
+  const double p16 = 1.0 / s_m1;
+  const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
+  const double p18 = p14 * P_G;
+  const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
+  for (int k = 0; k < L; ++k) {
+    const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double V = fam.V[k];
+    const double b22 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b23 = p17 * b22;
+    const double b24 = 1.0 / b21;
+    const double b25 = 1.0 / b20;
+    const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
+    const double b27 = b26 * b24 * w;
+    const double b28 = p17 * b24 * b25;
+    const double b29 = p18 * b24;
+    const double b30 = Y_0 * Y_0;
+    const double b31 = Y_1 * Y_1;
+    const double b32 = Y_2 * Y_2;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
+    const double b34 = b33 * b24;
+    const double b35 = b23 * b34 * b25;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * w;
+    const double b37 = b26 * b34 * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * w;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * w;
+    const double b41 = b37 * Y_2;
+    const double b42 = b41 * Y_0;
+    const double b43 = p19 * b22 * b33 * b25 * w;
+    const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
+    const double b45 = b41 * Y_1;
+    const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
+    const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
+    df[(k + 1) * 3 + 0] = -b44;
+    df[0] += b44;
+    df[(k + 1) * 3 + 1] = -b46;
+    df[1] += b46;
+    df[(k + 1) * 3 + 2] = -b47;
+    df[2] += b47;
+  }
+}
+
+// oterkus_3d_intact_outputs: per bond 8 add, 16 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  for (int k = 0; k < L; ++k) {
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b3 = std::sqrt(b1);
+    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+  }
+  outputs[0] = s_theta;
+}
+
+pd::abi::LawDescriptor oterkus_3d_descriptor() {
+  static const char* const params[] = {"K", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "oterkus_3d";
+  d.summary = "Oterkus dilatation law, 3D (paper 003 eqs. 7-8, a, b, d from discrete sums); params K, G";
+  d.dim = 3;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.scratch_per_bond = 2;
+  d.n_moments = 3;
+  d.n_states = 1;
+  d.damaged.moments = &oterkus_3d_damaged_moments;
+  d.damaged.residual = &oterkus_3d_damaged_residual;
+  d.damaged.residual_ops = {12, 32, 4, 2};
+  d.damaged.tangent = &oterkus_3d_damaged_tangent;
+  d.damaged.tangent_ops = {41, 125, 5, 2};
+  d.damaged.jvp = &oterkus_3d_damaged_jvp;
+  d.damaged.jvp_ops = {52, 134, 6, 2};
+  d.damaged.outputs = &oterkus_3d_damaged_outputs;
+  d.intact.moments = &oterkus_3d_intact_moments;
+  d.intact.residual = &oterkus_3d_intact_residual;
+  d.intact.residual_ops = {12, 30, 4, 2};
+  d.intact.tangent = &oterkus_3d_intact_tangent;
+  d.intact.tangent_ops = {41, 114, 5, 2};
+  d.intact.jvp = &oterkus_3d_intact_jvp;
+  d.intact.jvp_ops = {52, 124, 6, 2};
+  d.intact.outputs = &oterkus_3d_intact_outputs;
   return d;
 }
 
@@ -588,7 +1566,13 @@ void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, do
   const int L = fam.n_bonds;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -597,9 +1581,12 @@ void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, do
     const double b0 = xi_0 * xi_0;
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
-    s_m2 += b2 * V * alpha * w;
-    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
+    lane0[lane] += b2 * V * alpha * w;
+    lane1[lane] += 1.0 / b2 * V * alpha * w * b1 * b0;
+    }
   }
+  s_m2 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_mx += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   moments[0] = s_m2;
   moments[1] = s_mx;
 }
@@ -615,7 +1602,12 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -628,14 +1620,22 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m2);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -650,10 +1650,13 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 2 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_paper_d_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -667,7 +1670,12 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -680,8 +1688,10 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -690,7 +1700,13 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
   const double p8 = 0.5 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -728,9 +1744,9 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     const double b38 = b35 * b17 * b29 * b16 * V * alpha * w;
     const double b39 = p10 * b13 * b28 * b16 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
     factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
     factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
@@ -739,7 +1755,10 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_paper_d_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -754,7 +1773,13 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -779,9 +1804,12 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double b11 = b1 * b10 * b9 * V * alpha * w;
     const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    s_theta += b7 * b8 * b9 * V * alpha * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
@@ -789,7 +1817,13 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   const double p17 = 0.5 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -822,10 +1856,13 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
-    df[0] += b40;
+    lane2[lane] += b40;
     df[(k + 1) * 2 + 1] = -b41;
-    df[1] += b41;
+    lane3[lane] += b41;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -834,7 +1871,12 @@ void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
   const double s_m2 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -845,9 +1887,100 @@ void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_paper_d_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_paper_d_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 // oterkus_paper_d_plane_strain_intact_moments: per bond 1 add, 8 mul, 1 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -855,7 +1988,13 @@ void oterkus_paper_d_plane_strain_intact_moments(const pd::abi::Family& fam, dou
   const int L = fam.n_bonds;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
@@ -863,9 +2002,12 @@ void oterkus_paper_d_plane_strain_intact_moments(const pd::abi::Family& fam, dou
     const double b0 = xi_0 * xi_0;
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1;
-    s_m2 += b2 * V * w;
-    s_mx += 1.0 / b2 * V * w * b1 * b0;
+    lane0[lane] += b2 * V * w;
+    lane1[lane] += 1.0 / b2 * V * w * b1 * b0;
+    }
   }
+  s_m2 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_mx += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   moments[0] = s_m2;
   moments[1] = s_mx;
 }
@@ -881,7 +2023,12 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -893,14 +2040,22 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.5 * s_theta * (2.0 * P_kappa2 - p5 * s_m2 * P_G) * (1.0 / s_m2);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -914,10 +2069,13 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 2 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_paper_d_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -931,7 +2089,12 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -943,8 +2106,10 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -953,7 +2118,13 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   const double p8 = 0.5 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -990,9 +2161,9 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     const double b38 = b35 * b17 * b29 * b16 * V * w;
     const double b39 = p10 * b13 * b28 * b16 * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     factors.direct[k * 4 + 0] = b23 + b31 * Y_0 - b32 * b26;
     factors.direct[k * 4 + 1] = b33 * Y_0 - b34;
     factors.direct[k * 4 + 2] = b31 * Y_1 - b34;
@@ -1001,7 +2172,10 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     factors.right[(k * 1 + 0) * 2 + 1] = b36 * Y_1 + b37 * xi_1 - b38 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b39 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b39 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // oterkus_paper_d_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
@@ -1016,7 +2190,13 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -1040,9 +2220,12 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double b11 = b1 * b10 * b9 * V * w;
     const double b12 = p0 * b6 * b8 * b9 * V * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    s_theta += b7 * b8 * b9 * V * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    lane0[lane] += b7 * b8 * b9 * V * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 2.0 * P_kappa2 - p14 * s_m2 * P_G;
@@ -1050,7 +2233,13 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   const double p17 = 0.5 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -1082,10 +2271,13 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
-    df[0] += b40;
+    lane2[lane] += b40;
     df[(k + 1) * 2 + 1] = -b41;
-    df[1] += b41;
+    lane3[lane] += b41;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -1094,7 +2286,12 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
   const double s_m2 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m2);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -1104,9 +2301,100 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_paper_d_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_paper_d_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
@@ -1134,6 +2422,7 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.damaged.jvp = &oterkus_paper_d_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {30, 100, 6, 2};
   d.damaged.outputs = &oterkus_paper_d_plane_strain_damaged_outputs;
+  d.damaged.form = &oterkus_paper_d_plane_strain_damaged_form;
   d.intact.moments = &oterkus_paper_d_plane_strain_intact_moments;
   d.intact.residual = &oterkus_paper_d_plane_strain_intact_residual;
   d.intact.residual_ops = {8, 25, 4, 2};
@@ -1142,6 +2431,7 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.intact.jvp = &oterkus_paper_d_plane_strain_intact_jvp;
   d.intact.jvp_ops = {30, 91, 6, 2};
   d.intact.outputs = &oterkus_paper_d_plane_strain_intact_outputs;
+  d.intact.form = &oterkus_paper_d_plane_strain_intact_form;
   return d;
 }
 

@@ -11,14 +11,21 @@ namespace pd::generated {
 void silling_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -32,7 +39,12 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -45,14 +57,22 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 1.0 / s_m * V0;
   const double p5 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
   const double p6 = 8.0 * P_G;
   const double p7 = 0.5 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -64,10 +84,13 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     forces[(k + 1) * 2 + 0] = -b11;
-    forces[0] += b11;
+    lane1[lane] += b11;
     forces[(k + 1) * 2 + 1] = -b12;
-    forces[1] += b12;
+    lane2[lane] += b12;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // silling_plane_strain_damaged_tangent: per bond 16 add, 59 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
@@ -80,7 +103,12 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -93,8 +121,10 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 1.0 / s_m;
   const double p5 = p4 * V0;
@@ -104,7 +134,13 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   const double p9 = 0.5 * s_theta;
   const double p10 = 8.0 * p4 * P_G;
   const double p11 = 4.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -130,9 +166,9 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double b27 = p0 * b15 * b12 * V * alpha * w;
     const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
-    if (forces != nullptr) forces[0] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
-    if (forces != nullptr) forces[1] += b18;
+    lane2[lane] += b18;
     factors.direct[k * 4 + 0] = b20 + b24 * b21 - b25 * b21;
     factors.direct[k * 4 + 1] = b26;
     factors.direct[k * 4 + 2] = b26;
@@ -141,7 +177,10 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     factors.right[(k * 1 + 0) * 2 + 1] = b27 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b28 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b28 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // silling_plane_strain_damaged_jvp: per bond 21 add, 67 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
@@ -155,7 +194,13 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -171,9 +216,12 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
-    ds_theta += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p5 = 1.0 / s_m;
   const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
@@ -183,7 +231,13 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   const double p10 = 8.0 * p5 * P_G;
   const double p11 = ds_theta * p5;
   const double p12 = 4.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -208,10 +262,13 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
     const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
+    lane2[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    lane3[lane] += b26;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_plane_strain_damaged_energy: per bond 6 add, 15 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
@@ -223,7 +280,12 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -236,19 +298,28 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_deviatoric_energy = 0.0;
   const double p4 = 0.5 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b7 = b6 - b5 - p4 * b5;
-    s_deviatoric_energy += b7 * b7 * V * alpha * w;
+    lane1[lane] += b7 * b7 * V * alpha * w;
+    }
   }
+  s_deviatoric_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * (s_theta * s_theta) + 4.0 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
@@ -259,7 +330,12 @@ void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -270,22 +346,120 @@ void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// silling_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void silling_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 // silling_plane_strain_intact_moments: per bond 1 add, 4 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void silling_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -299,7 +473,12 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -311,14 +490,22 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p4 = 1.0 / s_m * V0;
   const double p5 = 2.0 * (P_K + 0.3333333333333333 * P_G) * s_theta;
   const double p6 = 8.0 * P_G;
   const double p7 = 0.5 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -329,10 +516,13 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     forces[(k + 1) * 2 + 0] = -b11;
-    forces[0] += b11;
+    lane1[lane] += b11;
     forces[(k + 1) * 2 + 1] = -b12;
-    forces[1] += b12;
+    lane2[lane] += b12;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // silling_plane_strain_intact_tangent: per bond 16 add, 52 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
@@ -345,7 +535,12 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -357,8 +552,10 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p4 = 1.0 / s_m;
   const double p5 = p4 * V0;
@@ -368,7 +565,13 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   const double p9 = 0.5 * s_theta;
   const double p10 = 8.0 * p4 * P_G;
   const double p11 = 4.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -393,9 +596,9 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double b27 = p0 * b15 * b12 * V * w;
     const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
-    if (forces != nullptr) forces[0] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
-    if (forces != nullptr) forces[1] += b18;
+    lane2[lane] += b18;
     factors.direct[k * 4 + 0] = b20 + b24 * b21 - b25 * b21;
     factors.direct[k * 4 + 1] = b26;
     factors.direct[k * 4 + 2] = b26;
@@ -404,7 +607,10 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     factors.right[(k * 1 + 0) * 2 + 1] = b27 * Y_1;
     factors.left[(k * 1 + 0) * 2 + 0] = b28 * Y_0;
     factors.left[(k * 1 + 0) * 2 + 1] = b28 * Y_1;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // silling_plane_strain_intact_jvp: per bond 21 add, 60 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
@@ -418,7 +624,13 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -433,9 +645,12 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
-    ds_theta += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p5 = 1.0 / s_m;
   const double p6 = 2.0 * (P_K + 0.3333333333333333 * P_G);
@@ -445,7 +660,13 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   const double p10 = 8.0 * p5 * P_G;
   const double p11 = ds_theta * p5;
   const double p12 = 4.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -469,10 +690,13 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
     const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
-    df[0] += b25;
+    lane2[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
-    df[1] += b26;
+    lane3[lane] += b26;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_plane_strain_intact_energy: per bond 6 add, 13 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
@@ -484,7 +708,12 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -496,18 +725,27 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_deviatoric_energy = 0.0;
   const double p4 = 0.5 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b7 = b6 - b5 - p4 * b5;
-    s_deviatoric_energy += b7 * b7 * V * w;
+    lane1[lane] += b7 * b7 * V * w;
+    }
   }
+  s_deviatoric_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (P_K + 0.3333333333333333 * P_G) * (s_theta * s_theta) + 4.0 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
@@ -518,7 +756,12 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -528,9 +771,100 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// silling_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void silling_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
 }
 
 pd::abi::LawDescriptor silling_plane_strain_descriptor() {
@@ -559,6 +893,7 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.damaged.jvp_ops = {21, 67, 3, 2};
   d.damaged.energy = &silling_plane_strain_damaged_energy;
   d.damaged.outputs = &silling_plane_strain_damaged_outputs;
+  d.damaged.form = &silling_plane_strain_damaged_form;
   d.intact.moments = &silling_plane_strain_intact_moments;
   d.intact.residual = &silling_plane_strain_intact_residual;
   d.intact.residual_ops = {7, 18, 1, 2};
@@ -568,6 +903,7 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.intact.jvp_ops = {21, 60, 3, 2};
   d.intact.energy = &silling_plane_strain_intact_energy;
   d.intact.outputs = &silling_plane_strain_intact_outputs;
+  d.intact.form = &silling_plane_strain_intact_form;
   return d;
 }
 
@@ -575,15 +911,22 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
 void silling_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * alpha * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -597,7 +940,12 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -612,14 +960,23 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = 1.0 / s_m * V0;
   const double p5 = 3.0 * s_theta * P_K;
   const double p6 = 15.0 * P_G;
   const double p7 = 0.3333333333333333 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -633,12 +990,16 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double b12 = b10 * Y_1;
     const double b13 = b10 * Y_2;
     forces[(k + 1) * 3 + 0] = -b11;
-    forces[0] += b11;
+    lane1[lane] += b11;
     forces[(k + 1) * 3 + 1] = -b12;
-    forces[1] += b12;
+    lane2[lane] += b12;
     forces[(k + 1) * 3 + 2] = -b13;
-    forces[2] += b13;
+    lane3[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_3d_damaged_tangent: per bond 24 add, 74 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
@@ -651,7 +1012,12 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -666,8 +1032,10 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = 1.0 / s_m;
   const double p5 = p4 * V0;
@@ -677,7 +1045,14 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   const double p9 = 15.0 * p4 * P_G;
   const double p10 = 3.0 * P_K;
   const double p11 = 5.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -711,11 +1086,11 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double b33 = p0 * b15 * b12 * V * alpha * w;
     const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
-    if (forces != nullptr) forces[0] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
-    if (forces != nullptr) forces[1] += b18;
+    lane2[lane] += b18;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
-    if (forces != nullptr) forces[2] += b19;
+    lane3[lane] += b19;
     factors.direct[k * 9 + 0] = b21 + b26 * b22 - b27 * b22;
     factors.direct[k * 9 + 1] = b28;
     factors.direct[k * 9 + 2] = b31;
@@ -731,7 +1106,11 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     factors.left[(k * 1 + 0) * 3 + 0] = b34 * Y_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b34 * Y_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b34 * Y_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_3d_damaged_jvp: per bond 35 add, 94 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
@@ -745,7 +1124,13 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -764,9 +1149,12 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
-    ds_theta += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1 + p0 * dY_2 * b4 * b3 * V * alpha * w * Y_2;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1 + p0 * dY_2 * b4 * b3 * V * alpha * w * Y_2;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p5 = 1.0 / s_m;
   const double p6 = 3.0 * s_theta * P_K;
@@ -776,7 +1164,14 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   const double p10 = ds_theta * p5;
   const double p11 = 3.0 * P_K;
   const double p12 = 5.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -810,12 +1205,16 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
     const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b17 + b22 * b20 - b23 * b20) + b28 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b29;
-    df[0] += b29;
+    lane2[lane] += b29;
     df[(k + 1) * 3 + 1] = -b31;
-    df[1] += b31;
+    lane3[lane] += b31;
     df[(k + 1) * 3 + 2] = -b32;
-    df[2] += b32;
+    lane4[lane] += b32;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // silling_3d_damaged_energy: per bond 8 add, 17 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -827,7 +1226,12 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -842,19 +1246,28 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_deviatoric_energy = 0.0;
   const double p4 = 0.3333333333333333 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b7 = b6 - b5 - p4 * b5;
-    s_deviatoric_energy += b7 * b7 * V * alpha * w;
+    lane1[lane] += b7 * b7 * V * alpha * w;
+    }
   }
+  s_deviatoric_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (s_theta * s_theta) * P_K + 7.5 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
@@ -865,7 +1278,12 @@ void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -878,23 +1296,189 @@ void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// silling_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void silling_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 // silling_3d_intact_moments: per bond 2 add, 5 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
 void silling_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   const int L = fam.n_bonds;
   double s_m = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    s_m += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    lane0[lane] += (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) * V * w;
+    }
   }
+  s_m += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   moments[0] = s_m;
 }
 
@@ -908,7 +1492,12 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -922,14 +1511,23 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = 1.0 / s_m * V0;
   const double p5 = 3.0 * s_theta * P_K;
   const double p6 = 15.0 * P_G;
   const double p7 = 0.3333333333333333 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -942,12 +1540,16 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double b12 = b10 * Y_1;
     const double b13 = b10 * Y_2;
     forces[(k + 1) * 3 + 0] = -b11;
-    forces[0] += b11;
+    lane1[lane] += b11;
     forces[(k + 1) * 3 + 1] = -b12;
-    forces[1] += b12;
+    lane2[lane] += b12;
     forces[(k + 1) * 3 + 2] = -b13;
-    forces[2] += b13;
+    lane3[lane] += b13;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_3d_intact_tangent: per bond 24 add, 67 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
@@ -960,7 +1562,12 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -974,8 +1581,10 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = 1.0 / s_m;
   const double p5 = p4 * V0;
@@ -985,7 +1594,14 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   const double p9 = 15.0 * p4 * P_G;
   const double p10 = 3.0 * P_K;
   const double p11 = 5.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
@@ -1018,11 +1634,11 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double b33 = p0 * b15 * b12 * V * w;
     const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
-    if (forces != nullptr) forces[0] += b17;
+    lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
-    if (forces != nullptr) forces[1] += b18;
+    lane2[lane] += b18;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
-    if (forces != nullptr) forces[2] += b19;
+    lane3[lane] += b19;
     factors.direct[k * 9 + 0] = b21 + b26 * b22 - b27 * b22;
     factors.direct[k * 9 + 1] = b28;
     factors.direct[k * 9 + 2] = b31;
@@ -1038,7 +1654,11 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     factors.left[(k * 1 + 0) * 3 + 0] = b34 * Y_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b34 * Y_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b34 * Y_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // silling_3d_intact_jvp: per bond 35 add, 86 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
@@ -1052,7 +1672,13 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1070,9 +1696,12 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
-    ds_theta += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1 + p0 * dY_2 * b4 * b3 * V * w * Y_2;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1 + p0 * dY_2 * b4 * b3 * V * w * Y_2;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p5 = 1.0 / s_m;
   const double p6 = 3.0 * s_theta * P_K;
@@ -1082,7 +1711,14 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   const double p10 = ds_theta * p5;
   const double p11 = 3.0 * P_K;
   const double p12 = 5.0 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -1115,12 +1751,16 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
     const double b32 = V0 * (dY_0 * b27 + dY_1 * b30 + dY_2 * (b17 + b22 * b20 - b23 * b20) + b28 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b29;
-    df[0] += b29;
+    lane2[lane] += b29;
     df[(k + 1) * 3 + 1] = -b31;
-    df[1] += b31;
+    lane3[lane] += b31;
     df[(k + 1) * 3 + 2] = -b32;
-    df[2] += b32;
+    lane4[lane] += b32;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // silling_3d_intact_energy: per bond 8 add, 15 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -1132,7 +1772,12 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1146,18 +1791,27 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_deviatoric_energy = 0.0;
   const double p4 = 0.3333333333333333 * s_theta;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b5 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b6 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b7 = b6 - b5 - p4 * b5;
-    s_deviatoric_energy += b7 * b7 * V * w;
+    lane1[lane] += b7 * b7 * V * w;
+    }
   }
+  s_deviatoric_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   const double W = 0.5 * (s_theta * s_theta) * P_K + 7.5 * s_deviatoric_energy * (1.0 / s_m) * P_G;
   return W;
 }
@@ -1168,7 +1822,12 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1180,9 +1839,168 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// silling_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void silling_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 pd::abi::LawDescriptor silling_3d_descriptor() {
@@ -1211,6 +2029,7 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.damaged.jvp_ops = {35, 94, 3, 2};
   d.damaged.energy = &silling_3d_damaged_energy;
   d.damaged.outputs = &silling_3d_damaged_outputs;
+  d.damaged.form = &silling_3d_damaged_form;
   d.intact.moments = &silling_3d_intact_moments;
   d.intact.residual = &silling_3d_intact_residual;
   d.intact.residual_ops = {9, 21, 1, 2};
@@ -1220,6 +2039,7 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.intact.jvp_ops = {35, 86, 3, 2};
   d.intact.energy = &silling_3d_intact_energy;
   d.intact.outputs = &silling_3d_intact_outputs;
+  d.intact.form = &silling_3d_intact_form;
   return d;
 }
 

@@ -11,12 +11,14 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
 void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double silling_plane_strain_damaged_energy(const pd::abi::Family& fam);
 void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void silling_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void silling_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments);
 void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double silling_plane_strain_intact_energy(const pd::abi::Family& fam);
 void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void silling_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor silling_plane_strain_descriptor();
 void silling_3d_damaged_moments(const pd::abi::Family& fam, double* moments);
 void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
@@ -24,12 +26,14 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
 void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double silling_3d_damaged_energy(const pd::abi::Family& fam);
 void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void silling_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void silling_3d_intact_moments(const pd::abi::Family& fam, double* moments);
 void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
 double silling_3d_intact_energy(const pd::abi::Family& fam);
 void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void silling_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor silling_3d_descriptor();
 
 }  // namespace pd::generated

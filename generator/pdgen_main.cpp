@@ -4,6 +4,7 @@
 //   -> derivatives, chain rule through sums           generator/diff/, generator/law/kernels.cpp
 //   -> lowering to binary IR, hash-consed             generator/emit/lower.cpp
 //   -> scheduling, CSE, hoisting, C++ text            generator/emit/emitter.cpp
+//   -> dense local matrix from the factors             generator/emit/form_kernel.cpp
 //   -> files and law table                            generator/emit/files.cpp
 // Usage: pdgen --out DIR   (rewrites a file only when its content changes, and removes
 // the .cpp/.hpp files in DIR it no longer emits, e.g. those of a deleted law)
@@ -31,6 +32,8 @@ EmittedVariant emit_variant(const Law& law, const std::string& variant) {
   if (k.has_energy) programs.push_back({"energy", &k.energy});
   if (k.has_outputs) programs.push_back({"outputs", &k.outputs});
   for (const auto& [kind, program] : programs) v.kernels.push_back({kind, program->name, emit_kernel(*program)});
+  const std::string form = law.name() + "_" + variant + "_form";
+  v.kernels.push_back({"form", form, emit_form_kernel(form, k.factor_structure)});
   return v;
 }
 

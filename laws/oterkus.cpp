@@ -10,7 +10,13 @@
 // W = G s^2 / 2 under simple shear Y = (I + sA) xi, with W = a_ theta^2 + b sum w a e^2 V
 // (eq. 10). The force (9) keeps only the component of dW/dY along n (it drops the
 // derivative of n . xi/|xi|), so it is not the exact derivative of (10): the law declares
-// no energy and its tangent is not symmetric. 2D only: the paper derives it for plane strain.
+// no energy and its tangent is not symmetric.
+// 3D (paper 003 eqs. 7-8; Madenci & Oterkus's 3D constants d = 9/(4 pi delta^4),
+// b = 15 mu/(2 pi delta^5), a = (K - 5 mu/3)/2 for the constant influence) with the same
+// discrete matching: theta = 3s under isotropic stretch gives d = 3 / sum w a |xi| V; simple
+// shear gives the same b = G / (2 sum w a xi_1^2 xi_2^2/|xi|^2 V); W = 9 K s^2 / 2 under
+// isotropic stretch gives a = (9 K / 2 - b sum w a |xi|^2 V) / 9. On a full ball with a
+// constant weight these are the book's constants (sum xi_1^2 xi_2^2/|xi|^2 = m2 / 15).
 #include "pdgen/dsl.hpp"
 
 using namespace pdgen;
@@ -20,18 +26,21 @@ namespace {
 // gives sum w a |xi| V; paper 000 section 3 says instead that d's sum "is identical to the
 // summation for m" (sum w a |xi|^2 V). The second variant is kept to test whether that
 // reading explains the paper's non-convergence on biaxial compression (docs/paper000.md).
-Law oterkus(const std::string& name, const std::string& summary, bool d_from_m) {
-  Law law(name, 2, summary);
-  const Expr kappa = law.param("kappa2"), G = law.param("G");
+Law oterkus(const std::string& name, const std::string& summary, bool d_from_m, int dim = 2) {
+  Law law(name, dim, summary);
+  // 2D: W = 2 kappa2 s^2 and theta = 2 s under isotropic stretch; 3D: W = 9 K s^2 / 2, theta = 3 s.
+  const Expr bulk_energy = dim == 2 ? 2 * law.param("kappa2") : 4.5 * law.param("K");
+  const double theta_per_s = dim;
+  const Expr G = law.param("G");
   const Expr r = norm(law.xi()), l = law.deformed_length(), e = l - r;
   const Expr wa = law.w() * law.alpha();
   const Expr cosine = dot(law.Y(), law.xi()) / (l * r);
   const Expr m1 = d_from_m ? law.sum("m2", wa * r * r * law.V()) : law.sum("m1", wa * r * law.V());
   const Expr m2 = d_from_m ? m1 : law.sum("m2", wa * r * r * law.V());
   const Expr mx = law.sum("mx", wa * pow(law.xi()[0] * law.xi()[1], 2) / (r * r) * law.V());
-  const Expr d = 2 / m1;
+  const Expr d = theta_per_s / m1;
   const Expr b = G / (2 * mx);
-  const Expr a = (2 * kappa - b * m2) / 4;
+  const Expr a = (bulk_energy - b * m2) / (theta_per_s * theta_per_s);
   const Expr theta = law.sum("theta", d * wa * e * cosine * law.V());
   law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
@@ -44,6 +53,11 @@ PDGEN_LAW(oterkus_plane_strain) {
   return oterkus("oterkus_plane_strain",
                  "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); params kappa2, G",
                  false);
+}
+
+PDGEN_LAW(oterkus_3d) {
+  return oterkus("oterkus_3d",
+                 "Oterkus dilatation law, 3D (paper 003 eqs. 7-8, a, b, d from discrete sums); params K, G", false, 3);
 }
 
 PDGEN_LAW(oterkus_paper_d_plane_strain) {

@@ -59,6 +59,12 @@ using TangentKernel = void (*)(const Family&, double* forces, const TangentFacto
 // Directional derivative of the nodal forces along a local increment dy of the
 // positions of particles 0..L: df = (d f / d y) dy. Cost linear in L.
 using JvpKernel = void (*)(const Family&, const double* dy, double* df);
+// The family's dense local matrix M = d f / d y, (L+1)*dim square, row-major, from the
+// factors of the tangent kernel: the formula of runtime/local_matrix.hpp, emitted per law
+// with the factor entries that are structurally zero for that law left out of every sum
+// (correspondence's right factors dN_ij/dY have one nonzero component, its direct factor
+// none). Writes every entry. Null for a hand-written law: use pd::form_local_matrix.
+using FormKernel = void (*)(const Family&, const TangentFactors& factors, double* M);
 // Strain-energy density W of the center particle; the family's energy is V0*W
 // and forces = -d(V0 W)/dy. Null when the law has no energy.
 using EnergyKernel = double (*)(const Family&);
@@ -74,6 +80,7 @@ struct KernelVariant {
   ResidualKernel residual = nullptr;
   TangentKernel tangent = nullptr;
   JvpKernel jvp = nullptr;
+  FormKernel form = nullptr;        // may be null (hand-written laws)
   EnergyKernel energy = nullptr;    // may be null
   OutputsKernel outputs = nullptr;  // may be null when n_outputs == 0
   OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted

@@ -1,6 +1,9 @@
 // Forms a family's dense local tangent matrix from the factored tangent of the kernel ABI.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "kernel_abi.hpp"
@@ -103,6 +106,60 @@ inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, con
   if (dim == 2 && n_states == 4) return form_local_matrix_for<2, 4>(dim, n_states, fam, fac, M);
   if (dim == 3 && n_states == 9) return form_local_matrix_for<3, 9>(dim, n_states, fam, fac, M);
   form_local_matrix_for<0, 0>(dim, n_states, fam, fac, M);
+}
+
+// The same matrix through the law's generated form kernel (KernelVariant::form: the
+// structural zeros of the law's factors skipped) when it has one, else the generic forming.
+inline void form_local_matrix(const abi::KernelVariant& variant, int dim, int n_states, const abi::Family& fam,
+                              const abi::TangentFactors& fac, double* M) {
+  if (variant.form != nullptr) return variant.form(fam, fac, M);
+  form_local_matrix(dim, n_states, fam, fac, M);
+}
+
+// A law without states (bond-based: n_states == 0) has T_ik = delta_ik direct_i, so its
+// local matrix has only the blocks of bond k with itself and with the center:
+//   M[0][k+1] = M[k+1][0] = B[k+1],  M[k+1][k+1] = -B[k+1],  M[0][0] = B[0],
+// B[k+1] = c_k direct_k, B[0] = -sum_k B[k+1]; every other block is zero. Writes the
+// (L+1) d x d blocks B, row-major each, [(L+1)*dim*dim] in all: what a one-horizon
+// scatter needs instead of the (L+1)^2 d^2 dense matrix.
+inline void form_pair_blocks(int dim, const abi::Family& fam, const abi::TangentFactors& fac, double* B) {
+  const int L = fam.n_bonds, dd = dim * dim;
+  for (int a = 0; a < dd; ++a) B[a] = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = fam.V0 * fam.V[k];
+    double* __restrict b = B + static_cast<std::ptrdiff_t>(k + 1) * dd;
+    for (int a = 0; a < dd; ++a) {
+      b[a] = c * fac.direct[k * dd + a];
+      B[a] -= b[a];
+    }
+  }
+}
+
+// True when the factors are finite and small enough that every entry of the local
+// matrix formed from them is finite too: O(L) work instead of a pass over the O(L^2)
+// matrix. Each entry is a sum of at most L (direct + S L left right) terms scaled by
+// some c_i = V0 V_i (the center block's is the largest), so with the largest magnitudes
+// of the factors the bound L c (D + L S l r) stays below DBL_MAX with room to spare.
+inline bool factors_finite(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac) {
+  const int L = fam.n_bonds, dd = dim * dim, sd = n_states * dim;
+  double nan_sum = 0.0, c_max = 0.0, d_max = 0.0, l_max = 0.0, r_max = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = fam.V0 * fam.V[k];
+    nan_sum += c * 0.0;
+    c_max = std::max(c_max, std::abs(c));
+    for (int a = 0; a < dd; ++a) {
+      nan_sum += fac.direct[k * dd + a] * 0.0;  // 0 for finite values, NaN for NaN and Inf
+      d_max = std::max(d_max, std::abs(fac.direct[k * dd + a]));
+    }
+    for (int a = 0; a < sd; ++a) {
+      nan_sum += (fac.left[k * sd + a] + fac.right[k * sd + a]) * 0.0;
+      l_max = std::max(l_max, std::abs(fac.left[k * sd + a]));
+      r_max = std::max(r_max, std::abs(fac.right[k * sd + a]));
+    }
+  }
+  if (nan_sum != 0.0) return false;
+  const double n = L, bound = n * c_max * (d_max + n * n_states * l_max * r_max);
+  return bound < std::numeric_limits<double>::max() / 16;
 }
 
 // Scratch storage for one family's tangent factors, sized once per thread.

@@ -6,7 +6,9 @@ packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev lib
           libyaml-cpp-dev libgtest-dev libbenchmark-dev libomp-dev python3
           nlohmann-json3-dev libcli11-dev python3-matplotlib python3-vtk9 clang libclang-rt-14-dev
           python3-sfepy  # the FEM reference of paper 004 (scripts/fem/edge_notch_j.py, ctest fem_edge_notch_j)
-          libopenblas0-pthread)  # python3-vtk9: tests/output reads every output with VTK. OpenBLAS: CHOLMOD's supernodal factorisation is 4x faster than with reference BLAS
+          libtrilinos-sacado-dev libtrilinos-kokkos-dev libtrilinos-teuchos-dev  # Sacado: kernel_bench's forward-AD reference (Peridigm's AD); Debian's headers need Kokkos, Teuchos and mpi.h
+          libopenblas0-pthread  # OpenBLAS: CHOLMOD's supernodal factorisation is 4x faster than with reference BLAS
+          petsc-dev openmpi-bin libopenmpi-dev)  # python3-vtk9: tests/output reads every output with VTK. petsc-dev (3.18, hypre) + OpenMPI: the distributed backend (runtime/petsc/, `mpirun -n N pd run`)
 if [ "${1:-}" = "--profile" ]; then packages+=(linux-perf valgrind); fi
 missing=()
 for p in "${packages[@]}"; do

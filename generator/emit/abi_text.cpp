@@ -20,6 +20,8 @@ Signature signature(Kernel k) {
       return {"void", {kFamily, "double* forces", "const pd::abi::TangentFactors& factors"}, {"fam", "forces", "factors"}};
     case Kernel::Jvp:
       return {"void", {kFamily, "const double* dy", "double* df"}, {"fam", "dy", "df"}};
+    case Kernel::Form:
+      return {"void", {kFamily, "const pd::abi::TangentFactors& factors", "double* M"}, {"fam", "factors", "M"}};
     case Kernel::Energy:
       return {"double", {kFamily}, {"fam"}};
     case Kernel::Outputs:
@@ -51,6 +53,11 @@ std::string factor_left(int dim, int n_states, int s, int r) {
 std::string factor_right(int dim, int n_states, int s, int c) {
   return "factors.right[(k * " + str(n_states) + " + " + str(s) + ") * " + str(dim) + " + " + str(c) + "]";
 }
+std::string factor_at(const std::string& which, const std::string& bond, int per_bond, int index) {
+  return "factors." + which + "[" + bond + " * " + str(per_bond) + " + " + str(index) + "]";  // bond: a name
+}
+std::string bond_volume(const std::string& bond) { return "fam.V[" + bond + "]"; }
+std::string center_volume() { return "fam.V0"; }
 std::string moment_output(int i) { return "moments[" + str(i) + "]"; }
 std::string output(int i) { return "outputs[" + str(i) + "]"; }
 

@@ -13,7 +13,7 @@ struct Signature {
   std::string return_type;
   std::vector<std::string> params, names;
 };
-enum class Kernel { Moments, Residual, Tangent, Jvp, Energy, Outputs, Influence };
+enum class Kernel { Moments, Residual, Tangent, Jvp, Form, Energy, Outputs, Influence };
 Signature signature(Kernel k);
 
 // Family inputs. Per bond k: component c of a vector field (xi, Y), a scalar field
@@ -35,6 +35,11 @@ std::string forces_requested();  // the tangent writes forces only when given th
 std::string factor_direct(int dim, int r, int c);
 std::string factor_left(int dim, int n_states, int s, int r);
 std::string factor_right(int dim, int n_states, int s, int c);
+// The same factor entries read in the form kernel: bond `bond` (a C++ expression), the
+// factors bound to `factors`.
+std::string factor_at(const std::string& which, const std::string& bond, int per_bond, int index);
+std::string bond_volume(const std::string& bond);  // V of bond `bond`
+std::string center_volume();                         // V0
 std::string moment_output(int i);
 std::string output(int i);
 

@@ -4,6 +4,7 @@
 // Per-family nodes needed inside a loop are hoisted before it. A per-bond call
 // needed by several loops is computed once and kept in a per-bond cache, so no
 // kernel evaluates the same sqrt/pow twice. The cache is the caller's Family::scratch.
+#include <algorithm>
 #include <charconv>
 #include <functional>
 #include <set>
@@ -288,9 +289,44 @@ class Printer {
       const Binding& b = prog_.bindings.at(g_.var_symbols().at(id));
       if (!b.load.empty() && loaded.insert(b.var).second) loop << "    const double " << b.var << " = " << b.load << ";\n";
     }
+    // Sums over the bonds are split by the generator into kLanes partial sums (bond k adds
+    // to lane k mod kLanes), combined in a fixed order after the loop: a horizon sum's
+    // accumulator, and each sum into memory
+    // (the center's force, forces[c] +=). The lanes of a group of kLanes bonds are
+    // independent, so the compiler may compute them side by side in vector registers
+    // (`omp simd` on the lane loop) without reassociating anything: no -ffast-math, and
+    // every kernel of a law sums in the same order, so the tangent kernel's forces are
+    // the residual kernel's to the bit. Without reductions the loop is one `omp simd` loop.
+    constexpr int kLanes = 4;
+    Segment body = seg;
+    std::vector<std::pair<std::string, std::string>> lanes;  // (lane array, target += line prefix)
+    std::vector<std::string> reductions;
+    for (Store& st : body.stores) {
+      if (st.mode != StoreMode::Accumulate) continue;
+      if (std::find(reductions.begin(), reductions.end(), st.target + "|" + st.guard) == reductions.end()) {
+        reductions.push_back(st.target + "|" + st.guard);
+        const std::string lane = "lane" + std::to_string(acc_counter_++);
+        lanes.push_back({lane, (st.guard.empty() ? "" : "if (" + st.guard + ") ") + st.target});
+      }
+      const auto at = std::find(reductions.begin(), reductions.end(), st.target + "|" + st.guard) - reductions.begin();
+      st.target = lanes[static_cast<std::size_t>(at)].first + "[lane]";
+      st.guard.clear();  // a local partial sum: the guard applies where it reaches memory
+    }
     emit_nodes(loop, order, roots, "    ", "b", per_bond_, true);
-    emit_stores(loop, seg, roots, "    ");
-    out << "  for (int k = 0; k < L; ++k) {\n" << loop.str() << "  }\n";
+    emit_stores(loop, body, roots, "    ");
+    if (lanes.empty()) {
+      out << "#pragma omp simd\n  for (int k = 0; k < L; ++k) {\n" << loop.str() << "  }\n";
+    } else {
+      const std::string K = std::to_string(kLanes);
+      for (auto& [lane, target] : lanes) out << "  double " << lane << "[" << K << "] = {};\n";
+      // One copy of the body (a kernel computes each call once, also in its text): the
+      // last group has fewer than kLanes bonds.
+      out << "  for (int k_group = 0; k_group < L; k_group += " << K << ") {\n    const int n_lanes = L - k_group < " << K
+          << " ? L - k_group : " << K << ";\n#pragma omp simd\n    for (int lane = 0; lane < n_lanes; ++lane) {\n"
+          << "      const int k = k_group + lane;\n" << loop.str() << "    }\n  }\n";
+      for (auto& [lane, target] : lanes)
+        out << "  " << target << " += (" << lane << "[0] + " << lane << "[1]) + (" << lane << "[2] + " << lane << "[3]);\n";
+    }
     // Per-bond temporaries die with the loop; per-family ones stay visible.
     std::map<int, std::string> kept;
     for (auto& [id, name] : names_)
@@ -305,6 +341,7 @@ class Printer {
   std::map<int, int> cached_;         // per-bond call -> cache slot
   std::set<int> cache_ready_;
   int temp_counter_ = 0;
+  int acc_counter_ = 0;  // partial-sum arrays of the loops' reductions
   EmitCounts per_bond_, per_family_;
 };
 }  // namespace

@@ -37,7 +37,7 @@ class Builder {
     out.n_states = static_cast<int>(force_states_.size());
     out.moments = moments_kernel();
     out.residual = prune(residual_kernel());
-    out.tangent = prune(tangent_kernel());
+    out.tangent = prune(tangent_kernel(out.factor_structure));
     out.jvp = prune(jvp_kernel());
     out.has_energy = law_.has_energy();
     if (out.has_energy) out.energy = prune(particle_value_kernel("energy", abi_text::Kernel::Energy, {{"W", law_.energy_density()}}));
@@ -159,9 +159,12 @@ class Builder {
     return p;
   }
 
-  KernelProgram tangent_kernel() const {
+  // Also records which factor entries are structurally zero (their expression folded to
+  // the constant 0), for the form kernel.
+  KernelProgram tangent_kernel(FactorStructure& structure) const {
     KernelProgram p = program("tangent", abi_text::Kernel::Tangent, true);
     const int NS = static_cast<int>(force_states_.size());
+    structure = {D_, NS, {}, {}, {}};
     // Coupling sums C[s][s'] between states, bound to per-family variables.
     std::map<std::pair<int, int>, Expr> coupling;
     for (int s = 0; s < NS; ++s)
@@ -187,8 +190,11 @@ class Builder {
     const std::vector<Expr> t = force_roots();
     force_stores(seg, t, "forces", abi_text::forces_requested());
     for (int r = 0; r < D_; ++r)
-      for (int c = 0; c < D_; ++c)
-        seg.stores.push_back({abi_text::factor_direct(D_, r, c), diff(t[r], law_.Y()[c]), StoreMode::Set, ""});
+      for (int c = 0; c < D_; ++c) {
+        const Expr v = diff(t[r], law_.Y()[c]);
+        structure.direct.push_back(!v.is_const(0.0));
+        seg.stores.push_back({abi_text::factor_direct(D_, r, c), v, StoreMode::Set, ""});
+      }
     std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS), std::vector<Expr>(static_cast<std::size_t>(D_)));
     for (int s = 0; s < NS; ++s) {
       for (int c = 0; c < D_; ++c) {
@@ -196,11 +202,14 @@ class Builder {
         for (int q = 0; q < s; ++q)
           if (auto it = coupling.find({s, q}); it != coupling.end()) v = v + it->second * R[q][c];
         R[s][c] = v;
+        structure.right.push_back(!v.is_const(0.0));
         seg.stores.push_back({abi_text::factor_right(D_, NS, s, c), v, StoreMode::Set, ""});
       }
-      for (int r = 0; r < D_; ++r)
-        seg.stores.push_back({abi_text::factor_left(D_, NS, s, r),
-                              diff(t[r], force_states_[s]->symbol), StoreMode::Set, ""});
+      for (int r = 0; r < D_; ++r) {
+        const Expr v = diff(t[r], force_states_[s]->symbol);
+        structure.left.push_back(!v.is_const(0.0));
+        seg.stores.push_back({abi_text::factor_left(D_, NS, s, r), v, StoreMode::Set, ""});
+      }
     }
     p.segments.push_back(seg);
     return p;

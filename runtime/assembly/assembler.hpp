@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "assembly/family_colouring.hpp"
@@ -16,10 +17,14 @@ struct AssemblerOptions {
   bool intact = false;  // the variant with alpha folded to 1: only when no bond is broken
   bool matrix = true;   // build the sparsity pattern and slots (false: matrix-free use only)
   int threads = 0;      // 0: OpenMP's default
-  int chunk_size = 0;   // families per colouring chunk; 0: automatic
+  int chunk_size = 0;   // 0: tiles of two horizons as colouring chunks; > 0: runs of this many family indices
   // Non-null: collocation assembly with these per-bond weights (collocation.hpp); the
   // stiffness is then not symmetric and there is no energy. Must outlive the assembler.
   const Collocation* collocation = nullptr;
+  // The pattern's coupling; unset: the law's (coupling_of_law: pairwise for a law
+  // without states). Coupling::family on a pairwise law stores its structural zeros
+  // (the two-horizon pattern, for comparison); pairwise on a law with states throws.
+  std::optional<Coupling> coupling;
 };
 
 // Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over

@@ -1,4 +1,4 @@
-// Two-horizon pattern from the transposed family lists; slots by binary search, once.
+// The coupled particle pairs from the transposed family lists; slots by binary search, once.
 #include "assembly/sparsity_pattern.hpp"
 
 #include <algorithm>
@@ -17,7 +17,8 @@ void for_each_member(const Bonds& B, int p, F&& f) {
 }
 }  // namespace
 
-SparsityPattern::SparsityPattern(const Bonds& B, int dim) : n_(B.particle_count()), dim_(dim) {
+SparsityPattern::SparsityPattern(const Bonds& B, int dim, Coupling coupling)
+    : n_(B.particle_count()), dim_(dim), coupling_(coupling) {
   // Families containing each particle (the transpose of the membership lists). Bonds
   // are normally stored in both directions, but the transpose keeps the pattern right
   // for one-sided lists too.
@@ -29,15 +30,22 @@ SparsityPattern::SparsityPattern(const Bonds& B, int dim) : n_(B.particle_count(
     std::vector<int> fill(fam_start.begin(), fam_start.end() - 1);
     for (int p = 0; p < n_; ++p) for_each_member(B, p, [&](int q) { fams[fill[q]++] = p; });
   }
-  // Column b holds every member of every family containing b.
+  // Column b holds every member of every family containing b (family coupling), or
+  // (pairwise) all of b's own family and the center of each other family holding b.
   col_start_.assign(static_cast<std::size_t>(n_) + 1, 0);
   std::vector<int> mark(static_cast<std::size_t>(n_), -1), col;
   for (int b = 0; b < n_; ++b) {
     col.clear();
-    for (int i = fam_start[b]; i < fam_start[b + 1]; ++i)
-      for_each_member(B, fams[i], [&](int q) {
-        if (mark[q] != b) mark[q] = b, col.push_back(q);
-      });
+    auto add = [&](int q) {
+      if (mark[q] != b) mark[q] = b, col.push_back(q);
+    };
+    for (int i = fam_start[b]; i < fam_start[b + 1]; ++i) {
+      const int p = fams[i];
+      if (coupling == Coupling::family || p == b)
+        for_each_member(B, p, add);
+      else
+        add(p), add(b);
+    }
     std::sort(col.begin(), col.end());
     rows_.insert(rows_.end(), col.begin(), col.end());
     col_start_[b + 1] = static_cast<int>(rows_.size());
@@ -47,17 +55,23 @@ SparsityPattern::SparsityPattern(const Bonds& B, int dim) : n_(B.particle_count(
                              " nonzeros exceed 32-bit indices; use the matrix-free solver");
   slot_start_.assign(static_cast<std::size_t>(n_) + 1, 0);
   for (int p = 0; p < n_; ++p) {
-    const std::int64_t m = B.family_size(p) + 1;
-    slot_start_[p + 1] = slot_start_[p] + m * m;
+    slot_start_[p + 1] = slot_start_[p] + slot_count(coupling, B.family_size(p));
   }
   slots_.resize(static_cast<std::size_t>(slot_start_[n_]));
 #pragma omp parallel for schedule(dynamic, 64)
   for (int p = 0; p < n_; ++p) {
     const int L = B.family_size(p), b0 = B.offsets[p];
     int* s = slots_.data() + slot_start_[p];
-    for (int a = 0; a <= L; ++a) {
-      const int qa = a == 0 ? p : B.neighbor[b0 + a - 1];
-      for (int b = 0; b <= L; ++b) s[a * (L + 1) + b] = block_base(qa, b == 0 ? p : B.neighbor[b0 + b - 1]);
+    auto member = [&](int a) { return a == 0 ? p : B.neighbor[b0 + a - 1]; };
+    if (coupling == Coupling::family) {
+      for (int b = 0; b <= L; ++b)
+        for (int a = 0; a <= L; ++a) s[b * (L + 1) + a] = block_base(member(a), member(b));
+    } else {
+      for (int a = 0; a <= L; ++a) s[a] = block_base(member(a), p);
+      for (int k = 1; k <= L; ++k) {
+        s[L + 2 * k - 1] = block_base(p, member(k));
+        s[L + 2 * k] = block_base(member(k), member(k));
+      }
     }
   }
 }

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "kernel_abi.hpp"
+
 namespace pd::cli {
 
 MemoryEstimate estimate_memory(const Scene& scene) {
@@ -21,9 +23,13 @@ MemoryEstimate estimate_memory(const Scene& scene) {
   // x (d doubles), volume, material (int), offsets (int), delta, and u, r, du (d doubles each).
   const double per_bond = 4 + 8.0 * (d + 3), per_particle = 8.0 * d + 8 + 4 + 4 + 8 + 3 * 8.0 * d;
   e.bytes = e.bonds * per_bond + e.particles * per_particle;
-  // Every family couples its particles: a row holds about the sites within 2 delta.
+  // A law with states couples every two particles of a family: a row holds about the
+  // sites within 2 delta. A law without states couples a family's center with each
+  // neighbour only (Coupling::pairwise): the sites within delta.
+  const abi::LawDescriptor* law = abi::find_law(scene.law);
+  const double reach = law != nullptr && law->n_states == 0 ? 1.0 : std::pow(2.0, d);
   if (!scene.dynamics && scene.solver.linear != LinearMethod::matrix_free)
-    e.tangent_nonzeros = e.particles * (std::pow(2.0, d) * per_family + 1) * d * d;
+    e.tangent_nonzeros = e.particles * (reach * per_family + 1) * d * d;
   return e;
 }
 

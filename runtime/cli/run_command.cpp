@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <fmt/core.h>
 #include <memory>
+#include <optional>
+#include <vector>
 #include <string>
 #include <unistd.h>
 
@@ -15,6 +17,7 @@
 #include "output/output_directory.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
+#include "solve/distributed_backend.hpp"
 #include "version.hpp"
 
 namespace pd::cli {
@@ -56,8 +59,26 @@ const char* kRunDetails =
     "and key), 130 / 143 interrupted by SIGINT / SIGTERM (no result file is written).\n";
 
 struct RunOptions {
-  std::string scene_path, out_dir, restart;
+  std::string scene_path, out_dir, restart, petsc_options;
 };
+
+// Why this run cannot go on the backend its scene names, if it cannot: several MPI
+// processes on the serial backend would each write the same files.
+std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions& options) {
+  const int processes = launched_process_count();
+  if (scene.solver.backend != Backend::petsc) {
+    if (processes > 1)
+      return fmt::format("started on {} MPI processes, but solver.backend is serial: add 'backend: petsc' to the "
+                         "solver section (docs/scene_format.md), or run without mpirun", processes);
+    if (!options.petsc_options.empty()) return std::string("--petsc-options needs solver.backend: petsc");
+    return std::nullopt;
+  }
+  if (!distributed_backend_available())
+    return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
+                       "scripts/install_deps.sh and configure again)");
+  if (scene.dynamics) return std::string("solver.backend: petsc solves static scenes; dynamics runs on the serial backend");
+  return std::nullopt;
+}
 
 int run_scene(const RunOptions& options) {
   const std::string& scene_path = options.scene_path;
@@ -83,18 +104,34 @@ int run_scene(const RunOptions& options) {
     }
     scene.dynamics->restart = restart;
   }
+  const bool petsc = scene.solver.backend == Backend::petsc;
+  if (const auto refusal = backend_refusal(scene, options)) {
+    fmt::print(stderr, "pd run: {}: {}\n", scene_path, *refusal);
+    return 2;
+  }
   RunSummary s;
   const bool dynamic = scene.dynamics.has_value();
+  int rank = 0;
   try {
-    const OutputDirectoryClaim claim(scene.output.directory);  // writable and ours, before any solve
-    const auto log = [](const std::string& line) { fmt::print("{}\n", line); std::fflush(stdout); };
+    // Every rank solves; rank 0 alone claims the directory, logs and writes the files.
+    std::optional<DistributedSession> session;
+    if (petsc) session.emplace(std::vector<std::string>{scene.solver.petsc_options, options.petsc_options});
+    rank = session ? session->rank() : 0;
+    std::optional<OutputDirectoryClaim> claim;
+    if (rank == 0) claim.emplace(scene.output.directory);  // writable and ours, before any solve
+    const auto log = [rank](const std::string& line) {
+      if (rank != 0) return;
+      fmt::print("{}\n", line);
+      std::fflush(stdout);
+    };
     log(version_line());
+    if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
     if (scene.dynamics) {
       DynamicSimulation sim(std::move(scene), log);
       s = sim.run();
     } else {
       Simulation sim(std::move(scene), log);
-      s = sim.run();
+      s = sim.run(rank == 0);
     }
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
     // Those found while setting up the body (a horizon beyond the body, overflowing
@@ -109,6 +146,7 @@ int run_scene(const RunOptions& options) {
                        : "no result files were written");
     return 128 + e.signal();
   }
+  if (rank != 0) return 0;
   fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
              s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);
   for (const auto& f : s.files) fmt::print("  {}\n", f);
@@ -123,6 +161,8 @@ Command add_run_command(CLI::App& pd) {
   cmd->add_option("SCENE", options->scene_path, "the scene file (YAML)")->required();
   cmd->add_option("--out", options->out_dir, "the output directory DIR (default: the scene's output.directory)");
   cmd->add_option("--restart", options->restart, "resume a dynamic run from this checkpoint file");
+  cmd->add_option("--petsc-options", options->petsc_options,
+                  "PETSc options for solver.backend: petsc, after the scene's (--petsc-options='-ksp_monitor')");
   return [options] { return run_scene(*options); };
 }
 

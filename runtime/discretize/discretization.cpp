@@ -1,5 +1,6 @@
 // Lattice discretisation, cell-list neighbour search (crack cutting: crack_cut.cpp).
 #include "discretize/discretization.hpp"
+#include "discretize/lattice_blocks.hpp"
 
 #include "input/yaml_keys.hpp"
 
@@ -74,76 +75,8 @@ constexpr double negligible_weight_fraction = 1e-12;
 }  // namespace
 
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, double)) {
-  const int d = p.dim, n = p.size();
-  // Cell list with cells a little larger than the reach delta (1 + 1e-12): neighbours then
-  // lie in the 3^d surrounding cells even when rounding of (x - lo) / size puts a neighbour
-  // exactly delta away (integer delta/h on a lattice) one cell further than exact arithmetic.
-  const double size = delta * (1 + 1e-9);
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  for (int c = 0; c < d; ++c) {
-    lo[c] = hi[c] = p.x[c];
-    for (int i = 0; i < n; ++i) lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
-  }
-  int dims[3] = {1, 1, 1};
-  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / size) + 1);
-  auto cell_of = [&](const double* x, int* ci) {
-    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
-  };
-  const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
-  std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));
-  std::vector<std::size_t> cell_index(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    int ci[3];
-    cell_of(p.position(i), ci);
-    cell_index[i] = (static_cast<std::size_t>(ci[2]) * dims[1] + ci[1]) * dims[0] + ci[0];
-    ++cell_start[cell_index[i] + 1];
-  }
-  for (std::size_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
-  {
-    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-    for (int i = 0; i < n; ++i) cell_items[fill[cell_index[i]]++] = i;
-  }
-  Bonds b;
-  b.dim = d;
-  b.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
-  b.delta.assign(static_cast<std::size_t>(n), delta);
-  const double reach2 = family_reach(delta) * family_reach(delta);
-  std::vector<int> found;
-  for (int i = 0; i < n; ++i) {
-    int ci[3];
-    cell_of(p.position(i), ci);
-    found.clear();
-    for (int dz = (d == 3 ? -1 : 0); dz <= (d == 3 ? 1 : 0); ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int cx = ci[0] + dx, cy = ci[1] + dy, cz = ci[2] + dz;
-          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2]) continue;
-          const std::size_t cell = (static_cast<std::size_t>(cz) * dims[1] + cy) * dims[0] + cx;
-          for (int q = cell_start[cell]; q < cell_start[cell + 1]; ++q) {
-            const int j = cell_items[q];
-            if (j == i) continue;
-            double r2 = 0;
-            for (int c = 0; c < d; ++c) r2 += (p.x[j * d + c] - p.x[i * d + c]) * (p.x[j * d + c] - p.x[i * d + c]);
-            if (r2 <= reach2) found.push_back(j);
-          }
-        }
-    std::sort(found.begin(), found.end());
-    for (int j : found) {
-      double r2 = 0;
-      for (int c = 0; c < d; ++c) {
-        const double e = p.x[j * d + c] - p.x[i * d + c];
-        b.xi.push_back(e);
-        r2 += e * e;
-      }
-      const double r = std::sqrt(r2);
-      b.neighbor.push_back(j);
-      b.length.push_back(r);
-      b.w.push_back(influence(r, delta));
-      b.alpha.push_back(1.0);
-    }
-    b.offsets[i + 1] = static_cast<int>(b.neighbor.size());
-  }
-  return b;
+  // One horizon for all: the per-particle search scans the 3^d surrounding cells.
+  return find_bonds_per_particle(p, std::vector<double>(static_cast<std::size_t>(p.size()), delta), influence);
 }
 
 int drop_negligible_bonds(Bonds& b) {

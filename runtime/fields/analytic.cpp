@@ -31,6 +31,12 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
     angle_ = param(spec, "angle", NAN) * M_PI / 180;
     stretch_ = param(spec, "stretch", 0.0);
     if (!std::isfinite(angle_)) throw std::invalid_argument("rotation field needs angle (degrees)");
+  } else if (name_ == "affine") {
+    // u = eps (x - x0) with a symmetric strain tensor, in 2D or 3D (paper 002 eq. 2.54).
+    const char* keys[3][3] = {{"e11", "e12", "e13"}, {"e12", "e22", "e23"}, {"e13", "e23", "e33"}};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) strain_[a][b] = param(spec, keys[a][b], 0.0);
+    z0_ = param(spec, "z0", 0.0);
   } else if (name_ == "inclusion") {
     // Plane strain, axisymmetric: u_r = A r inside, B r + C / r outside. Far field
     // sigma_rr = T gives B = T / (2 (lambda_m + mu_m)); continuity of u_r and of
@@ -50,7 +56,7 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
   }
   for (const auto& [k, v] : spec.parameters) {
     static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction", "angle", "stretch",
-                                  "radius", "E_inclusion", "nu_inclusion"};
+                                  "radius", "E_inclusion", "nu_inclusion", "e11", "e22", "e33", "e12", "e13", "e23", "z0"};
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
     if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");
@@ -78,6 +84,15 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
     return {s * x, s * y, 0.0};
   }
   if (name_ == "shear") return {2 * T * y * (1 + nu) / E, 0.0, 0.0};
+  if (name_ == "affine") {
+    // p has 3 coordinates only in 3D scenes: the reader refuses e13, e23, e33 and z0 in 2D,
+    // so a 2D field never reads p[2].
+    const double r[3] = {x, y, (strain_[0][2] != 0 || strain_[1][2] != 0 || strain_[2][2] != 0) ? p[2] - z0_ : 0.0};
+    std::array<double, 3> u{};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) u[a] += strain_[a][b] * r[b];
+    return u;
+  }
   if (name_ == "rotation") {
     const double c = std::cos(angle_), s = std::sin(angle_), k = 1 + stretch_;
     return {k * (c * x - s * y) - x, k * (s * x + c * y) - y, 0.0};

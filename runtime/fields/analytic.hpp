@@ -5,6 +5,7 @@
 //   shear:      bottom clamped, horizontal rollers on the sides, tangential T on top
 //   westergaard: pressurised crack on y = 0, |x| < a, pressure p (eqs. 42-47)
 //   rotation:   rigid rotation by `angle` degrees about (x0, y0), times 1 + `stretch`
+//   affine:     u = eps (x - x0), eps symmetric from e11 e22 e33 e12 e13 e23 (default 0), 2D or 3D
 //   inclusion:  circular inclusion of radius a (E_inclusion, nu_inclusion) at (x0, y0)
 //               in an infinite plane under remote equibiaxial traction T
 #pragma once
@@ -35,6 +36,8 @@ class AnalyticField {
   double T_ = 0, E_ = 0, nu_ = 0, a_ = 0, x0_ = 0, y0_ = 0;
   double angle_ = 0, stretch_ = 0;            // rotation
   double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
+  double strain_[3][3] = {};                  // affine: u = strain (x - (x0, y0, z0))
+  double z0_ = 0;
 };
 
 }  // namespace pd

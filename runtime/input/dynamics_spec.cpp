@@ -23,8 +23,20 @@ InitialCondition read_initial(const YamlAt& at, int dim) {
   InitialCondition ic;
   ic.where = at.location();
   if (m.has("region")) ic.region = read_region(m.get("region"), dim);
-  if (!m.has("displacement") && !m.has("velocity")) at.fail("give displacement, velocity or both");
+  if (!m.has("displacement") && !m.has("velocity") && !m.has("gradient"))
+    at.fail("give displacement, velocity, gradient or several of them");
   if (m.has("displacement")) ic.displacement = read_vector(m.get("displacement"), dim);
+  if (m.has("gradient")) {
+    const YamlAt g = m.get("gradient");
+    if (!g.node.IsSequence() || static_cast<int>(g.node.size()) != dim)
+      g.fail("expected " + std::to_string(dim) + " rows of " + std::to_string(dim) + " numbers (du_i/dx_j)");
+    for (int i = 0; i < dim; ++i) ic.gradient[i] = read_vector(g.element(g.node[i], static_cast<std::size_t>(i)), dim);
+    ic.has_gradient = true;
+  }
+  if (m.has("origin")) {
+    if (!ic.has_gradient) m.get("origin").fail("origin belongs to a gradient; give gradient too");
+    ic.origin = read_vector(m.get("origin"), dim);
+  }
   if (m.has("velocity")) ic.velocity = read_vector(m.get("velocity"), dim);
   if (m.has("gaussian")) {
     MapReader g(m.get("gaussian"));

@@ -2,6 +2,7 @@
 // plain data with the documented defaults, read by read_dynamics / read_damage.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,15 @@ namespace pd {
 struct YamlAt;
 
 // Initial displacement and velocity of the particles of a region, optionally shaped by
-// a Gaussian profile exp(-((x_axis - center) / width)^2 / 2) along one axis.
+// a Gaussian profile exp(-((x_axis - center) / width)^2 / 2) along one axis, plus a
+// displacement field linear in position, u += gradient (x - origin): a homogeneous strain
+// state such as paper 003's uniaxial-strain start (section 5.1).
 struct InitialCondition {
   Region region;
   Point displacement{}, velocity{};
+  bool has_gradient = false;
+  std::array<Point, 3> gradient{};  // gradient[i][j] = du_i/dx_j
+  Point origin{};
   bool gaussian = false;
   int axis = 0;
   double center = 0, width = 0;

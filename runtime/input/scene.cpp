@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "input/block_domain.hpp"
 #include "input/particle_domain.hpp"
 #include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
@@ -12,9 +13,6 @@
 
 namespace pd {
 
-namespace {
-const std::vector<std::string> kSides{"left", "right", "bottom", "top", "back", "front"};
-
 Point to_point(const YamlAt& at, int dim) {
   const auto v = as_numbers(at);
   if (static_cast<int>(v.size()) != dim) at.fail("expected " + std::to_string(dim) + " coordinates");
@@ -22,6 +20,9 @@ Point to_point(const YamlAt& at, int dim) {
   for (int i = 0; i < dim; ++i) p[i] = v[i];
   return p;
 }
+
+namespace {
+const std::vector<std::string> kSides{"left", "right", "bottom", "top", "back", "front"};
 
 int component_index(const YamlAt& at, const std::string& c, int dim) {
   const int i = c == "x" ? 0 : c == "y" ? 1 : c == "z" ? 2 : -1;
@@ -124,7 +125,8 @@ const std::vector<FieldParameters> kFieldParameters{
     {"shear", {"traction"}, {}},
     {"westergaard", {"pressure", "half_length"}, {}},
     {"rotation", {"angle"}, {"stretch"}},
-    {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}}};
+    {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}},
+    {"affine", {}, {"e11", "e22", "e33", "e12", "e13", "e23", "z0"}}};
 const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
 
 // output.j_integral: a list of {contour: {min, max}} (post/j_integral.hpp, paper 004).
@@ -148,7 +150,7 @@ std::vector<JContour> read_j_contours(const YamlAt& list, int dim) {
   return out;
 }
 
-FieldSpec read_field(const YamlAt& at) {
+FieldSpec read_field(const YamlAt& at, int dim) {
   MapReader m(at);
   FieldSpec f;
   std::vector<std::string> names;
@@ -169,6 +171,9 @@ FieldSpec read_field(const YamlAt& at) {
     m.get("nu_inclusion").fail("nu_inclusion must lie in (-1, 0.5)");
   if (f.parameters.count("stretch") && !(f.parameters["stretch"] > -1)) m.get("stretch").fail("stretch must exceed -1");
   if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0) m.get("half_length").fail("half_length must be positive");
+  if (dim == 2)
+    for (const char* key : {"e13", "e23", "e33", "z0"})
+      if (f.parameters.count(key)) m.get(key).fail(std::string(key) + " belongs to 3D scenes");
   if (f.parameters.count("E") && f.parameters["E"] <= 0) m.get("E").fail("Young's modulus E must be positive");
   if (f.parameters.count("nu") && !(f.parameters["nu"] > -1 && f.parameters["nu"] < 0.5))
     m.get("nu").fail("Poisson's ratio nu must lie in (-1, 0.5)");
@@ -264,7 +269,7 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   }
   if (m.has("field")) {
     bc.kind = BoundaryCondition::Kind::Field;
-    bc.field = read_field(m.get("field"));
+    bc.field = read_field(m.get("field"), dim);
     bc.components = {true, true, dim == 3};
     if (m.has("components")) bc.components = read_components(m.get("components"), dim);
     ++kinds;
@@ -333,8 +338,10 @@ Scene read(const YAML::Node& root, const std::string& file) {
   // A body from a particle file, or a box lattice.
   const YAML::Node domain = root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
   const bool from_file = domain && domain.IsMap() && domain["particles"];
+  const bool from_blocks = domain && domain.IsMap() && domain["blocks"];
   std::optional<ParticleFile> cloud;
   if (from_file) cloud = read_particle_domain(m.get("domain"), s);
+  else if (from_blocks) read_block_domain(m.get("domain"), s);
   else {
     MapReader d(m.get("domain"));
     MapReader box(d.get("box"));
@@ -366,6 +373,13 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.seed = static_cast<unsigned>(p.integer("seed", 1));
       p.finish();
     }
+    if (d.has("compensation")) {
+      s.compensation = d.boolean("compensation", false);
+      if (s.compensation && is_obq(s.quadrature))
+        d.get("compensation").fail("the compensation factor scales bond volumes; obq and obq_cut replace them by their own weights");
+      if (s.compensation && s.perturbation > 0)
+        d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
+    }
     for (const char* key : {"holes", "inclusions"}) {
       if (!d.has(key)) continue;
       const YamlAt list = d.get(key);
@@ -392,6 +406,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
   const abi::LawDescriptor* law = abi::find_law(s.law);
   if (law == nullptr) m.get("law").fail("unknown law '" + s.law + "' (pd laws lists them)");
   if (law->dim != s.dim) m.get("law").fail("law " + s.law + " is " + std::to_string(law->dim) + "D, the scene is " + std::to_string(s.dim) + "D");
+  if (s.compensation && law->intact.energy == nullptr)
+    m.get("domain").fail("compensation: law " + s.law + " has no energy kernel, and the compensation factor is a ratio of energy densities (paper 002 eq. 3.61)");
   s.influence = m.text("influence", "const");
   if (abi::find_influence(s.influence) == nullptr) m.get("influence").fail("unknown influence function '" + s.influence + "' (pd laws lists them)");
 
@@ -467,6 +483,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       sm.finish();
     }
     if (o.has("j_integral")) s.output.j_integral = read_j_contours(o.get("j_integral"), s.dim);
+    s.output.stress = o.boolean("stress", false);
     o.finish();
   }
   if (m.has("probes")) {
@@ -478,15 +495,27 @@ Scene read(const YAML::Node& root, const std::string& file) {
       probe.where = list.element(list.node[i], i).location();
       probe.name = p.text("name", "probe" + std::to_string(i));
       probe.region = read_region(p.get("region"), s.dim);
+      const bool stress = p.choice("quantity", "displacement", {"displacement", "stress"}) == "stress";
       const YamlAt comp = p.get("component");
-      probe.component = component_index(comp, as_text(comp), s.dim);
-      if (p.has("reference")) probe.reference = read_field(p.get("reference"));
+      const std::string c = as_text(comp);
+      if (stress) {
+        if (c.size() != 2) comp.fail("a stress component is two letters, force then bond component (xx, xy, ...): '" + c + "'");
+        probe.quantity = Probe::Quantity::stress;
+        probe.component = component_index(comp, c.substr(0, 1), s.dim);
+        probe.stress_column = component_index(comp, c.substr(1, 1), s.dim);
+      } else {
+        probe.component = component_index(comp, c, s.dim);
+      }
+      if (p.has("reference")) {
+        if (stress) p.get("reference").fail("the analytic fields give displacements: a stress probe has no reference");
+        probe.reference = read_field(p.get("reference"), s.dim);
+      }
       if (p.has("reference_at")) read_reference_at(p.get("reference_at"), probe, s.dim);
       p.finish();
       s.probes.push_back(probe);
     }
   }
-  if (m.has("reference")) s.reference = read_field(m.get("reference"));
+  if (m.has("reference")) s.reference = read_field(m.get("reference"), s.dim);
   if (m.has("dynamics")) s.dynamics = read_dynamics(m.get("dynamics"), s.dim);
   // Without dynamics, damage breaks bonds between the Newton load steps (Simulation).
   if (m.has("damage")) {
@@ -521,6 +550,13 @@ Scene read(const YAML::Node& root, const std::string& file) {
   return s;
 }
 }  // namespace
+
+std::vector<double> Scene::particle_horizons() const {
+  std::vector<double> delta(particle_spacing.size());
+  for (std::size_t i = 0; i < delta.size(); ++i)
+    delta[i] = horizon_length > 0 ? horizon_length : horizon_ratio * particle_spacing[i];
+  return delta;
+}
 
 int Scene::material_index(const std::string& name) const {
   for (std::size_t i = 0; i < materials.size(); ++i)

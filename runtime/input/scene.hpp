@@ -86,13 +86,18 @@ struct OutputSpec {
   // influence function (and its field error). Empty: no smoothing.
   std::string smoothing_influence;
   std::vector<JContour> j_integral;  // static 2D runs: J on each contour (paper 004)
+  bool stress = false;  // the peridynamic stress field (paper 002 eq. 2.13, post/peridynamic_stress.hpp)
 };
 
 struct Probe {
   std::string name;
   Region region;
-  int component = 0;
-  std::optional<FieldSpec> reference;  // analytic field to compare the mean against
+  // What is averaged: a displacement component, or a component (row, column) of the
+  // peridynamic stress (post/peridynamic_stress.hpp; `quantity: stress`, `component: xy`).
+  enum class Quantity { displacement, stress } quantity = Quantity::displacement;
+  int component = 0;      // displacement component, or the stress row (force component)
+  int stress_column = 0;  // stress column (bond component)
+  std::optional<FieldSpec> reference;  // analytic field to compare the mean against (displacement only)
   // Where the reference is taken (docs/scene_format.md, `reference_at`): the region's
   // point (the paper's, default), an explicit point, or the mean over the particles.
   enum class ReferenceAt { region, point, particles } reference_at = ReferenceAt::region;
@@ -109,6 +114,7 @@ struct Scene {
   double perturbation = 0;         // fraction of h
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
+  bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
   std::vector<Shape> holes, inclusions;
   double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0
   double horizon_length = 0;
@@ -132,12 +138,20 @@ struct Scene {
   // domain.particles: the body read from a file (input/particle_domain.hpp), used by
   // discretize() instead of the box lattice.
   std::shared_ptr<const Particles> point_cloud;
+  // domain.blocks (input/block_domain.hpp): the lattice spacing of each particle of
+  // point_cloud; empty for a single lattice or a particle file.
+  std::vector<double> particle_spacing;
 
   double delta() const { return horizon_length > 0 ? horizon_length : horizon_ratio * h; }
+  // The horizon of each particle of a body of blocks (ratio times its spacing, or the
+  // one length); empty otherwise, when delta() is everyone's.
+  std::vector<double> particle_horizons() const;
   int material_index(const std::string& name) const;
 };
 
 struct YamlAt;
+// A point of the scene: exactly dim numbers (SceneError naming the key otherwise).
+Point to_point(const YamlAt& at, int dim);
 // A region map (side / box / outside / collar / all); used by the section readers.
 Region read_region(const YamlAt& at, int dim);
 

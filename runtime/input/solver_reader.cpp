@@ -35,6 +35,13 @@ SolverSpec read_solver(const YamlAt& at) {
                                               "bicgstab: ilut; matrix_free: short_horizon or diagonal)",
                                               name_of(s.preconditioner), name_of(s.linear)));
   s.nonlinear = enum_choice(sv, "nonlinear", NonlinearMethod::newton);
+  s.backend = enum_choice(sv, "backend", Backend::serial);
+  s.petsc_options = sv.text("petsc_options", "");
+  if (s.backend != Backend::petsc && sv.has("petsc_options"))
+    sv.get("petsc_options").fail("petsc_options needs backend: petsc");
+  if (s.backend == Backend::petsc && s.linear != LinearMethod::automatic)
+    sv.get("linear").fail("backend petsc chooses its Krylov method and preconditioner through petsc_options "
+                          "(-ksp_type, -pc_type); leave linear at auto");
   s.load_steps = sv.integer("load_steps", 1);
   if (s.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
   s.tolerance = sv.number("tolerance", 1e-10);

@@ -6,7 +6,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "discretize/compensation.hpp"
 #include "discretize/discretization.hpp"
+#include "discretize/lattice_blocks.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
@@ -35,7 +37,9 @@ Model build_model(const Scene& scene) {
   m.influence = abi::find_influence(scene.influence);
   if (!m.law || !m.influence) throw std::invalid_argument("unknown law or influence function");
   m.particles = discretize(scene);
-  m.bonds = find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight);
+  m.bonds = scene.particle_spacing.empty()
+                ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
+                : find_bonds_per_particle(m.particles, scene.particle_horizons(), m.influence->weight);  // domain.blocks
   m.bond_count = m.bonds.bond_count() / 2;
   std::vector<int> crossed;
   m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
@@ -52,6 +56,10 @@ Model build_model(const Scene& scene) {
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)
     m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
+  if (scene.compensation) {
+    const CompensationInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight};
+    apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
+  }
   if (is_obq(scene.quadrature)) {
     const std::optional<Box2> body = obq_cut_body(scene);
     m.collocation = std::make_unique<Collocation>(
@@ -63,7 +71,7 @@ Model build_model(const Scene& scene) {
 
 ProblemSize Model::size(const Scene& scene, double short_family_size) const {
   return {particles.size(), 2.0 * static_cast<double>(bond_count) / particles.size(), particles.dim,
-          scene.delta() / scene.h, short_family_size};
+          scene.delta() / scene.h, short_family_size, coupling_of_law(law->n_states) == Coupling::pairwise};
 }
 
 AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads) {

@@ -25,6 +25,7 @@ std::string csv_document(const Particles& P, std::span<const double> u, std::spa
     for (int c = 0; c < f.components; ++c) {
       if (f.components == 1) fmt::format_to(out, ",{}", f.name);
       else if (f.components == d) fmt::format_to(out, ",{}_{}", f.name, axis[c]);
+      else if (f.components == d * d) fmt::format_to(out, ",{}_{}{}", f.name, axis[c / d], axis[c % d]);  // tensor, row-major
       else fmt::format_to(out, ",{}_{}", f.name, c);
     }
   b.push_back('\n');

@@ -26,6 +26,7 @@
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
+#include "post/peridynamic_stress.hpp"
 #include "run/constraints.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
@@ -44,11 +45,9 @@ SeriesRow DynamicSimulation::make_row(int step, double t, double residual_ratio)
   if (model_.assembler->has_energy()) r.strain = model_.assembler->strain_energy(u_.data());
   r.broken_bonds = broken_bond_count(model_.bonds);
   r.residual_ratio = residual_ratio;
-  for (std::size_t k = 0; k < probe_ids_.size(); ++k) {
-    double s = 0;
-    for (int p : probe_ids_[k]) s += u_[static_cast<std::size_t>(p) * model_.particles.dim + scene_.probes[k].component];
-    r.probes.push_back(s / static_cast<double>(probe_ids_[k].size()));
-  }
+  const std::vector<double> stress = stress_field();
+  for (std::size_t k = 0; k < probe_ids_.size(); ++k)
+    r.probes.push_back(probe_mean(scene_.probes[k], probe_ids_[k], model_.particles.dim, u_, &stress));
   return r;
 }
 
@@ -139,7 +138,12 @@ std::vector<OutputField> DynamicSimulation::output_fields() const {
   fields.push_back({"material", 1, std::vector<double>(model_.particles.material.begin(), model_.particles.material.end())});
   if (damage_ || !model_.assembler->intact()) fields.push_back({"damage", 1, particle_damage(model_.bonds)});
   append_law_outputs(*model_.assembler, model_.particles, u_, fields);
+  if (scene_.output.stress) fields.push_back({"stress", model_.particles.dim * model_.particles.dim, stress_field()});
   return fields;
+}
+
+std::vector<double> DynamicSimulation::stress_field() const {
+  return wants_stress(scene_) ? peridynamic_stress(*model_.assembler, u_.data()) : std::vector<double>{};
 }
 
 void DynamicSimulation::write_snapshot(int step, double t) {

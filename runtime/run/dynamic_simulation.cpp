@@ -141,7 +141,10 @@ void DynamicSimulation::apply_initial_conditions() {
         shape = std::exp(-0.5 * z * z);
       }
       for (int c = 0; c < d; ++c) {
-        u_[static_cast<std::size_t>(p) * d + c] = shape * ic.displacement[c];
+        double linear = 0;  // gradient (x - origin), zero without a gradient
+        for (int j = 0; ic.has_gradient && j < d; ++j)
+          linear += ic.gradient[c][j] * (model_.particles.position(p)[j] - ic.origin[j]);
+        u_[static_cast<std::size_t>(p) * d + c] = shape * ic.displacement[c] + linear;
         if (!v_.empty()) v_[static_cast<std::size_t>(p) * d + c] = shape * ic.velocity[c];
       }
     }

@@ -71,6 +71,8 @@ class DynamicSimulation {
   void save_checkpoint(int step, const std::vector<double>& scalars);
   void write_snapshot(int step, double t);
   std::vector<OutputField> output_fields() const;
+  // The peridynamic stress at u_ when the scene asks for it (wants_stress), else empty.
+  std::vector<double> stress_field() const;
   void write_results();
   RunSummary run_explicit(bool write, int stop_after);
   RunSummary run_relaxation(bool write, int stop_after);

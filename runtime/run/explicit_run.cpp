@@ -103,7 +103,8 @@ RunSummary DynamicSimulation::run_explicit(bool write, int stop_after) {
   rep.external_work = work.value();
   rep.bonds_broken = broken_bond_count(model_.bonds) - broken_start;
   summary_.broken_bonds = static_cast<int>(broken_bond_count(model_.bonds));
-  summary_.probes = evaluate_probes(scene_, model_.particles, probe_ids_, u_);
+  const std::vector<double> stress = stress_field();
+  summary_.probes = evaluate_probes(scene_, model_.particles, probe_ids_, u_, &stress);
   summary_.solve_seconds = seconds_since(t0);
   if (write) write_results();
   log_(summary_.text());

@@ -113,7 +113,8 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   rep.bonds_broken = broken_bond_count(model_.bonds) - broken_start;
   summary_.broken_bonds = static_cast<int>(broken_bond_count(model_.bonds));
   summary_.newton.converged = rep.converged;
-  summary_.probes = evaluate_probes(scene_, model_.particles, probe_ids_, u_);
+  const std::vector<double> stress = stress_field();
+  summary_.probes = evaluate_probes(scene_, model_.particles, probe_ids_, u_, &stress);
   summary_.solve_seconds = seconds_since(t0);
   log_(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
   if (write) write_results();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "discretize/discretization.hpp"
 #include "post/probe_reference.hpp"
@@ -23,8 +24,28 @@ std::vector<std::vector<int>> probe_particles(const Scene& scene, const Particle
   return ids;
 }
 
+bool wants_stress(const Scene& scene) {
+  return scene.output.stress || std::any_of(scene.probes.begin(), scene.probes.end(), [](const Probe& p) {
+           return p.quantity == Probe::Quantity::stress;
+         });
+}
+
+double probe_mean(const Probe& probe, const std::vector<int>& ids, int dim, const std::vector<double>& u,
+                  const std::vector<double>* stress) {
+  double sum = 0;
+  if (probe.quantity == Probe::Quantity::stress) {
+    if (stress == nullptr) throw std::logic_error(probe.where + ": a stress probe evaluated without the stress field");
+    const std::size_t dd = static_cast<std::size_t>(dim) * dim, at = static_cast<std::size_t>(probe.component) * dim + probe.stress_column;
+    for (int p : ids) sum += (*stress)[static_cast<std::size_t>(p) * dd + at];
+  } else {
+    for (int p : ids) sum += u[static_cast<std::size_t>(p) * dim + probe.component];
+  }
+  return sum / static_cast<double>(ids.size());
+}
+
 std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
-                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u) {
+                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u,
+                                         const std::vector<double>* stress) {
   std::vector<ProbeResult> out;
   for (std::size_t k = 0; k < scene.probes.size(); ++k) {
     const Probe& pr = scene.probes[k];
@@ -33,8 +54,7 @@ std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& pa
     r.particles = static_cast<int>(ids[k].size());
     std::unique_ptr<AnalyticField> field;
     if (pr.reference) field = std::make_unique<AnalyticField>(*pr.reference, scene.materials[0].elastic);
-    for (int p : ids[k]) r.value += u[static_cast<std::size_t>(p) * particles.dim + pr.component];
-    r.value /= static_cast<double>(ids[k].size());
+    r.value = probe_mean(pr, ids[k], particles.dim, u, stress);
     // Where the analytic value is taken: probes[i].reference_at (post/probe_reference.hpp).
     if (field) r.reference = probe_reference(pr, *field, ids[k], particles, scene);
     r.has_reference = static_cast<bool>(field);

@@ -17,10 +17,18 @@ namespace pd {
 // the probe whose region holds no particle.
 std::vector<std::vector<int>> probe_particles(const Scene& scene, const Particles& particles);
 
-// Each probe's mean displacement component over its particles, and with a reference
-// the mean of the analytic field over the same particles and the difference.
+// Each probe's mean displacement (or stress) component over its particles, and with a
+// reference the mean of the analytic field over the same particles and the difference.
+// `stress` ([n*dim*dim], peridynamic_stress) is needed when a probe asks for stress
+// (std::logic_error otherwise); wants_stress says when to compute it.
 std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
-                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u);
+                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u,
+                                         const std::vector<double>* stress = nullptr);
+// The mean of probe k's quantity over its particles.
+double probe_mean(const Probe& probe, const std::vector<int>& ids, int dim, const std::vector<double>& u,
+                  const std::vector<double>* stress);
+// True when output.stress is on or a probe averages a stress component.
+bool wants_stress(const Scene& scene);
 
 // Paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2 (the plain sum when the
 // reference is zero everywhere).

@@ -19,12 +19,14 @@
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
 #include "damage/critical_stretch.hpp"
+#include "post/peridynamic_stress.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
 #include "model/model.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
+#include "solve/distributed_backend.hpp"
 #include "solve/stopwatch.hpp"
 #include "solve/solver_plan.hpp"
 
@@ -47,7 +49,8 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
       plan_needs_short_family_size(scene_.solver) ? mean_short_family_size(model_.bonds, short_delta, influence->weight) : -1;
   plan_ = plan_solver(scene_.solver, model_.size(scene_, short_family));
   summary_.solver_path = plan_.reason;
-  if (plan_.short_horizon_preconditioner()) {
+  // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
+  if (plan_.short_horizon_preconditioner() && !(plan_.backend == Backend::petsc && short_delta >= scene_.delta())) {
     // The preconditioner is the same law's stiffness on a horizon of ratio h: far
     // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
     short_bonds_ = find_bonds(model_.particles, short_delta, influence->weight);
@@ -160,7 +163,12 @@ RunSummary Simulation::run(bool write) {
       settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
       settings.max_resolves = scene_.damage->max_resolves;
     }
-    summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
+    if (plan_.backend == Backend::petsc) {
+      const FamilyAssembler* pc = approximation_ ? approximation_.get() : model_.assembler.get();
+      summary_.newton = solve_distributed({model_.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log_);
+    } else {
+      summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
+    }
   } else {
     summary_.newton.converged = true;
     summary_.newton.unknowns = dofs.free_count();
@@ -177,7 +185,8 @@ RunSummary Simulation::run(bool write) {
     if (!std::isfinite(u[i]))
       throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / model_.particles.dim, summary_.law));
   u_.assign(u.data(), u.data() + u.size());
-  summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_);
+  if (wants_stress(scene_)) stress_ = peridynamic_stress(*model_.assembler, u_.data());
+  summary_.probes = evaluate_probes(scene_, model_.particles, probe_particles(scene_, model_.particles), u_, &stress_);
   log_zero_energy_content(model_.particles, model_.bonds, u_, summary_.law, log_);
   if (scene_.reference) {
     summary_.has_field_error = true;
@@ -225,6 +234,7 @@ void Simulation::write_outputs() {
   fields.push_back({"internal_force", d, force});
   if (!u_smooth_.empty()) fields.push_back({"smoothed_displacement", d, u_smooth_});
   append_law_outputs(*model_.assembler, model_.particles, u_, fields);
+  if (scene_.output.stress) fields.push_back({"stress", d * d, stress_});
   const std::string dir = scene_.output.directory;
   // The files form one result: when a signal stops the writing half-way, the files this
   // run already renamed into place go too (a result without its summary is partial).

@@ -59,6 +59,7 @@ class Simulation {
   std::unique_ptr<CriticalStretchDamage> damage_, short_damage_;
   long long after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs);
   std::vector<double> u_, u_smooth_;
+  std::vector<double> stress_;  // peridynamic stress [n*dim*dim], when wants_stress(scene)
   RunSummary summary_;
 };
 

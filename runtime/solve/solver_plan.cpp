@@ -10,17 +10,28 @@
 
 namespace pd {
 
-std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim) {
-  const double rows_per_particle = std::pow(2.0, dim) * mean_family_size + 1.0;
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim, bool pairwise) {
+  const double rows_per_particle = (pairwise ? 1.0 : std::pow(2.0, dim)) * mean_family_size + 1.0;
   return static_cast<std::int64_t>(std::llround(particles * rows_per_particle * dim * dim));
 }
 
 bool plan_needs_short_family_size(const SolverSpec& spec) {
-  return spec.linear == LinearMethod::automatic && spec.preconditioner == Preconditioner::automatic;
+  return spec.backend == Backend::serial && spec.linear == LinearMethod::automatic &&
+         spec.preconditioner == Preconditioner::automatic;
 }
 
 SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
   SolverPlan plan{spec.nonlinear, spec.linear, spec.preconditioner, {}};
+  if (spec.backend == Backend::petsc) {  // PETSc decides the rest (petsc_options)
+    plan.backend = Backend::petsc;
+    plan.linear = LinearMethod::matrix_free;
+    plan.preconditioner = Preconditioner::short_horizon;
+    const double ratio = std::min(size.delta_over_h, spec.preconditioner_ratio);
+    plan.reason = fmt::format("PETSc: SNES Newton, Krylov on the generated tangent-vector product, the preconditioner "
+                              "(default GAMG) on the stiffness at delta/h = {:.3g}{}",
+                              ratio, spec.petsc_options.empty() ? "" : "; options " + spec.petsc_options);
+    return plan;
+  }
   if (spec.linear != LinearMethod::automatic) {
     plan.reason = fmt::format("linear: {} (scene)", name_of(spec.linear));
     return plan;
@@ -29,7 +40,7 @@ SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
     plan.reason = fmt::format("assembled tangent (the scene's preconditioner {})", name_of(spec.preconditioner));
     return plan;
   }
-  const std::int64_t k_estimate = estimated_tangent_nonzeros(size.particles, size.mean_family_size, size.dim);
+  const std::int64_t k_estimate = estimated_tangent_nonzeros(size.particles, size.mean_family_size, size.dim, size.pairwise);
   if (k_estimate <= spec.direct_max_nonzeros) {
     plan.reason = fmt::format("assembled tangent: about {:.3g} nonzeros, within direct_max_nonzeros {:.3g}",
                               static_cast<double>(k_estimate), static_cast<double>(spec.direct_max_nonzeros));
@@ -41,7 +52,7 @@ SolverPlan plan_solver(const SolverSpec& spec, const ProblemSize& size) {
   const double short_family = size.short_family_size >= 0
                                   ? size.short_family_size
                                   : size.mean_family_size * std::pow(short_ratio / size.delta_over_h, size.dim);
-  const std::int64_t p_estimate = estimated_tangent_nonzeros(size.particles, short_family, size.dim);
+  const std::int64_t p_estimate = estimated_tangent_nonzeros(size.particles, short_family, size.dim, size.pairwise);
   const std::string over = fmt::format("assembled tangent would have about {:.3g} nonzeros (> direct_max_nonzeros {:.3g})",
                                        static_cast<double>(k_estimate), static_cast<double>(spec.direct_max_nonzeros));
   plan.linear = LinearMethod::matrix_free;

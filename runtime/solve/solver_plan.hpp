@@ -12,10 +12,12 @@
 
 namespace pd {
 
-// Nonzeros of the assembled tangent, estimated from the mean family size: every
-// family couples all its particles (two-horizon reach), so a particle's row holds
-// about the particles within 2 delta, 2^dim L_mean + 1 of them, each a dim x dim block.
-std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim);
+// Nonzeros of the assembled tangent, estimated from the mean family size. A law with
+// states couples all the particles of a family (two-horizon reach), so a particle's row
+// holds about the particles within 2 delta, 2^dim L_mean + 1 of them, each a dim x dim
+// block; a pairwise law (no states, sparsity_pattern.hpp) only its own family's
+// L_mean + 1.
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim, bool pairwise = false);
 
 // What plan_solver needs to know of the model.
 struct ProblemSize {
@@ -26,6 +28,7 @@ struct ProblemSize {
   // The preconditioner's mean family size (mean_short_family_size); negative: scaled
   // from mean_family_size by the horizons' volume ratio.
   double short_family_size = -1;
+  bool pairwise = false;  // the law has no states: one-horizon pattern (Coupling::pairwise)
 };
 
 struct SolverPlan {
@@ -35,6 +38,10 @@ struct SolverPlan {
   LinearMethod linear = LinearMethod::automatic;
   Preconditioner preconditioner = Preconditioner::automatic;
   std::string reason;  // one line for the log and the summary ("solver path")
+  // petsc: SNES/KSP/PC over the MPI processes (solve/distributed_backend.hpp); matrix-free
+  // here too (the tangent is a shell matrix), with an assembled preconditioning matrix
+  // on the horizon min(delta, preconditioner_ratio h).
+  Backend backend = Backend::serial;
   bool matrix_free() const { return linear == LinearMethod::matrix_free; }
   // Matrix-free, preconditioned by the factorised stiffness of a shorter horizon.
   bool short_horizon_preconditioner() const { return matrix_free() && preconditioner != Preconditioner::diagonal; }

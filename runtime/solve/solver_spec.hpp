@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <string_view>
 
 namespace pd {
@@ -14,6 +15,9 @@ enum class NonlinearMethod { newton };
 enum class LinearMethod { automatic, cholmod, umfpack, cg, bicgstab, matrix_free };
 // automatic: the method's default (cg: ic; bicgstab: ilut; matrix_free: short_horizon).
 enum class Preconditioner { automatic, ic, diagonal, ilut, short_horizon };
+// serial: Eigen/SuiteSparse in this process. petsc: PETSc over the MPI processes the run
+// was started on (`mpirun -n N pd run`), solve/distributed_backend.hpp.
+enum class Backend { serial, petsc };
 
 // The scene's words for each value (and the ones the log and summary.json print).
 constexpr std::string_view name_of(NonlinearMethod) { return "newton"; }
@@ -38,6 +42,7 @@ constexpr std::string_view name_of(Preconditioner p) {
   }
   return "?";
 }
+constexpr std::string_view name_of(Backend b) { return b == Backend::petsc ? "petsc" : "serial"; }
 // Every value, in the order the scene reader lists them in its error messages.
 template <class E> struct all_values;
 template <> struct all_values<NonlinearMethod> {
@@ -47,12 +52,17 @@ template <> struct all_values<LinearMethod> {
   static constexpr std::array values{LinearMethod::automatic, LinearMethod::cholmod,  LinearMethod::umfpack,
                                      LinearMethod::cg,        LinearMethod::bicgstab, LinearMethod::matrix_free};
 };
+template <> struct all_values<Backend> {
+  static constexpr std::array values{Backend::serial, Backend::petsc};
+};
 template <> struct all_values<Preconditioner> {
   static constexpr std::array values{Preconditioner::automatic, Preconditioner::ic, Preconditioner::diagonal,
                                      Preconditioner::ilut, Preconditioner::short_horizon};
 };
 
 struct SolverSpec {
+  Backend backend = Backend::serial;
+  std::string petsc_options;  // backend petsc: PETSc options ("-ksp_monitor -pc_type hypre")
   LinearMethod linear = LinearMethod::automatic;
   Preconditioner preconditioner = Preconditioner::automatic;
   double preconditioner_ratio = 2.0;  // matrix_free short_horizon: delta/h of the preconditioning stiffness

@@ -57,13 +57,17 @@ struct TestFamily {
     v.residual(view(), f.data());
     return f;
   }
-  // d f / d y formed from the kernel's tangent factors.
-  std::vector<double> tangent_matrix(const abi::KernelVariant& v) const {
+  // d f / d y formed from the kernel's tangent factors by the variant's form kernel (the
+  // generic forming when it has none, or when `generic`).
+  std::vector<double> tangent_matrix(const abi::KernelVariant& v, bool generic = false) const {
     TangentScratch scratch;
     const auto fac = scratch.view(dim, law->n_states, bonds());
     v.tangent(view(), nullptr, fac);
     std::vector<double> M(static_cast<std::size_t>(dofs() * dofs()));
-    form_local_matrix(dim, law->n_states, view(), fac, M.data());
+    if (generic)
+      form_local_matrix(dim, law->n_states, view(), fac, M.data());
+    else
+      form_local_matrix(v, dim, law->n_states, view(), fac, M.data());
     return M;
   }
   // Central differences of the residual in y, column by column.

@@ -3,6 +3,7 @@
 // in one colour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -46,7 +47,7 @@ void check_pattern(int dim, int nx, int ny, int nz, double ratio) {
         const int qb = b == 0 ? p : B.neighbor[B.offsets[p] + b - 1];
         for (int r = 0; r < dim; ++r)
           for (int q = 0; q < dim; ++q) {
-            const int s = slots[a * (L + 1) + b] + q * pat.column_stride(qb) + r;
+            const int s = slots[b * (L + 1) + a] + q * pat.column_stride(qb) + r;  // column-major slots
             const int col = qb * dim + q;
             ASSERT_GE(s, K.outerIndexPtr()[col]);
             ASSERT_LT(s, K.outerIndexPtr()[col + 1]);
@@ -71,13 +72,14 @@ TEST(FamilyColouring, FamiliesOfOneColourShareNoParticle) {
   const auto body = pd::test::make_grid(2, 23, 17, 1, 3.0, 0.2);
   const auto& B = body.bonds;
   for (int chunk : {0, 1, 5, 40}) {
-    const pd::FamilyColouring col(B, chunk);
+    const pd::FamilyColouring col(body.particles, B, chunk);
     std::vector<int> seen_families(static_cast<std::size_t>(B.particle_count()), 0);
     for (int c = 0; c < col.colours(); ++c) {
       std::vector<int> owner(static_cast<std::size_t>(B.particle_count()), -1);
       for (int i = col.colour_start(c); i < col.colour_start(c + 1); ++i) {
         const int ch = col.chunk_id(i);
-        for (int p = col.chunk_begin(ch); p < col.chunk_end(ch); ++p) {
+        for (int j = col.chunk_begin(ch); j < col.chunk_end(ch); ++j) {
+          const int p = col.family(j);
           ++seen_families[p];
           auto claim = [&](int q) {
             ASSERT_TRUE(owner[q] == -1 || owner[q] == ch) << "particle " << q << " in two chunks of colour " << c;
@@ -90,5 +92,20 @@ TEST(FamilyColouring, FamiliesOfOneColourShareNoParticle) {
     }
     for (int v : seen_families) ASSERT_EQ(v, 1) << "every family exactly once";
     EXPECT_LT(col.colours(), B.particle_count()) << "colouring should group chunks";
+  }
+}
+
+TEST(FamilyColouring, DefaultChunksAreTilesTwoHorizonsWide) {
+  const auto body = pd::test::make_grid(2, 30, 24, 1, 2.5, 0.2);  // h = 0.1: tiles 0.5 wide
+  const pd::FamilyColouring col(body.particles, body.bonds);
+  EXPECT_GT(col.chunks(), 12);
+  for (int ch = 0; ch < col.chunks(); ++ch) {
+    double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
+    for (int j = col.chunk_begin(ch); j < col.chunk_end(ch); ++j)
+      for (int c = 0; c < 2; ++c) {
+        const double x = body.particles.x[col.family(j) * 2 + c];
+        lo[c] = std::min(lo[c], x), hi[c] = std::max(hi[c], x);
+      }
+    for (int c = 0; c < 2; ++c) EXPECT_LE(hi[c] - lo[c], 2 * 0.25 + 1e-12) << "chunk " << ch;
   }
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pdgen/form_kernel.hpp"
 #include "pdgen/kernel_program.hpp"
 #include "pdgen/law.hpp"
 
@@ -15,6 +16,7 @@ struct LawKernelSet {
   int n_states = 0;  // scalar states the force state depends on (the tangent's s index)
   std::vector<std::string> moment_names, state_names;
   KernelProgram moments, residual, tangent, jvp;
+  FactorStructure factor_structure;  // which tangent factor entries the tangent kernel can make nonzero
   bool has_energy = false;
   KernelProgram energy;
   bool has_outputs = false;

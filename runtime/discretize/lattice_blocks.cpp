@@ -1,0 +1,139 @@
+// Non-uniform lattices and families with a horizon per particle (lattice_blocks.hpp).
+#include "discretize/lattice_blocks.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pd {
+
+namespace {
+// Cells along an axis of a block: its side over its spacing, which must be a whole number.
+int cells_along(const LatticeBlock& b, int c) {
+  const double side = b.hi[c] - b.lo[c];
+  const double n = std::round(side / b.spacing);
+  if (!(side > 0) || n < 1 || std::abs(n * b.spacing - side) > 1e-9 * side)
+    throw std::invalid_argument(fmt::format("{}: the side {} along {} is not a whole number of spacings {} "
+                                            "(each block is filled with whole cells)",
+                                            b.where, side, "xyz"[c], b.spacing));
+  return static_cast<int>(n);
+}
+
+bool interiors_overlap(const LatticeBlock& a, const LatticeBlock& b, int dim) {
+  for (int c = 0; c < dim; ++c) {
+    const double tol = 1e-9 * std::min(a.spacing, b.spacing);
+    if (a.hi[c] <= b.lo[c] + tol || b.hi[c] <= a.lo[c] + tol) return false;
+  }
+  return true;
+}
+}  // namespace
+
+Particles lattice_blocks(const std::vector<LatticeBlock>& blocks, int dim, std::vector<double>& spacing) {
+  Particles p;
+  p.dim = dim;
+  spacing.clear();
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (interiors_overlap(blocks[i], blocks[j], dim))
+        throw std::invalid_argument(fmt::format("{}: overlaps {}", blocks[i].where, blocks[j].where));
+  for (const LatticeBlock& b : blocks) {
+    if (!(b.spacing > 0)) throw std::invalid_argument(b.where + ": spacing must be positive");
+    int n[3] = {1, 1, 1};
+    for (int c = 0; c < dim; ++c) n[c] = cells_along(b, c);
+    const double volume = std::pow(b.spacing, dim);
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          const int idx[3] = {i, j, k};
+          for (int c = 0; c < dim; ++c) p.x.push_back(b.lo[c] + (idx[c] + 0.5) * b.spacing);
+          p.volume.push_back(volume);
+          p.material.push_back(0);
+          spacing.push_back(b.spacing);
+        }
+  }
+  return p;
+}
+
+Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& delta,
+                              double (*influence)(double, double)) {
+  const int d = p.dim, n = p.size();
+  if (static_cast<int>(delta.size()) != n) throw std::invalid_argument("find_bonds_per_particle: one delta per particle");
+  if (n == 0) return Bonds{d, {0}, {}, {}, {}, {}, {}, {}, {}};
+  // A cell list with cells a little larger than the smallest horizon; a particle scans as
+  // many cells each way as its own horizon needs (a fine particle does not scan a coarse
+  // one's reach). The 1e-9 margin keeps a neighbour exactly delta away (integer delta/h on
+  // a lattice) inside the scanned cells whatever the rounding of (x - lo) / size; with one
+  // horizon for all, span = 1: the 3^d cells of the uniform search.
+  const double size = *std::min_element(delta.begin(), delta.end()) * (1 + 1e-9);
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int c = 0; c < d; ++c) {
+    lo[c] = hi[c] = p.x[c];
+    for (int i = 0; i < n; ++i) lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
+  }
+  int dims[3] = {1, 1, 1};
+  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / size) + 1);
+  auto cell_of = [&](const double* x, int* ci) {
+    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
+  };
+  const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
+  std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));
+  std::vector<std::size_t> cell_index(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    int ci[3];
+    cell_of(p.position(i), ci);
+    cell_index[i] = (static_cast<std::size_t>(ci[2]) * dims[1] + ci[1]) * dims[0] + ci[0];
+    ++cell_start[cell_index[i] + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
+  {
+    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
+    for (int i = 0; i < n; ++i) cell_items[fill[cell_index[i]]++] = i;
+  }
+  Bonds b;
+  b.dim = d;
+  b.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  b.delta = delta;
+  std::vector<int> found;
+  for (int i = 0; i < n; ++i) {
+    const double reach = delta[i] * (1 + 1e-12);  // a lattice site exactly delta away stays in
+    const int span = static_cast<int>(std::ceil(reach / size));
+    int ci[3];
+    cell_of(p.position(i), ci);
+    found.clear();
+    const int sz = d == 3 ? span : 0;
+    for (int dz = -sz; dz <= sz; ++dz)
+      for (int dy = -span; dy <= span; ++dy)
+        for (int dx = -span; dx <= span; ++dx) {
+          const int cx = ci[0] + dx, cy = ci[1] + dy, cz = ci[2] + dz;
+          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2]) continue;
+          const std::size_t cell = (static_cast<std::size_t>(cz) * dims[1] + cy) * dims[0] + cx;
+          for (int q = cell_start[cell]; q < cell_start[cell + 1]; ++q) {
+            const int j = cell_items[q];
+            if (j == i) continue;
+            double r2 = 0;
+            for (int c = 0; c < d; ++c) r2 += (p.x[j * d + c] - p.x[i * d + c]) * (p.x[j * d + c] - p.x[i * d + c]);
+            if (r2 <= reach * reach) found.push_back(j);
+          }
+        }
+    std::sort(found.begin(), found.end());
+    for (int j : found) {
+      double r2 = 0;
+      for (int c = 0; c < d; ++c) {
+        const double e = p.x[j * d + c] - p.x[i * d + c];
+        b.xi.push_back(e);
+        r2 += e * e;
+      }
+      const double r = std::sqrt(r2);
+      b.neighbor.push_back(j);
+      b.length.push_back(r);
+      b.w.push_back(influence(r, delta[i]));
+      b.alpha.push_back(1.0);
+    }
+    b.offsets[i + 1] = static_cast<int>(b.neighbor.size());
+  }
+  return b;
+}
+
+}  // namespace pd

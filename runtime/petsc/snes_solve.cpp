@@ -1,0 +1,195 @@
+// solve_distributed: SNES Newton with line search on F(x) = -r(x); the Jacobian a shell
+// applying the generated tangent-vector product, the preconditioning matrix the
+// assembled stiffness of problem.preconditioner; KSP CG (GMRES when not symmetric) with
+// PCGAMG and the rigid-body near null space. Any of it can be changed by PETSc options.
+#include <fmt/core.h>
+#include <petscsnes.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "petsc/distributed_body.hpp"
+#include "petsc/petsc_check.hpp"
+#include "petsc/snes_callbacks.hpp"
+#include "solve/distributed_backend.hpp"
+
+namespace pd {
+
+namespace {
+// The whole solution on every rank, in the model's order.
+void gather_all(DistributedBody& body, Vec x, Eigen::VectorXd& u) {
+  VecScatter scatter;
+  Vec all;
+  check(VecScatterCreateToAll(x, &scatter, &all), "VecScatterCreateToAll");
+  check(VecScatterBegin(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* a;
+  check(VecGetArrayRead(all, &a), "VecGetArrayRead");
+  const int d = body.dim();
+  const ParticleOrder& o = body.partition().order;
+  for (std::size_t k = 0; k < o.order.size(); ++k)
+    for (int c = 0; c < d; ++c) u[static_cast<Eigen::Index>(o.order[k]) * d + c] = a[k * d + c];
+  check(VecRestoreArrayRead(all, &a), "VecRestoreArrayRead");
+  VecScatterDestroy(&scatter);
+  VecDestroy(&all);
+}
+
+// The owned entries of u (model order) into x.
+void scatter_owned(const DistributedBody& body, const Eigen::VectorXd& u, Vec x) {
+  PetscScalar* a;
+  check(VecGetArray(x, &a), "VecGetArray");
+  const int d = body.dim();
+  for (int i = 0; i < body.partition().owned(); ++i)
+    for (int c = 0; c < d; ++c)
+      a[i * d + c] = u[static_cast<Eigen::Index>(body.partition().owned_particle(i)) * d + c];
+  check(VecRestoreArray(x, &a), "VecRestoreArray");
+}
+
+}  // namespace
+
+NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
+                               const std::function<void(const std::string&)>& log) {
+  if (!DistributedSession::current()) throw std::logic_error("solve_distributed: no DistributedSession");
+  const NewtonSettings& s = pb.settings;
+  const Particles& particles = *pb.tangent->inputs().particles;
+  const int d = particles.dim;
+  DistributedBody body(particles, *pb.tangent->inputs().bonds, PETSC_COMM_WORLD);
+  const Partition& part = body.partition();
+  NewtonResult result;
+  result.unknowns = pb.dofs->free_count();
+  {  // What the partition costs: the ghost layer is what every product sends and receives.
+    const int local[2] = {part.owned(), static_cast<int>(part.ghosts.size())};
+    int lo[2], hi[2];
+    MPI_Allreduce(local, lo, 2, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+    MPI_Allreduce(local, hi, 2, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+    if (part.rank == 0 && log)
+      log(fmt::format(
+          "  partition: {} rank(s), Morton order, {}..{} particles and {}..{} ghosts (one horizon) per rank; "
+          "at most {:.1f}% of a rank's particles are ghosts",
+          part.ranks, lo[0], hi[0], lo[1], hi[1], 100.0 * hi[1] / std::max(lo[0], 1)));
+  }
+
+  SnesContext c;
+  c.body = &body, c.problem = &pb, c.result = &result, c.log = &log, c.rank = part.rank,
+  c.steps = s.load_steps;
+  c.constrained.assign(static_cast<std::size_t>(particles.size()) * d, 0);
+  for (int dof : pb.dofs->constrained_dofs()) c.constrained[dof] = 1;
+  for (int i = 0; i < part.owned(); ++i)
+    for (int k = 0; k < d; ++k)
+      if (c.constrained[static_cast<std::size_t>(part.owned_particle(i)) * d + k]) {
+        c.constrained_local.push_back(static_cast<PetscInt>(i) * d + k);
+        c.constrained_rows.push_back(body.global_dof(part.owned_particle(i), k));
+      }
+
+  Vec x = body.create_vector(), r = body.create_vector();
+  Mat P = body.create_matrix(*pb.preconditioner->inputs().bonds), J;
+  const PetscInt m = static_cast<PetscInt>(part.owned()) * d;
+  check(MatCreateShell(PETSC_COMM_WORLD, m, m, PETSC_DETERMINE, PETSC_DETERMINE, &c, &J), "MatCreateShell");
+  check(MatShellSetOperation(J, MATOP_MULT, reinterpret_cast<void (*)(void)>(shell_mult)),
+        "MatShellSetOperation");
+  if (pb.symmetric) {
+    check(MatSetOption(J, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+    check(MatSetOption(P, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  }
+  {  // The Dirichlet scale from the reference stiffness's diagonal.
+    std::vector<double> zero(static_cast<std::size_t>(particles.size()) * d, 0.0);
+    body.assemble_matrix(*pb.preconditioner, zero, P);
+    Vec diag = body.create_vector();
+    PetscReal sum = 0;
+    PetscInt n = 0;
+    check(MatGetDiagonal(P, diag), "MatGetDiagonal");
+    check(VecNorm(diag, NORM_1, &sum), "VecNorm");
+    check(VecGetSize(diag, &n), "VecGetSize");
+    c.dirichlet_scale = sum > 0 ? sum / n : 1.0;
+    VecDestroy(&diag);
+  }
+  MatNullSpace rigid;
+  Vec coords = body.coordinates();
+  check(MatNullSpaceCreateRigidBody(coords, &rigid), "MatNullSpaceCreateRigidBody");
+  check(MatSetNearNullSpace(P, rigid), "MatSetNearNullSpace");
+
+  SNES snes;
+  KSP ksp;
+  PC pc;
+  check(SNESCreate(PETSC_COMM_WORLD, &snes), "SNESCreate");
+  check(SNESSetType(snes, SNESNEWTONLS), "SNESSetType");
+  check(SNESSetFunction(snes, r, form_function, &c), "SNESSetFunction");
+  check(SNESSetJacobian(snes, J, P, form_jacobian, &c), "SNESSetJacobian");
+  check(SNESMonitorSet(snes, monitor, &c, nullptr), "SNESMonitorSet");
+  check(SNESSetTolerances(snes, 0.0, s.relative_tolerance, s.increment_tolerance, s.max_iterations, -1),
+        "SNESSetTolerances");
+  check(SNESGetKSP(snes, &ksp), "SNESGetKSP");
+  check(KSPSetType(ksp, pb.symmetric ? KSPCG : KSPGMRES), "KSPSetType");
+  check(KSPSetTolerances(ksp, s.krylov_tolerance, PETSC_DEFAULT, PETSC_DEFAULT, s.krylov_max_iterations),
+        "KSPSetTolerances");
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCGAMG), "PCSetType");
+  if (s.adaptive_forcing) {
+    // Eisenstat-Walker forcing as the serial matrix-free path has it (their choice 2,
+    // gamma 0.9, exponent 2, at most max_forcing): loose linear solves far from the
+    // solution, tight near it. -snes_ksp_ew false turns it off (then krylov_tolerance).
+    check(SNESKSPSetUseEW(snes, PETSC_TRUE), "SNESKSPSetUseEW");
+    check(SNESKSPSetParametersEW(snes, 2, s.max_forcing, s.max_forcing, 0.9, 2.0, PETSC_DEFAULT, PETSC_DEFAULT),
+          "SNESKSPSetParametersEW");
+  }
+  check(SNESSetFromOptions(snes), "SNESSetFromOptions");  // the scene's and the command line's options win
+  {
+    KSPType kt;
+    PCType pt;
+    check(KSPGetType(ksp, &kt), "KSPGetType");
+    check(PCGetType(pc, &pt), "PCGetType");
+    int ranks = part.ranks;
+    result.linear_solver = fmt::format("PETSc {} + {}", kt, pt);
+    result.linear_choice = fmt::format(
+        "SNES newtonls on {} ranks, the generated tangent-vector product as a shell "
+        "matrix, the preconditioner assembled on {} bonds ({})",
+        ranks, pb.preconditioner->inputs().bonds->bond_count(),
+        pb.preconditioner == pb.tangent ? "the tangent's horizon" : "a shorter horizon");
+  }
+
+  Eigen::VectorXd target(u.size());
+  for (int step = 1; step <= s.load_steps && result.message.empty(); ++step) {
+    c.step = step, c.load = static_cast<double>(step) / s.load_steps, c.round = 0;
+    target = u;
+    pb.dofs->apply_prescribed(target, c.load);
+    c.target_full.assign(target.data(), target.data() + target.size());
+    for (;;) {
+      pb.dofs->apply_prescribed(u, c.load);
+      scatter_owned(body, u, x);
+      const PetscErrorCode solved = SNESSolve(snes, nullptr, x);
+      if (!c.error.empty()) throw std::runtime_error(c.error);
+      check(solved, "SNESSolve");
+      SNESConvergedReason reason;
+      check(SNESGetConvergedReason(snes, &reason), "SNESGetConvergedReason");
+      PetscInt lin = 0;
+      check(SNESGetLinearSolveIterations(snes, &lin), "SNESGetLinearSolveIterations");
+      gather_all(body, x, u);
+      if (reason <= 0) {
+        result.message = fmt::format("PETSc SNES did not converge at load {:.3g} (step {}/{}): {}", c.load,
+                                     step, s.load_steps, SNESConvergedReasons[reason]);
+        break;
+      }
+      if (!s.after_step) break;
+      const long long changes = s.after_step(step, c.load, u);
+      if (changes == 0) break;
+      if (++c.round > s.max_resolves) {
+        result.message = fmt::format("load step {}/{} still changing after {} re-solves", step, s.load_steps,
+                                     s.max_resolves);
+        break;
+      }
+      ++result.resolves;
+    }
+  }
+  result.converged = result.message.empty();
+  SNESDestroy(&snes);
+  MatNullSpaceDestroy(&rigid);
+  VecDestroy(&coords);
+  MatDestroy(&J);
+  MatDestroy(&P);
+  VecDestroy(&x);
+  VecDestroy(&r);
+  return result;
+}
+
+}  // namespace pd

@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""`mpirun -n 2 pd run` on a scene with solver.backend: petsc writes the files a serial run
+writes, with the same displacement (1e-8 relative) and the same summary keys; a scene
+on the serial backend under mpirun is refused with exit code 2.
+Usage: pd_run_mpi.py PD MPIEXEC SCENES_DIR WORK_DIR"""
+import csv, json, math, os, shutil, subprocess, sys
+
+pd, mpiexec, scenes, work = sys.argv[1:5]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
+text = open(os.path.join(scenes, "uniaxial.yaml")).read().replace("count: 20", "count: 12")
+serial_scene, petsc_scene = os.path.join(work, "serial.yaml"), os.path.join(work, "petsc.yaml")
+open(serial_scene, "w").write(text)
+open(petsc_scene, "w").write(text.replace("law: silling_plane_strain", "law: silling_plane_strain\nsolver: {backend: petsc}"))
+failures = []
+
+def run(cmd):
+    return subprocess.run(cmd, env=env, capture_output=True, text=True)
+
+def displacement(path):
+    rows = list(csv.DictReader(open(path)))
+    return [float(r[c]) for r in rows for c in ("u_x", "u_y")]
+
+s = run([pd, "run", serial_scene, "--out", os.path.join(work, "serial")])
+p = run([mpiexec, "-n", "2", "--oversubscribe", pd, "run", petsc_scene, "--out", os.path.join(work, "petsc"),
+         "--petsc-options=-ksp_converged_reason"])
+if s.returncode != 0 or p.returncode != 0:
+    sys.exit(f"runs failed: serial {s.returncode}, mpirun {p.returncode}\n{s.stderr}\n{p.stdout}\n{p.stderr}")
+files_s = sorted(os.listdir(os.path.join(work, "serial")))
+files_p = sorted(os.listdir(os.path.join(work, "petsc")))
+if files_s != files_p:
+    failures.append(f"files differ: serial {files_s}, petsc {files_p}")
+us, up = displacement(os.path.join(work, "serial", "result.csv")), displacement(os.path.join(work, "petsc", "result.csv"))
+norm = math.sqrt(sum(v * v for v in us))
+diff = math.sqrt(sum((a - b) ** 2 for a, b in zip(us, up)))
+if len(us) != len(up) or not norm > 0 or diff / norm > 1e-8:
+    failures.append(f"displacement differs: relative {diff / norm if norm else float('nan'):.3e}")
+js, jp = (json.load(open(os.path.join(work, d, "summary.json"))) for d in ("serial", "petsc"))
+if sorted(js) != sorted(jp):
+    failures.append(f"summary keys differ: {sorted(set(js) ^ set(jp))}")
+if p.stdout.count("PETSc backend on 2 MPI process(es)") != 1:
+    failures.append("the log should come once, from rank 0:\n" + p.stdout)
+if "Linear solve converged" not in p.stdout:
+    failures.append("--petsc-options did not reach PETSc (-ksp_converged_reason printed nothing)")
+r = run([mpiexec, "-n", "2", "--oversubscribe", pd, "run", serial_scene, "--out", os.path.join(work, "refused")])
+if r.returncode != 2 or "solver.backend is serial" not in r.stderr:
+    failures.append(f"serial scene under mpirun: exit {r.returncode}, stderr {r.stderr!r}")
+if failures:
+    sys.exit("\n".join(failures))
+print(f"mpirun -n 2 pd run: same files, displacement within {diff / norm:.2e} of the serial run")
