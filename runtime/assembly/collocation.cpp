@@ -49,11 +49,15 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
   }
 }
 
-Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description) {
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description,
+                                 const Box2* body) {
   const ReproducingSpace space = paper001_space(particles.dim);
-  CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space);
+  CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space, body);
   description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
                             space.name, space.terms.size());
+  if (body)
+    description += fmt::format("; families at the faces of [{:g}, {:g}] x [{:g}, {:g}] integrate over the cut ball",
+                               body->lo[0], body->hi[0], body->lo[1], body->hi[1]);
   if (w.volume_families > 0)
     description += fmt::format("; {} families not unisolvent keep the volume quadrature (particle {} first)",
                                w.volume_families, w.first_volume_family);

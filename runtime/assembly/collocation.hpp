@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "discretize/ball_box_moments.hpp"
 #include "particles.hpp"
 
 namespace pd {
@@ -42,7 +43,9 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
 
 // `domain.quadrature: obq`: OBQ weights for paper 001's space (obq_weights.hpp) on every
 // unisolvent family, the volume quadrature on the others (corners of the body), as
-// collocation data. `description` is set to one line for the run log.
-Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description);
+// collocation data. `description` is set to one line for the run log. `body` (a 2D box,
+// nullptr: none): families cut by its faces integrate over the cut ball (obq_weights.hpp).
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description,
+                                 const Box2* body = nullptr);
 
 }  // namespace pd

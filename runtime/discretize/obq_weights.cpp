@@ -21,14 +21,22 @@ std::string where(int dim, const double* center) {
 }  // namespace
 
 std::vector<double> obq_family_weights(const ReproducingSpace& space, const double* xi, int n, double delta,
-                                       int particle, const double* center) {
+                                       int particle, const double* center, const Box2* body) {
   const int dim = space.dim;
   const int m = static_cast<int>(space.terms.size());
   // Scaled bonds xi/delta keep A of order one at any h: sum_j f(xi_j/delta) omega_j
   // = delta^d I_unit[f] for a monomial f (the delta^(|b|-s) of both sides cancels).
   Eigen::MatrixXd At(n, m);  // A^T: row j is bond j
   Eigen::VectorXd b(m);
-  for (int t = 0; t < m; ++t) b[t] = std::pow(delta, dim) * ball_moment(dim, space.terms[t], 1.0);
+  // Cut ball: the moments of the unit ball about center/delta in the body scaled by 1/delta.
+  const bool cut = body && dim == 2 && !ball_inside_box(delta, center, *body);
+  const double unit_center[2] = {cut ? center[0] / delta : 0, cut ? center[1] / delta : 0};
+  Box2 unit_body;
+  if (cut)
+    for (int a = 0; a < 2; ++a) unit_body.lo[a] = body->lo[a] / delta, unit_body.hi[a] = body->hi[a] / delta;
+  for (int t = 0; t < m; ++t)
+    b[t] = std::pow(delta, dim) * (cut ? ball_box_moment_2d(space.terms[t], 1.0, unit_center, unit_body)
+                                       : ball_moment(dim, space.terms[t], 1.0));
   for (int j = 0; j < n; ++j) {
     double scaled[3] = {0, 0, 0};
     double r2 = 0;
@@ -62,7 +70,7 @@ namespace {
 // unisolvent, keeps its neighbours' volumes; without `fall_back` the lowest
 // non-unisolvent particle's error is rethrown (the same at any thread count).
 CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
-                            const std::vector<char>& needed, bool fall_back) {
+                            const std::vector<char>& needed, bool fall_back, const Box2* body) {
   if (space.dim != bonds.dim) throw std::invalid_argument("obq_weights: the space and the bonds differ in dimension");
   if (!needed.empty() && static_cast<int>(needed.size()) != bonds.particle_count())
     throw std::invalid_argument("obq_weights: one `needed` flag per particle expected");
@@ -78,7 +86,7 @@ CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, cons
     if (!use_volume) try {
         const std::vector<double> w =
             obq_family_weights(space, bonds.xi.data() + static_cast<std::ptrdiff_t>(begin) * bonds.dim,
-                               bonds.family_size(p), bonds.delta[p], p, particles.position(p));
+                               bonds.family_size(p), bonds.delta[p], p, particles.position(p), body);
         std::copy(w.begin(), w.end(), out.weights.begin() + begin);
       } catch (const NotUnisolventError& e) {
         volume[p] = 1;
@@ -103,11 +111,12 @@ CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, cons
 
 std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
                                 const std::vector<char>& needed) {
-  return weigh_families(particles, bonds, space, needed, false).weights;
+  return weigh_families(particles, bonds, space, needed, false, nullptr).weights;
 }
 
-CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space) {
-  return weigh_families(particles, bonds, space, {}, true);
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                          const Box2* body) {
+  return weigh_families(particles, bonds, space, {}, true, body);
 }
 
 }  // namespace pd

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "discretize/ball_box_moments.hpp"
 #include "discretize/reproducing_space.hpp"
 #include "particles.hpp"
 
@@ -28,8 +29,11 @@ class NotUnisolventError : public std::runtime_error {
 
 // The weights of one family of n bonds xi[n*dim] with horizon delta (bonds may reach
 // delta). `particle` and `center` (its position, dim values) only name it in errors.
+// `body` (2D only; nullptr: the whole ball): a family whose ball the body's faces cut
+// integrates over B_delta ∩ body instead (ball_box_moments.hpp), the region its bonds
+// cover near a free surface.
 std::vector<double> obq_family_weights(const ReproducingSpace& space, const double* xi, int n, double delta,
-                                       int particle, const double* center);
+                                       int particle, const double* center, const Box2* body = nullptr);
 
 // The weights of every family, one per bond in the compressed rows of `bonds`. Every bond
 // counts whatever its alpha: paper 001 (§4) computes the weights on the perturbed points
@@ -50,6 +54,7 @@ struct CloudWeights {
   int volume_families = 0;       // families that kept the volume quadrature
   int first_volume_family = -1;  // the lowest such particle, -1 if none
 };
-CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space);
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                          const Box2* body = nullptr);
 
 }  // namespace pd

@@ -70,7 +70,8 @@ double cell_distance(const double* c, int dim, double h) {
 double quadrature_reach(Quadrature q, double delta, double h, int dim) {
   switch (q) {
     case Quadrature::Volume:
-    case Quadrature::Obq: return delta;
+    case Quadrature::Obq:
+    case Quadrature::ObqCut: return delta;
     case Quadrature::PartialLinear: return delta + 0.5 * h;
     case Quadrature::PartialExact: return delta + 0.5 * h * std::sqrt(static_cast<double>(dim));
   }
@@ -83,7 +84,8 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
   const double r = std::sqrt(r2);
   switch (q) {
     case Quadrature::Volume:
-    case Quadrature::Obq: return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
+    case Quadrature::Obq:
+    case Quadrature::ObqCut: return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
     case Quadrature::PartialLinear: return linear_volume_factor(r, delta, h);
     case Quadrature::PartialExact:
       if (cell_distance(xi, dim, h) >= delta) return 0.0;
@@ -97,7 +99,7 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
 Bonds find_quadrature_bonds(const Particles& p, double delta, double h, Quadrature q,
                             double (*influence)(double, double)) {
   // OBQ weights replace the volumes of the centre-inclusion bonds (assembly/collocation.hpp).
-  if (q == Quadrature::Volume || q == Quadrature::Obq) return find_bonds(p, delta, influence);
+  if (q == Quadrature::Volume || is_obq(q)) return find_bonds(p, delta, influence);
   const int d = p.dim;
   Bonds all = find_bonds(p, quadrature_reach(q, delta, h, d), influence);
   Bonds b;

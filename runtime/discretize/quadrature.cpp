@@ -11,6 +11,7 @@ constexpr std::pair<Quadrature, std::string_view> kNames[] = {
     {Quadrature::PartialLinear, "partial_linear"},
     {Quadrature::PartialExact, "partial_exact"},
     {Quadrature::Obq, "obq"},
+    {Quadrature::ObqCut, "obq_cut"},
 };
 }  // namespace
 

@@ -15,7 +15,11 @@ enum class Quadrature {
   PartialLinear,  // paper 002 eq. (2.16): the share falls linearly from delta - h/2 to delta + h/2
   PartialExact,   // paper 002 §2.4: the exact cell-horizon overlap (closed form 2D, adaptive 3D)
   Obq,     // per-family least-norm weights exact for paper 001's reproducing space, collocation assembly
+  ObqCut,  // the same, a family cut by a face of the body's box integrating over the cut ball (free surfaces)
 };
+
+// Either OBQ choice.
+inline bool is_obq(Quadrature q) { return q == Quadrature::Obq || q == Quadrature::ObqCut; }
 
 // The scene spelling of each choice, in the order of the enum.
 std::string_view quadrature_name(Quadrature q);

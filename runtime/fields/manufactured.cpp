@@ -12,17 +12,25 @@ std::array<double, 2> u1(double x, double y) { return {x * x, 4 * y * y}; }
 // div sigma = (lambda + mu) grad div u + mu Laplacian u = (2 lambda + 4 mu, 8 lambda + 16 mu).
 std::array<double, 2> f1(double, double, double lambda, double mu) { return {2 * lambda + 4 * mu, 8 * lambda + 16 * mu}; }
 
-std::array<double, 2> u2(double x, double y) { return {std::sin(x) * std::sin(y), -std::cos(x) * std::cos(y)}; }
-// div u = cos x sin y + cos x sin y = 2 cos x sin y; grad div u = (-2 sin x sin y, 2 cos x cos y)
-// = -2 u; Laplacian u = -2 u: div sigma = -2 (lambda + 2 mu) u.
-std::array<double, 2> f2(double x, double y, double lambda, double mu) {
-  const auto u = u2(x, y);
-  return {-2 * (lambda + 2 * mu) * u[0], -2 * (lambda + 2 * mu) * u[1]};
-}
 }  // namespace
 
 ManufacturedField paper001_u1() { return {"u1", u1, f1}; }
-ManufacturedField paper001_u2() { return {"u2", u2, f2}; }
+ManufacturedField paper001_u2() { return paper001_u2_wavenumber(1); }
+
+// u = <sin kx sin ky, -cos kx cos ky>: div u = 2k cos kx sin ky, grad div u = -2 k^2 u,
+// Laplacian u = -2 k^2 u, so div sigma = (lambda + mu) grad div u + mu Laplacian u
+// = -2 k^2 (lambda + 2 mu) u (k = 1: the paper's eq. 4.4).
+ManufacturedField paper001_u2_wavenumber(double k) {
+  auto u = [k](double x, double y) -> std::array<double, 2> {
+    return {std::sin(k * x) * std::sin(k * y), -std::cos(k * x) * std::cos(k * y)};
+  };
+  auto f = [k, u](double x, double y, double lambda, double mu) -> std::array<double, 2> {
+    const auto v = u(x, y);
+    const double c = -2 * k * k * (lambda + 2 * mu);
+    return {c * v[0], c * v[1]};
+  };
+  return {k == 1 ? "u2" : "u2(k=" + std::to_string(k) + ")", u, f};
+}
 
 std::array<double, 2> lame_from_young_poisson(double E, double nu) {
   return {E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};

@@ -8,14 +8,15 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 
 namespace pd {
 
 struct ManufacturedField {
   std::string name;
-  std::array<double, 2> (*displacement)(double x, double y) = nullptr;
-  std::array<double, 2> (*div_stress)(double x, double y, double lambda, double mu) = nullptr;  // the paper's f
+  std::function<std::array<double, 2>(double x, double y)> displacement;
+  std::function<std::array<double, 2>(double x, double y, double lambda, double mu)> div_stress;  // the paper's f
 
   std::array<double, 2> body_force(double x, double y, double lambda, double mu) const {
     const auto f = div_stress(x, y, lambda, mu);
@@ -27,6 +28,10 @@ struct ManufacturedField {
 ManufacturedField paper001_u1();
 // u_2 = <sin x sin y, -cos x cos y> (eqs. 4.3-4.4): smooth, for the convergence order.
 ManufacturedField paper001_u2();
+// u_2 at wavenumber k: <sin kx sin ky, -cos kx cos ky>, div sigma = -2 k^2 (lambda + 2 mu) u.
+// k = 1 is the paper's; the others test what set-up would give the paper's Table 1
+// magnitudes (docs/paper001.md).
+ManufacturedField paper001_u2_wavenumber(double k);
 
 // Plane-strain Lame parameters from Young's modulus and Poisson's ratio.
 std::array<double, 2> lame_from_young_poisson(double E, double nu);

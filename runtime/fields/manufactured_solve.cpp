@@ -1,6 +1,7 @@
 // The manufactured-solution solve of paper 001 §4 (manufactured_solve.hpp).
 #include "fields/manufactured_solve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -19,12 +20,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Particles unit_square(const ManufacturedSetup& s) {
+// The lattice of the square, with `collar` more rows of the same spacing around it.
+Particles square_cloud(const ManufacturedSetup& s, double collar) {
   Scene scene;
   scene.dim = 2;
-  scene.lo = {0, 0, 0};
-  scene.hi = {1, 1, 0};
-  scene.h = 1.0 / s.n;
+  scene.lo = {s.lo - collar, s.lo - collar, 0};
+  scene.hi = {s.hi + collar, s.hi + collar, 0};
+  scene.h = (s.hi - s.lo) / s.n;
   scene.perturbation = s.perturbation;
   scene.seed = s.seed;
   scene.materials.resize(1);
@@ -50,8 +52,12 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   std::vector<double> params(2);
   for (int i = 0; i < 2; ++i) params[i] = std::string(law->param_names[i]) == "lambda" ? s.lambda : s.mu;
 
-  const Particles P = unit_square(s);
-  const double h = 1.0 / s.n, delta = s.horizon_ratio * h, layer = s.layer_horizons * delta;
+  const double h = (s.hi - s.lo) / s.n, delta = s.horizon_ratio * h;
+  const double collar = s.collar_outside ? std::ceil(s.layer_horizons * delta / h - 1e-9) * h : 0;
+  const double layer = s.collar_outside ? 0 : s.layer_horizons * delta;
+  const Particles P = square_cloud(s, collar);
+  // Distance of a point from the boundary of the square (negative in an outside collar).
+  auto depth = [&](const double* x) { return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]}); };
   const Bonds B = find_bonds(P, delta, influence->weight);
   const int n = P.size();
   std::vector<char> solved(n);
@@ -59,7 +65,7 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.particles = n;
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
-    solved[p] = x[0] >= layer && x[0] <= 1 - layer && x[1] >= layer && x[1] <= 1 - layer;
+    solved[p] = depth(x) >= layer;
     r.solved += solved[p];
   }
 
@@ -115,16 +121,18 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   solver->solve(rhs, u);
   r.solve_seconds = seconds_since(t0);
 
-  double sum = 0;
+  double sum = 0, component_sum[2] = {0, 0};
   const double margin = s.error_margin;
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
-    if (!solved[p] || x[0] < margin || x[0] > 1 - margin || x[1] < margin || x[1] > 1 - margin) continue;
-    for (int c = 0; c < 2; ++c) sum += std::pow(u[index[2 * p + c]] - exact[2 * p + c], 2);
+    if (!solved[p] || depth(x) < margin) continue;
+    for (int c = 0; c < 2; ++c) component_sum[c] += std::pow(u[index[2 * p + c]] - exact[2 * p + c], 2);
     ++r.measured;
   }
   if (r.measured == 0) throw std::invalid_argument("solve_manufactured: no solved particle inside the error margin");
+  sum = component_sum[0] + component_sum[1];
   r.rms_error = std::sqrt(sum / r.measured);
+  for (int c = 0; c < 2; ++c) r.rms_component[c] = std::sqrt(component_sum[c] / r.measured);
   return r;
 }
 

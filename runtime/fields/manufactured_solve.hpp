@@ -14,10 +14,15 @@ namespace pd {
 
 struct ManufacturedSetup {
   int n = 24;                    // particles per side
+  double lo = 0, hi = 1;         // the square [lo, hi]^2 (the paper's: the unit square); h = (hi - lo) / n
   double horizon_ratio = 3.5;    // delta / h
   double perturbation = 0.2;     // uniform, times h
   int seed = 1;
   double layer_horizons = 1.0;   // Dirichlet layer width in horizons
+  // false: the layer is the outer part of the square (the paper's "layer of size delta
+  // around the boundary of Omega", read as inside); true: a collar of ceil(layer / h)
+  // lattice rows is added outside the square and every particle of the square is solved.
+  bool collar_outside = false;
   double lambda = 0.5, mu = 0.5;
   std::string law = "lps_plane_strain";  // takes (lambda, mu)
   std::string influence = "inv";         // K = 1/r up to a constant (the law divides by m)
@@ -30,6 +35,7 @@ struct ManufacturedSetup {
 
 struct ManufacturedResult {
   double rms_error = 0;
+  double rms_component[2] = {0, 0};  // the same norm of u_x - u_x,ex and u_y - u_y,ex alone
   int particles = 0, solved = 0, measured = 0;
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
 };

@@ -363,7 +363,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
     if (d.has("quadrature")) {
       const YamlAt q = d.get("quadrature");
       const std::optional<Quadrature> choice = parse_quadrature(d.text("quadrature"));
-      if (!choice) q.fail("unknown quadrature (volume, partial_linear, partial_exact, obq)");
+      if (!choice) q.fail("unknown quadrature (volume, partial_linear, partial_exact, obq, obq_cut)");
       s.quadrature = *choice;
     }
     if (d.has("perturbation")) {
@@ -375,8 +375,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
     }
     if (d.has("compensation")) {
       s.compensation = d.boolean("compensation", false);
-      if (s.compensation && s.quadrature == Quadrature::Obq)
-        d.get("compensation").fail("the compensation factor scales bond volumes; obq replaces them by its own weights");
+      if (s.compensation && is_obq(s.quadrature))
+        d.get("compensation").fail("the compensation factor scales bond volumes; obq and obq_cut replace them by their own weights");
       if (s.compensation && s.perturbation > 0)
         d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
     }

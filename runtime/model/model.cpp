@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <optional>
 #include <stdexcept>
 
 #include "discretize/compensation.hpp"
@@ -13,6 +14,22 @@
 #include "material/elastic_constants.hpp"
 
 namespace pd {
+
+namespace {
+// `domain.quadrature: obq_cut`: the region the particles cover, which the families at a
+// face integrate over -- the box, grown by h/2 for node placement (the particles on
+// the faces stand for cells that reach half a spacing beyond them). None for `obq`.
+std::optional<Box2> obq_cut_body(const Scene& scene) {
+  if (scene.quadrature != Quadrature::ObqCut) return std::nullopt;
+  if (scene.dim != 2 || scene.point_cloud || !scene.holes.empty())
+    throw std::invalid_argument(scene.file + ": domain.quadrature: obq_cut needs a 2D box body without holes "
+                                "(use obq)");
+  const double grow = scene.placement == "node" ? 0.5 * scene.h : 0.0;
+  Box2 body;
+  for (int a = 0; a < 2; ++a) body.lo[a] = scene.lo[a] - grow, body.hi[a] = scene.hi[a] + grow;
+  return body;
+}
+}  // namespace
 
 Model build_model(const Scene& scene) {
   Model m;
@@ -43,8 +60,11 @@ Model build_model(const Scene& scene) {
     const CompensationInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight};
     apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
   }
-  if (scene.quadrature == Quadrature::Obq)
-    m.collocation = std::make_unique<Collocation>(make_obq_collocation(m.particles, m.bonds, m.collocation_description));
+  if (is_obq(scene.quadrature)) {
+    const std::optional<Box2> body = obq_cut_body(scene);
+    m.collocation = std::make_unique<Collocation>(
+        make_obq_collocation(m.particles, m.bonds, m.collocation_description, body ? &*body : nullptr));
+  }
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   return m;
 }

@@ -37,8 +37,9 @@ DynamicSimulation::~DynamicSimulation() = default;
 DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(scene)), log_(std::move(log)) {
   if (!scene_.dynamics) throw std::invalid_argument("DynamicSimulation: the scene has no dynamics section");
   const DynamicsSpec& dyn = *scene_.dynamics;
-  if (scene_.quadrature == Quadrature::Obq)
-    throw std::invalid_argument(scene_.file + ": domain.quadrature: obq is implemented for static solves only");
+  if (is_obq(scene_.quadrature))
+    throw std::invalid_argument(scene_.file + ": domain.quadrature: " + std::string(quadrature_name(scene_.quadrature)) +
+                                " is implemented for static solves only");
   const auto t0 = std::chrono::steady_clock::now();
   model_ = build_model(scene_);
   summary_.describe(scene_, model_);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "discretize/ball_box_moments.hpp"
 #include "obq_cloud.hpp"
 
 namespace {
@@ -179,4 +180,41 @@ TEST(ObqWeights, NonUnisolventFamilyIsANamedError) {
   std::vector<double> line;
   for (int k = 1; k <= 20; ++k) line.insert(line.end(), {0.009 * k * (k % 2 ? 1 : -1), 0.0045 * k * (k % 2 ? 1 : -1)});
   EXPECT_THROW(pd::obq_family_weights(space, line.data(), 20, 0.2, 3, center), pd::NotUnisolventError);
+}
+
+TEST(ObqWeights, FamiliesAtAFaceOfTheBodyIntegrateOverTheCutBall) {
+  // domain.quadrature: obq_cut. The cloud's particles are cell centres of the unit
+  // square, so the body they cover is the square itself.
+  const Cloud c = perturbed_cloud(2, 1.0 / 24);
+  const pd::ReproducingSpace space = pd::paper001_space(2);
+  const pd::Box2 body{{0, 0}, {1, 1}};
+  double worst = 0, total_weight_gap = 0;
+  int cut = 0;
+  for (int p = 0; p < c.particles.size(); ++p) {
+    if (faces_within_horizon(c, p) != 1) continue;
+    const double* x = c.particles.position(p);
+    const int begin = c.bonds.offsets[p], n = c.bonds.family_size(p);
+    std::vector<double> w;
+    try {
+      w = pd::obq_family_weights(space, &c.bonds.xi[begin * 2], n, c.delta, p, x, &body);
+    } catch (const pd::NotUnisolventError&) {
+      continue;  // a shallow half ball may hold too few bonds; counted below
+    }
+    ++cut;
+    for (const pd::BondMonomial& f : space.terms) {
+      double sum = 0;
+      for (int k = 0; k < n; ++k) sum += f.value(2, &c.bonds.xi[(begin + k) * 2], c.bonds.length[begin + k]) * w[k];
+      const double scale = std::pow(c.delta, f.degree() - f.inverse_r_power + 2);
+      worst = std::max(worst, std::abs(sum - pd::ball_box_moment_2d(f, c.delta, x, body)) / scale);
+    }
+    // The weights sum to the cut area, not to the whole disc's.
+    double sum = 0;
+    for (double v : w) sum += v;
+    total_weight_gap = std::max(total_weight_gap, std::abs(sum - pd::ball_box_moment_2d({}, c.delta, x, body)));
+    const double depth = std::min({x[0], 1 - x[0], x[1], 1 - x[1]});
+    if (depth < 0.5 * c.delta) EXPECT_LT(sum, 0.9 * M_PI * c.delta * c.delta) << "particle " << p;
+  }
+  EXPECT_GT(cut, 50);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(total_weight_gap, 1e-12);
 }
