@@ -7,12 +7,15 @@
 //   rotation:   rigid rotation by `angle` degrees about (x0, y0), times 1 + `stretch`
 //   inclusion:  circular inclusion of radius a (E_inclusion, nu_inclusion) at (x0, y0)
 //               in an infinite plane under remote equibiaxial traction T
+//   u1, u2:     paper 001's manufactured solutions (fields/manufactured.hpp) times
+//               `amplitude` (default 1); the only fields with a body force
 #pragma once
 
 #include <array>
 #include <map>
 #include <string>
 
+#include "fields/manufactured.hpp"
 #include "input/scene.hpp"
 
 namespace pd {
@@ -29,12 +32,18 @@ class AnalyticField {
   // state of a load-stepped rotation is itself a rotation).
   std::array<double, 3> displacement_at_load(const double* x, double load) const;
   const std::string& name() const { return name_; }
+  // The body force density b = -div sigma that makes the field an equilibrium (plane
+  // strain, lambda and mu from E and nu): non-zero only for the manufactured fields.
+  bool has_body_force() const { return manufactured_.displacement != nullptr; }
+  std::array<double, 3> body_force(const double* x) const;
 
  private:
   std::string name_;
   double T_ = 0, E_ = 0, nu_ = 0, a_ = 0, x0_ = 0, y0_ = 0;
   double angle_ = 0, stretch_ = 0;            // rotation
   double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
+  ManufacturedField manufactured_;            // u1, u2
+  double amplitude_ = 1;
 };
 
 }  // namespace pd
