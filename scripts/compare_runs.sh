@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every scene in scenes/ with two pd binaries and compares their summary.json files:
 # every number to a relative tolerance (default 1e-12), every string (solver path, linear
-# method, its choice sentence, effect list, ...) exactly. Wall-clock seconds, file names and
+# method, its choice sentence, effect list, ...) exactly. Wall-clock seconds, file names, the
+# run id, the binary's version and commit (`pd`) and
 # the scene path are skipped (they differ between any two runs).
 #
 #   scripts/compare_runs.sh BEFORE_PD AFTER_PD [SCENE.yaml ...]
@@ -80,7 +81,7 @@ for i in "${!names[@]}"; do
 import json, sys
 a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
 rtol = float(sys.argv[3]); name = sys.argv[4]
-SKIP = {"seconds", "files", "scene", "peak_memory_mb", "output_directory"}
+SKIP = {"seconds", "files", "scene", "peak_memory_mb", "output_directory", "run_id", "pd"}
 diffs = []; count = [0, 0]; worst = [0.0]
 def walk(x, y, path):
     if isinstance(x, dict) and isinstance(y, dict):

@@ -51,12 +51,15 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
     outer_ = T_ / (2 * (mm.lambda + mm.G));
     inner_ = outer_ * (mm.lambda + 2 * mm.G) / (mi.lambda + mi.G + mm.G);
     hole_ = (inner_ - outer_) * a_ * a_;
+  } else if (name_ == "u1" || name_ == "u2") {
+    manufactured_ = name_ == "u1" ? paper001_u1() : paper001_u2();
+    amplitude_ = param(spec, "amplitude", 1.0);
   } else {
     throw std::invalid_argument("unknown analytic solution '" + name_ + "'");
   }
   for (const auto& [k, v] : spec.parameters) {
     static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction", "angle", "stretch",
-                                  "radius", "E_inclusion", "nu_inclusion", "e11", "e22", "e33", "e12", "e13", "e23", "z0"};
+                                  "radius", "E_inclusion", "nu_inclusion", "e11", "e22", "e33", "e12", "e13", "e23", "z0", "amplitude"};
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
     if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");
@@ -97,6 +100,10 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
     const double c = std::cos(angle_), s = std::sin(angle_), k = 1 + stretch_;
     return {k * (c * x - s * y) - x, k * (s * x + c * y) - y, 0.0};
   }
+  if (has_body_force()) {
+    const auto u = manufactured_.displacement(x, y);
+    return {amplitude_ * u[0], amplitude_ * u[1], 0.0};
+  }
   if (name_ == "inclusion") {
     const double r = std::hypot(x, y);
     if (r == 0) return {0.0, 0.0, 0.0};
@@ -116,6 +123,13 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
   if (x < 0) ux = -ux;
   if (y < 0) uy = -uy;
   return {ux, uy, 0.0};
+}
+
+std::array<double, 3> AnalyticField::body_force(const double* p) const {
+  if (!has_body_force()) return {0.0, 0.0, 0.0};
+  const auto [lambda, mu] = lame_from_young_poisson(E_, nu_);
+  const auto b = manufactured_.body_force(p[0] - x0_, p[1] - y0_, lambda, mu);
+  return {amplitude_ * b[0], amplitude_ * b[1], 0.0};
 }
 
 }  // namespace pd

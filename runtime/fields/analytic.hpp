@@ -8,12 +8,15 @@
 //   affine:     u = eps (x - x0), eps symmetric from e11 e22 e33 e12 e13 e23 (default 0), 2D or 3D
 //   inclusion:  circular inclusion of radius a (E_inclusion, nu_inclusion) at (x0, y0)
 //               in an infinite plane under remote equibiaxial traction T
+//   u1, u2:     paper 001's manufactured solutions (fields/manufactured.hpp) times
+//               `amplitude` (default 1); the only fields with a body force
 #pragma once
 
 #include <array>
 #include <map>
 #include <string>
 
+#include "fields/manufactured.hpp"
 #include "input/scene.hpp"
 
 namespace pd {
@@ -30,6 +33,10 @@ class AnalyticField {
   // state of a load-stepped rotation is itself a rotation).
   std::array<double, 3> displacement_at_load(const double* x, double load) const;
   const std::string& name() const { return name_; }
+  // The body force density b = -div sigma that makes the field an equilibrium (plane
+  // strain, lambda and mu from E and nu): non-zero only for the manufactured fields.
+  bool has_body_force() const { return manufactured_.displacement != nullptr; }
+  std::array<double, 3> body_force(const double* x) const;
 
  private:
   std::string name_;
@@ -38,6 +45,8 @@ class AnalyticField {
   double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
   double strain_[3][3] = {};                  // affine: u = strain (x - (x0, y0, z0))
   double z0_ = 0;
+  ManufacturedField manufactured_;            // u1, u2
+  double amplitude_ = 1;
 };
 
 }  // namespace pd

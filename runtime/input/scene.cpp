@@ -126,7 +126,9 @@ const std::vector<FieldParameters> kFieldParameters{
     {"westergaard", {"pressure", "half_length"}, {}},
     {"rotation", {"angle"}, {"stretch"}},
     {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}},
-    {"affine", {}, {"e11", "e22", "e33", "e12", "e13", "e23", "z0"}}};
+    {"affine", {}, {"e11", "e22", "e33", "e12", "e13", "e23", "z0"}},
+    {"u1", {}, {"amplitude"}},
+    {"u2", {}, {"amplitude"}}};
 const std::vector<std::string> kFieldOptional{"E", "nu", "x0", "y0"};
 
 // output.j_integral: a list of {contour: {min, max}} (post/j_integral.hpp, paper 004).
@@ -298,6 +300,25 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   return bc;
 }
 
+// `body_force: {field: {solution, ...}, region}`: only the manufactured fields (2D, plane
+// strain) have a body force density.
+BodyForceField read_body_force(const YamlAt& at, const Scene& s) {
+  MapReader m(at);
+  BodyForceField b;
+  b.where = at.location();
+  const YamlAt field = m.get("field");
+  b.field = read_field(field, s.dim);
+  if (m.has("region")) b.region = read_region(m.get("region"), s.dim);
+  m.finish();
+  const YamlAt solution = field.child(field.node["solution"], "solution");
+  if (b.field.solution != "u1" && b.field.solution != "u2")
+    solution.fail("'" + b.field.solution + "' has no body force density (u1 and u2, paper 001's manufactured solutions, have)");
+  if (s.dim != 2) at.fail("the manufactured fields u1 and u2 are 2D");
+  if (s.materials[0].plane == PlaneAssumption::Stress)
+    at.fail("u1 and u2's body force is the plane-strain one; the body's material is plane stress");
+  return b;
+}
+
 // A probe's `reference_at`: region (the default), particles, or a point.
 void read_reference_at(const YamlAt& at, Probe& probe, int dim) {
   if (!probe.reference) at.fail("reference_at needs a reference field");
@@ -467,6 +488,7 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.cracks.push_back(crack);
     }
   }
+  if (m.has("body_force")) s.body_force = read_body_force(m.get("body_force"), s);
   if (m.has("solver")) s.solver = read_solver(m.get("solver"));
   if (m.has("output")) {
     MapReader o(m.get("output"));

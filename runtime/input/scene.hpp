@@ -59,6 +59,14 @@ struct BoundaryCondition {
   std::string time_where;  // "file:line: boundary[i].time_function"
 };
 
+// `body_force: {field, region}`: a body force density from an analytic field on the
+// region's particles (effects/body_force_field.cpp).
+struct BodyForceField {
+  FieldSpec field;
+  Region region;      // default: all particles
+  std::string where;  // "file:line: body_force", for messages found after reading
+};
+
 // What a bond passing exactly through a 2D crack tip does (docs/scene_format.md).
 enum class CrackTips { cut, kept };
 
@@ -123,6 +131,7 @@ struct Scene {
   std::vector<MaterialSpec> materials;  // [0] is the body's material
   std::vector<BoundaryCondition> boundary;
   std::vector<Crack> cracks;
+  std::optional<BodyForceField> body_force;
   // What the reader accepted but a careful user would want to hear about ("file:line: key:
   // message"): the run logs each as a warning and lists them in summary.json.
   std::vector<std::string> warnings;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "discretize/compensation.hpp"
+#include "discretize/crack_cut.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
 #include "discretize/partial_volume.hpp"
@@ -83,6 +84,17 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.collocation = model.collocation.get();
   model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
   return options;
+}
+
+void attach_short_horizon(Model& model, const Scene& scene, double short_delta) {
+  // The same law's stiffness on a horizon of ratio h: far fewer nonzeros, and spectrally
+  // close on the smooth modes that make K ill-conditioned.
+  model.short_bonds = find_bonds(model.particles, short_delta, model.influence->weight);
+  drop_negligible_bonds(model.short_bonds);
+  const int cut = cut_bonds(scene.cracks, model.particles, model.short_bonds);
+  AssemblerOptions options;
+  options.intact = cut == 0 && !scene.damage;
+  model.approximation = std::make_unique<FamilyAssembler>(model.particles, model.short_bonds, *model.law, model.params, options);
 }
 
 }  // namespace pd

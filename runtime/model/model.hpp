@@ -1,8 +1,8 @@
 // The model a run solves: the law and influence, the particles, the bonds (cut by the
 // pre-cracks), the per-material law parameters and the family checks, built once from
 // a const Scene by build_model; the assembler is added by the driver once the solver
-// plan has said whether it needs a matrix (attach_assembler). The static and dynamic
-// drivers both start from it.
+// plan has said whether it needs a matrix (attach_assembler), then the effects
+// (attach_effects), which read the assembler. The static and dynamic drivers both start from it.
 #pragma once
 
 #include <memory>
@@ -12,12 +12,15 @@
 #include "assembly/assembler.hpp"
 #include "assembly/collocation.hpp"
 #include "discretize/family_quality.hpp"
+#include "effects/effect.hpp"
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 #include "solve/solver_plan.hpp"
 
 namespace pd {
+
+class CriticalStretchDamage;
 
 struct Model {
   const abi::LawDescriptor* law = nullptr;
@@ -33,7 +36,16 @@ struct Model {
   // paper 001), and the log line that says how many families kept the volume rule.
   std::unique_ptr<Collocation> collocation;
   std::string collocation_description;
-  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared last: it reads the above)
+  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared after what it reads)
+  // Static matrix-free runs with the short-horizon preconditioner (attach_short_horizon):
+  // the same law on delta = ratio h, whose factorised stiffness preconditions the solve.
+  Bonds short_bonds;
+  std::unique_ptr<FamilyAssembler> approximation;
+  // attach_effects: every effect the scene calls for, in the order the run log lists
+  // them (loads, crack pressure, body forces, pre-cracks, damage evolution). Declared
+  // last: they read the assemblers and bonds above.
+  std::vector<std::unique_ptr<Effect>> effects;
+  const CriticalStretchDamage* damage = nullptr;  // the damage effect's rule (null without `damage`)
 
   // What the solver plan needs of the model (mean family size: bonds per particle).
   ProblemSize size(const Scene& scene, double short_family_size = -1) const;
@@ -47,5 +59,13 @@ Model build_model(const Scene& scene);
 // to 1) unless a bond is cut or can break (`damage`), with a matrix pattern only when
 // `matrix`. Returns the options it used.
 AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads = 0);
+
+// The short-horizon approximation (bonds within short_delta, negligible ones dropped,
+// cut by the same cracks) for the matrix-free path's preconditioner.
+void attach_short_horizon(Model& model, const Scene& scene, double short_delta);
+
+// The scene's effects (model/model_effects.cpp), after attach_assembler (and
+// attach_short_horizon when used). A dynamic scene's loads carry their time functions.
+void attach_effects(Model& model, const Scene& scene);
 
 }  // namespace pd

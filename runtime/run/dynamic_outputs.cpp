@@ -136,7 +136,7 @@ std::vector<OutputField> DynamicSimulation::output_fields() const {
   std::vector<OutputField> fields;
   if (!v_.empty()) fields.push_back({"velocity", model_.particles.dim, v_});
   fields.push_back({"material", 1, std::vector<double>(model_.particles.material.begin(), model_.particles.material.end())});
-  if (damage_ || !model_.assembler->intact()) fields.push_back({"damage", 1, particle_damage(model_.bonds)});
+  if (model_.damage || !model_.assembler->intact()) fields.push_back({"damage", 1, particle_damage(model_.bonds)});
   append_law_outputs(*model_.assembler, model_.particles, u_, fields);
   if (scene_.output.stress) fields.push_back({"stress", model_.particles.dim * model_.particles.dim, stress_field()});
   return fields;

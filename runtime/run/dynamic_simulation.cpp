@@ -53,28 +53,9 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
                                          influence->name));
 
-  // Loads: one effect per condition, each scaled by its own function of time.
-  for (const BoundaryCondition& bc : scene_.boundary) {
-    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
-    TimedLoad l{make_external_loads(scene_, model_.particles, std::span(&bc, 1)), bc.time.value_or(TimeFunction{})};
-    summary_.effects.push_back(l.effect->describe() + (bc.time ? ", times " + bc.time->describe() : std::string()));
-    loads_.push_back(std::move(l));
-  }
-  // Crack pressure: one effect per pressurised crack, each scaled by its own function
-  // of time (relaxation, like every load, applies it in full).
-  for (const Crack& crack : scene_.cracks) {
-    auto e = make_crack_pressure(std::span(&crack, 1), scene_.h, model_.particles, model_.bonds);
-    if (!e) continue;
-    summary_.effects.push_back(e->describe() + (crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
-    loads_.push_back({std::move(e), crack.time.value_or(TimeFunction{})});
-  }
-  if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
-  if (scene_.damage) {
-    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta(), *law,
-                                       model_.params[0], influence->weight);
-    damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, model_.bonds, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim, *law));
-  }
+  // The loads (each scaled by its own function of time), the pre-cracks and damage evolution.
+  attach_effects(model_, scene_);
+  for (const auto& e : model_.effects) summary_.effects.push_back(e->describe());
   setup_constraints();
   probe_ids_ = probe_particles(scene_, model_.particles);
 
@@ -168,16 +149,19 @@ void DynamicSimulation::prescribe(double t) {
   }
 }
 
-double DynamicSimulation::load_scale(const TimedLoad& l, double t) const {
-  // Relaxation solves the static problem: every load at its full value.
-  return scene_.dynamics->method == DynamicsMethod::relaxation ? 1.0 : l.time.value_at(t);
+bool DynamicSimulation::after_step() {
+  long long changes = 0;
+  for (const auto& e : model_.effects) changes += e->after_step(u_.data());
+  return changes > 0;
 }
 
 void DynamicSimulation::forces(double t, std::vector<double>& f, std::vector<double>& g) const {
   f.resize(u_.size());
   g.assign(u_.size(), 0.0);
   model_.assembler->internal_forces(u_.data(), f.data());
-  for (const TimedLoad& l : loads_) l.effect->add_forces(u_.data(), load_scale(l, t), g.data());
+  // Each load at its time function's value (effects/timed_effect.cpp); relaxation has no
+  // time functions (the reader refuses them), so its loads are in full.
+  for (const auto& e : model_.effects) e->add_forces(u_.data(), t, g.data());
   for (std::size_t i = 0; i < f.size(); ++i) f[i] += g[i];
   // The reaction of a constraint, R = -(f_int + load), plus the load there: -f_int.
   for (int i : constrained_) g[i] = g[i] - f[i];

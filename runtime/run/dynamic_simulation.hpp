@@ -18,7 +18,7 @@
 #include "input/scene.hpp"
 #include "model/model.hpp"
 #include "run/constraints.hpp"
-#include "run/effects.hpp"
+#include "effects/loads.hpp"
 #include "run/simulation.hpp"
 
 namespace pd {
@@ -48,19 +48,16 @@ class DynamicSimulation {
   const std::vector<double>& velocity() const { return v_; }
   const std::vector<SeriesRow>& series() const { return series_; }
   const FamilyAssembler& assembler() const { return *model_.assembler; }
-  const CriticalStretchDamage* damage() const { return damage_.get(); }
+  const CriticalStretchDamage* damage() const { return model_.damage; }
   bool has_masses() const { return !mass_.empty(); }
   const Scene& scene() const { return scene_; }
 
  private:
-  struct TimedLoad {
-    std::unique_ptr<Effect> effect;
-    TimeFunction time;
-  };
   void setup_constraints();
   void apply_initial_conditions();
-  double load_scale(const TimedLoad& l, double t) const;
   void prescribe(double t);
+  // Every effect's after_step at the current u (damage: bonds break); true when any changed the model.
+  bool after_step();
   // f = f_int(u) + loads(t); g = the external forces for the work (loads on free dofs,
   // reactions -f_int on constrained ones).
   void forces(double t, std::vector<double>& f, std::vector<double>& g) const;
@@ -79,9 +76,7 @@ class DynamicSimulation {
 
   const Scene scene_;  // never changed after reading
   Log log_;
-  Model model_;
-  std::unique_ptr<CriticalStretchDamage> damage_;
-  std::vector<TimedLoad> loads_;
+  Model model_;  // owns the effects: the timed loads, the pre-cracks, damage evolution
   std::vector<PrescribedDof> prescribed_;
   std::vector<int> free_, constrained_;
   std::vector<std::vector<int>> probe_ids_;

@@ -49,7 +49,7 @@ RunSummary DynamicSimulation::run_explicit(bool write, int stop_after) {
   } else {
     apply_initial_conditions();
     prescribe(0.0);
-    if (damage_ && damage_->break_bonds(u_.data()) > 0) model_.assembler->update_moments();
+    after_step();
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
@@ -80,10 +80,7 @@ RunSummary DynamicSimulation::run_explicit(bool write, int stop_after) {
     verlet.first_half(u_, v_, f);
     t = s * dt_;
     prescribe(t);
-    if (damage_) {
-      const int nb = damage_->break_bonds(u_.data());
-      if (nb > 0) model_.assembler->update_moments();
-    }
+    after_step();
     forces(t, f, g);
     verlet.second_half(v_, f);
     work.add(g_old, g, u_old, u_);

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
-#include "run/effects.hpp"
+#include "effects/loads.hpp"
 #include "solve/newton.hpp"
 
 namespace pd {

@@ -71,9 +71,10 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
     forces(0.0, f, g);
     // The reference force: the larger of the loads and the initial out-of-balance force.
     reference = norm_over(f, free_);
-    for (const TimedLoad& l : loads_) {
+    for (const auto& e : model_.effects) {
+      if (!e->is_load()) continue;
       std::vector<double> load(u_.size(), 0.0);
-      l.effect->add_forces(u_.data(), 1.0, load.data());
+      e->add_forces(u_.data(), 0.0, load.data());  // in full: relaxation has no time functions
       reference = std::max(reference, norm_over(load, free_));
     }
     if (reference == 0) reference = 1;
@@ -88,7 +89,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u_);
-    if (damage_ && damage_->break_bonds(u_.data()) > 0) model_.assembler->update_moments();
+    after_step();
     forces(0.0, f, g);
     ratio = norm_over(f, free_) / reference;
     if (!std::isfinite(ratio)) throw std::runtime_error(fmt::format("adaptive dynamic relaxation diverged at iteration {}", s));

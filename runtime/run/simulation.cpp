@@ -50,34 +50,16 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   plan_ = plan_solver(scene_.solver, model_.size(scene_, short_family));
   summary_.solver_path = plan_.reason;
   // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
-  if (plan_.short_horizon_preconditioner() && !(plan_.backend == Backend::petsc && short_delta >= scene_.delta())) {
-    // The preconditioner is the same law's stiffness on a horizon of ratio h: far
-    // fewer nonzeros, and spectrally close on the smooth modes that make K ill-conditioned.
-    short_bonds_ = find_bonds(model_.particles, short_delta, influence->weight);
-    drop_negligible_bonds(short_bonds_);
-    const int cut = cut_bonds(scene_.cracks, model_.particles, short_bonds_);
-    AssemblerOptions short_options;
-    short_options.intact = cut == 0 && !scene_.damage;
-    approximation_ = std::make_unique<FamilyAssembler>(model_.particles, short_bonds_, *law, model_.params, short_options);
-  }
+  if (plan_.short_horizon_preconditioner() && !(plan_.backend == Backend::petsc && short_delta >= scene_.delta()))
+    attach_short_horizon(model_, scene_, short_delta);
   const AssemblerOptions options = attach_assembler(model_, scene_, !plan_.matrix_free());
+  attach_effects(model_, scene_);
   if (model_.collocation) summary_.effects.push_back(model_.collocation_description);
   const StrainModeReport modes = check_strain_modes(*model_.assembler, influence->name, scene_.delta() / scene_.h);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
                                          influence->name));
-  if (auto e = make_external_loads(scene_, model_.particles)) effects_.push_back(std::move(e));
-  if (auto e = make_crack_pressure(scene_, model_.particles, model_.bonds)) effects_.push_back(std::move(e));
-  for (const auto& e : effects_) summary_.effects.push_back(e->describe());
-  if (summary_.broken_bonds > 0) summary_.effects.push_back(fmt::format("broken bonds: {} cut by cracks", summary_.broken_bonds));
-  if (scene_.damage) {
-    const double s0 = critical_stretch(*scene_.damage, scene_.materials[0], scene_.dim, scene_.delta(), *law,
-                                       model_.params[0], influence->weight);
-    damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, model_.bonds, s0, scene_.damage->tension_only);
-    if (approximation_) short_damage_ = std::make_unique<CriticalStretchDamage>(model_.particles, short_bonds_, s0, scene_.damage->tension_only);
-    summary_.effects.push_back(damage_->describe() + critical_stretch_origin(*scene_.damage, scene_.dim, *law) +
-                               fmt::format(", between load steps (at most {} re-solves per step)", scene_.damage->max_resolves));
-  }
+  for (const auto& e : model_.effects) summary_.effects.push_back(e->describe());
   u_.assign(static_cast<std::size_t>(model_.particles.size()) * model_.particles.dim, 0.0);
   summary_.setup_seconds = seconds_since(t0);
   log_(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene_.file,
@@ -148,23 +130,22 @@ RunSummary Simulation::run(bool write) {
   const DofMap dofs = scene_constraints(scene_, model_.particles);
   check_held(model_.particles, model_.bonds, dofs);
   // No load at all: the solution is zero (and the residual is rounding noise).
-  bool loaded = !effects_.empty();
+  bool loaded = false;
+  for (const auto& e : model_.effects) loaded = loaded || e->is_load();
   for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
   if (!loaded) log_("  no load and no prescribed displacement: the solution is zero");
 
   std::vector<const Effect*> effects;
-  for (const auto& e : effects_) effects.push_back(e.get());
-  PeridynamicSystem system(*model_.assembler, effects, approximation_.get());
+  for (const auto& e : model_.effects) effects.push_back(e.get());
+  PeridynamicSystem system(*model_.assembler, effects, model_.approximation.get());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u_.size()));
   const long long broken_before = broken_bond_count(model_.bonds);
   if (loaded) {
     NewtonSettings settings = newton_settings();
-    if (damage_) {
-      settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
-      settings.max_resolves = scene_.damage->max_resolves;
-    }
+    settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
+    if (scene_.damage) settings.max_resolves = scene_.damage->max_resolves;
     if (plan_.backend == Backend::petsc) {
-      const FamilyAssembler* pc = approximation_ ? approximation_.get() : model_.assembler.get();
+      const FamilyAssembler* pc = model_.approximation ? model_.approximation.get() : model_.assembler.get();
       summary_.newton = solve_distributed({model_.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log_);
     } else {
       summary_.newton = NewtonSolver(settings, log_).solve(system, dofs, u);
@@ -174,7 +155,7 @@ RunSummary Simulation::run(bool write) {
     summary_.newton.unknowns = dofs.free_count();
   }
   summary_.solve_seconds = seconds_since(t0);
-  if (damage_) {
+  if (model_.damage) {
     summary_.bonds_broken_by_damage = broken_bond_count(model_.bonds) - broken_before;
     summary_.broken_bonds = static_cast<int>(broken_bond_count(model_.bonds));
   }
@@ -195,7 +176,7 @@ RunSummary Simulation::run(bool write) {
   }
   if (!scene_.output.smoothing_influence.empty()) smooth();
   std::vector<double> external(scene_.output.j_integral.empty() ? 0 : u_.size(), 0.0);
-  for (const auto& e : effects_)
+  for (const auto& e : model_.effects)
     if (!external.empty()) e->add_forces(u_.data(), 1.0, external.data());
   for (const JContour& c : scene_.output.j_integral) {
     summary_.j_integrals.push_back(j_integral(*model_.assembler, u_.data(), scene_.h, c, external.data()));
@@ -206,20 +187,18 @@ RunSummary Simulation::run(bool write) {
   return summary_;
 }
 
-// Critical-stretch breaking at the converged solution of a load step (the rule of the
-// dynamic runs, CriticalStretchDamage). Broken bonds change the moments, so the next
-// round's residual and tangent see the new bond set; the pattern keeps the broken
-// bonds' slots (as zeros), so no symbolic re-analysis is needed.
+// After a converged load step every effect may change the model (damage evolution
+// breaks bonds and updates the moments: effects/damage_evolution.cpp); any change
+// means the step is solved again on the changed system.
 long long Simulation::after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs) {
-  const int broken = damage_->break_bonds(u.data());
-  if (broken == 0) return 0;
-  model_.assembler->update_moments();
-  if (short_damage_ && short_damage_->break_bonds(u.data()) > 0) approximation_->update_moments();
+  long long changes = 0;
+  for (const auto& e : model_.effects) changes += e->after_step(u.data());
+  if (changes == 0) return 0;
   log_(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
-                   scene_.solver.load_steps, broken, broken_bond_count(model_.bonds)));
+                   scene_.solver.load_steps, changes, broken_bond_count(model_.bonds)));
   // A piece cut loose by the new crack faces would make K singular: say which.
   check_held(model_.particles, model_.bonds, dofs);
-  return broken;
+  return changes;
 }
 
 void Simulation::write_outputs() {

@@ -13,7 +13,7 @@
 #include "input/scene.hpp"
 #include "model/model.hpp"
 #include "run/run_summary.hpp"
-#include "run/effects.hpp"
+#include "effects/loads.hpp"
 #include "solve/newton.hpp"
 #include "solve/solver_plan.hpp"
 
@@ -37,7 +37,7 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const SolverPlan& solver_plan() const { return plan_; }
   const FamilyAssembler& assembler() const { return *model_.assembler; }
-  const CriticalStretchDamage* damage() const { return damage_.get(); }
+  const CriticalStretchDamage* damage() const { return model_.damage; }
   // Paper 000 eq. (48) of a displacement field (one value per particle and component)
   // against the scene's `reference`; throws std::logic_error when the scene has none.
   double reference_error(const std::vector<double>& u) const;
@@ -49,14 +49,7 @@ class Simulation {
   const Scene scene_;  // never changed after reading
   Log log_;
   SolverPlan plan_;  // decided once, in the constructor
-  Model model_;
-  // Matrix-free runs with the short-horizon preconditioner: the law on delta = ratio h.
-  Bonds short_bonds_;
-  std::unique_ptr<FamilyAssembler> approximation_;
-  std::vector<std::unique_ptr<Effect>> effects_;
-  // Scenes with `damage`: bonds break between load steps (after_load_step), in the real
-  // bonds and in the preconditioner's short ones alike.
-  std::unique_ptr<CriticalStretchDamage> damage_, short_damage_;
+  Model model_;  // owns the effects; damage breaks bonds between load steps (after_load_step)
   long long after_load_step(int step, double load, const Eigen::VectorXd& u, const DofMap& dofs);
   std::vector<double> u_, u_smooth_;
   std::vector<double> stress_;  // peridynamic stress [n*dim*dim], when wants_stress(scene)

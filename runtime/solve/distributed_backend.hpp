@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
-#include "run/effects.hpp"
+#include "effects/effect.hpp"
 #include "solve/dof_map.hpp"
 #include "solve/newton.hpp"
 

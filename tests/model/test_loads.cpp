@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "discretize/discretization.hpp"
-#include "run/effects.hpp"
+#include "effects/loads.hpp"
 
 namespace {
 

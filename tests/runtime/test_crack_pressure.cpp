@@ -8,7 +8,7 @@
 
 #include "assembly/sparsity_pattern.hpp"
 #include "discretize/discretization.hpp"
-#include "run/effects.hpp"
+#include "effects/loads.hpp"
 
 namespace {
 // A square [-half, half]^2 of spacing h, perturbed, with one pressurised crack a-b.

@@ -72,6 +72,11 @@ cases = [
  ("list_boundary_map", "boundary:\n  - region: {side: bottom}\n    fixed: [x, y]\n  - region: {side: top}\n    traction: [0, 0.01]",
   "boundary: {region: {side: bottom}, fixed: [x, y]}", None, "boundary", "expected a list"),
  ("list_segment_one_point", "output:", "cracks:\n  - segment: [[0.2, 0.5]]\noutput:", "  - segment", r"cracks\[0\]\.segment", "a 2D crack is a segment"),
+ # body_force from a field (effects/body_force_field.cpp): the field must exist and have a body force
+ ("body_force_unknown_field", "solver:", "body_force: {field: {solution: u3}}\nsolver:", "body_force:", r"body_force\.field\.solution", "'u3' is not one of"),
+ ("body_force_field_without_density", "solver:", "body_force: {field: {solution: shear, traction: 1}}\nsolver:", "body_force:",
+  r"body_force\.field\.solution", "'shear' has no body force density"),
+ ("body_force_unknown_key", "solver:", "body_force: {field: {solution: u2}, scale: 2}\nsolver:", "body_force:", r"body_force\.scale", "unknown key 'scale'"),
  # YAML itself
  ("yaml_syntax_map_value", "  count: 6", "  count: 6: 7", None, "", "YAML syntax error"),
  ("yaml_syntax_tab_indent", "  count: 6", "\tcount: 6", None, "", "YAML syntax error"),

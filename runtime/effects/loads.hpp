@@ -1,10 +1,8 @@
-// Effects: the physics a scene calls for besides the law's internal forces. Each is a
-// separate object created only when the scene needs it (see make_effects), so an
-// effect that is off costs nothing. New effects (inertia, damping, damage evolution)
-// implement this interface without touching the existing ones.
-//
-// Vectors are particle-major [n * dim]; r is the out-of-balance force (internal plus
-// external: zero at equilibrium) and K = -dr/du, the solver's sign (docs/conventions.md).
+// The effects built from a scene's conditions: dead nodal forces (tractions and constant
+// body forces), crack pressure, body forces from an analytic field, the pre-cracks, and
+// a dynamic run's timed loads (damage evolution: damage_evolution.hpp). Each factory
+// returns nullptr when the scene does not call for it; model/model_effects.cpp puts
+// them in the model in the order the run log lists them.
 #pragma once
 
 #include <memory>
@@ -12,26 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "assembly/sparsity_pattern.hpp"
+#include "effects/effect.hpp"
 #include "input/scene.hpp"
 #include "particles.hpp"
 
 namespace pd {
-
-class Effect {
- public:
-  virtual ~Effect() = default;
-  virtual std::string name() const = 0;      // e.g. "tractions"
-  virtual std::string describe() const = 0;  // one line for the run log
-  // Adds this effect's nodal forces at load factor `load` to r.
-  virtual void add_forces(const double* u, double load, double* r) const = 0;
-  // Adds its contribution to K = -dr/du, whose pattern is `pattern` (nothing for dead loads).
-  virtual void add_stiffness(const double* u, double load, const SparsityPattern& pattern, SparseMatrix& K) const;
-  // Matrix-free counterparts: Kv += K_effect v, diag += diag(K_effect).
-  virtual void add_stiffness_product(const double* u, double load, const double* v, double* Kv) const;
-  virtual void add_stiffness_diagonal(const double* u, double load, double* diag) const;
-  virtual bool symmetric() const { return true; }
-};
 
 // Dead loads given as a nodal force vector [n * dim] at full load.
 std::unique_ptr<Effect> make_nodal_forces(std::vector<double> f, std::string description);
@@ -55,5 +38,16 @@ std::unique_ptr<Effect> make_external_loads(const Scene& scene, const Particles&
 std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, double h, const Particles& p,
                                             const Bonds& bonds);
 std::unique_ptr<Effect> make_crack_pressure(const Scene& scene, const Particles& p, const Bonds& bonds);
+
+// The scene's `body_force: {field: ...}`: b(x_i) V_i on the region's particles, b the body
+// force density of an analytic field (effects/body_force_field.cpp).
+std::unique_ptr<Effect> make_body_force_field(const Scene& scene, const Particles& p);
+
+// The bonds the pre-cracks cut (`cut_bonds` > 0, each once), as the run log's line.
+std::unique_ptr<Effect> make_pre_cracks(long long cut_bonds);
+
+// A dynamic run's load: `inner` at f(t) for the t the driver passes as the load; its log
+// line is the inner one plus `suffix` (", times ramp(...)").
+std::unique_ptr<Effect> make_timed(std::unique_ptr<Effect> inner, TimeFunction time, std::string suffix);
 
 }  // namespace pd

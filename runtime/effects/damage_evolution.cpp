@@ -1,0 +1,58 @@
+// Damage evolution as an effect: after every converged step (a static load step, a time
+// step, a relaxation iteration) bonds over the critical stretch break
+// (damage/critical_stretch.hpp) and the assemblers that read those bonds recompute their
+// moments. The pattern keeps the broken bonds' slots as zeros, so no symbolic
+// re-analysis is needed. A static matrix-free run also breaks the bonds of its
+// short-horizon preconditioner (`short_bonds`), with the same rule and s0.
+#include "effects/damage_evolution.hpp"
+
+#include <fmt/core.h>
+
+#include <optional>
+
+namespace pd {
+
+namespace {
+class DamageEvolution final : public Effect {
+ public:
+  // suffix: what the log says after the rule (where s0 came from, when bonds break).
+  DamageEvolution(const Particles& p, Bonds& bonds, FamilyAssembler& assembler, double s0, bool tension_only,
+                  std::string suffix)
+      : damage_(p, bonds, s0, tension_only), assembler_(assembler), suffix_(std::move(suffix)) {}
+  void also_break(const Particles& p, Bonds& bonds, FamilyAssembler& assembler) {
+    short_damage_.emplace(p, bonds, damage_.s0(), damage_.tension_only());
+    short_assembler_ = &assembler;
+  }
+  const CriticalStretchDamage& damage() const { return damage_; }
+  std::string name() const override { return "damage"; }
+  std::string describe() const override { return damage_.describe() + suffix_; }
+  long long after_step(const double* u) override {
+    const int broken = damage_.break_bonds(u);
+    if (broken == 0) return 0;
+    assembler_.update_moments();
+    if (short_damage_ && short_damage_->break_bonds(u) > 0) short_assembler_->update_moments();
+    return broken;
+  }
+
+ private:
+  CriticalStretchDamage damage_;
+  FamilyAssembler& assembler_;
+  std::optional<CriticalStretchDamage> short_damage_;
+  FamilyAssembler* short_assembler_ = nullptr;
+  std::string suffix_;
+};
+}  // namespace
+
+DamageEffect make_damage_evolution(const Scene& s, const Model& m, Bonds& bonds, FamilyAssembler& assembler,
+                                   Bonds* short_bonds, FamilyAssembler* short_assembler) {
+  if (!s.damage) return {};
+  const double s0 = critical_stretch(*s.damage, s.materials[0], s.dim, s.delta(), *m.law, m.params[0], m.influence->weight);
+  std::string suffix = critical_stretch_origin(*s.damage, s.dim, *m.law);
+  if (!s.dynamics) suffix += fmt::format(", between load steps (at most {} re-solves per step)", s.damage->max_resolves);
+  auto effect = std::make_unique<DamageEvolution>(m.particles, bonds, assembler, s0, s.damage->tension_only, std::move(suffix));
+  if (short_bonds && short_assembler) effect->also_break(m.particles, *short_bonds, *short_assembler);
+  const CriticalStretchDamage* rule = &effect->damage();
+  return {std::move(effect), rule};
+}
+
+}  // namespace pd

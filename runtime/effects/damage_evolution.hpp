@@ -1,0 +1,24 @@
+// Critical-stretch damage evolution as an Effect with after_step (damage_evolution.cpp).
+#pragma once
+
+#include <memory>
+
+#include "assembly/assembler.hpp"
+#include "damage/critical_stretch.hpp"
+#include "effects/effect.hpp"
+#include "input/scene.hpp"
+#include "model/model.hpp"
+
+namespace pd {
+
+struct DamageEffect {
+  std::unique_ptr<Effect> effect;            // null without a `damage` section
+  const CriticalStretchDamage* rule = nullptr;  // its s0 and tension rule (owned by effect)
+};
+
+// The scene's `damage` on `bonds` (read by `assembler`); `short_bonds` and
+// `short_assembler` (optional): the static matrix-free preconditioner's, broken alike.
+DamageEffect make_damage_evolution(const Scene& scene, const Model& model, Bonds& bonds, FamilyAssembler& assembler,
+                                   Bonds* short_bonds = nullptr, FamilyAssembler* short_assembler = nullptr);
+
+}  // namespace pd

@@ -1,0 +1,51 @@
+// attach_effects: the list of the scene's effects, in the order the run log names them.
+// A new effect is one file in effects/ plus one line here (and its scene key).
+#include <fmt/core.h>
+
+#include "effects/damage_evolution.hpp"
+#include "effects/loads.hpp"
+#include "model/model.hpp"
+
+namespace pd {
+
+namespace {
+void add(std::vector<std::unique_ptr<Effect>>& effects, std::unique_ptr<Effect> e) {
+  if (e) effects.push_back(std::move(e));
+}
+
+// A static run: one dead-load vector for every traction and body-force condition, one
+// crack-pressure effect for all cracks; all follow the load factor.
+void add_static_loads(Model& m, const Scene& s) {
+  add(m.effects, make_external_loads(s, m.particles));
+  add(m.effects, make_crack_pressure(s, m.particles, m.bonds));
+  add(m.effects, make_body_force_field(s, m.particles));
+}
+
+// A dynamic run: each condition and each pressurised crack scaled by its own function
+// of time (relaxation has none: every load in full).
+void add_timed_loads(Model& m, const Scene& s) {
+  for (const BoundaryCondition& bc : s.boundary) {
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    add(m.effects, make_timed(make_external_loads(s, m.particles, std::span(&bc, 1)), bc.time.value_or(TimeFunction{}),
+                              bc.time ? ", times " + bc.time->describe() : std::string()));
+  }
+  for (const Crack& crack : s.cracks)
+    if (auto e = make_crack_pressure(std::span(&crack, 1), s.h, m.particles, m.bonds))
+      add(m.effects, make_timed(std::move(e), crack.time.value_or(TimeFunction{}),
+                                crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
+  if (auto e = make_body_force_field(s, m.particles)) add(m.effects, make_timed(std::move(e), TimeFunction{}, ", constant in time"));
+}
+}  // namespace
+
+void attach_effects(Model& m, const Scene& s) {
+  if (!m.assembler) throw std::logic_error("attach_effects: attach the assembler first");
+  if (s.dynamics) add_timed_loads(m, s);
+  else add_static_loads(m, s);
+  add(m.effects, make_pre_cracks(m.cut_by_cracks));
+  DamageEffect damage = make_damage_evolution(s, m, m.bonds, *m.assembler, m.approximation ? &m.short_bonds : nullptr,
+                                              m.approximation.get());
+  m.damage = damage.rule;
+  add(m.effects, std::move(damage.effect));
+}
+
+}  // namespace pd
