@@ -26,6 +26,11 @@ TEST(RelocatedStudy, PlotsWithTheScriptBesideTheBinaryAndNamesItWhenMissing) {
   const std::string expected = (root / "share" / "pdgen" / "plot_study.py").string();
   EXPECT_NE(bare.out.find("no plots: " + expected + " is missing"), std::string::npos) << bare.out;
   EXPECT_FALSE(fs::exists(out / "uniaxial_convergence.png"));
+  // Progress: the first of the two points' lines ends with an ETA for the other, the last with none.
+  const auto first = bare.out.find("[1/2]"), second = bare.out.find("[2/2]");
+  ASSERT_NE(second, std::string::npos) << bare.out;
+  EXPECT_NE(bare.out.substr(first, second - first).find(", ETA "), std::string::npos) << bare.out;
+  EXPECT_EQ(bare.out.substr(second, bare.out.find('\n', second) - second).find("ETA"), std::string::npos) << bare.out;
 
   fs::create_directories(root / "share" / "pdgen");
   fs::copy_file(PD_PLOT_SCRIPT, root / "share" / "pdgen" / "plot_study.py");
