@@ -85,7 +85,7 @@ StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std:
         report.non_finite.size(), n, assembler.law().name, first_five(report.non_finite)));
   if (2 * static_cast<long long>(report.blind.size()) > n) {
     const std::string list = first_five(report.blind);
-    throw std::runtime_error(fmt::format(
+    throw SceneError(fmt::format(  // the scene's horizon and influence: bad input (exit 2)
         "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = {:.4g}): {}; "
         "their bonds are too few or too aligned for this law (on a square lattice, delta/h < 1.42 leaves only the axial "
         "bonds, which do not stretch under shear): increase the horizon ratio",

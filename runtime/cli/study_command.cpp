@@ -13,7 +13,7 @@ namespace pd::cli {
 
 namespace {
 struct StudyOptions {
-  std::string path, out = "out/study";
+  std::string path, out = "out/study", placement;
   bool quick = false;
 };
 
@@ -24,6 +24,7 @@ int run_study_file(const StudyOptions& options) {
   StudySpec spec;
   try {
     spec = read_study(path);
+    spec.placement = options.placement;
   } catch (const SceneError& e) {
     fmt::print(stderr, "pd study: {}\n", e.what());
     return 2;
@@ -51,6 +52,8 @@ Command add_study_command(CLI::App& pd) {
   auto options = std::make_shared<StudyOptions>();
   cmd->add_option("STUDY", options->path, "the study file (YAML)")->required();
   cmd->add_option("--out", options->out, "the output directory DIR")->capture_default_str();
+  cmd->add_option("--placement", options->placement, "replace every problem's domain.placement (node or cell)")
+      ->check(CLI::IsMember({"node", "cell"}));
   cmd->add_flag("--quick", options->quick, "run the study's reduced sweep");
   return [options] { return run_study_file(*options); };
 }

@@ -95,15 +95,16 @@ FamilyQualityReport check_family_quality(const Particles& p, const Bonds& b, dou
         "(almost) no weighted volume, a family being cut by the boundary in every direction: {}; reduce the horizon "
         "(horizon.ratio or horizon.length) below the body's size",
         delta, largest_extent(p), light.size(), describe(p, b, light, "ratio")));
+  // The scene's horizon, influence or geometry: bad input (exit 2), like the above.
   if (!light.empty())
-    throw std::runtime_error(fmt::format(
+    throw SceneError(fmt::format(
         "{} particle(s) have (almost) no weighted volume: sum w |xi|^2 V is below {:g} of a full horizon's with influence "
         "{} at delta/h = {:.4g} (near delta/h = 1 the only bonds lie at r = delta, where many influence functions vanish; "
         "a particle whose bonds are all cut has none): {}; "
         "increase the horizon ratio or choose another influence function",
         light.size(), limits.min_weighted_volume_ratio, influence_name, delta / h, describe(p, b, light, "ratio")));
   if (!singular.empty())
-    throw std::runtime_error(fmt::format(
+    throw SceneError(fmt::format(
         "{} particle(s) have a near-singular shape tensor sum w xi (x) xi V (condition number above {:g}; influence {}, "
         "delta/h = {:.4g}): their bonds do not span every direction, so the deformation gradient and the stiffness are "
         "undetermined: {}; increase the horizon ratio, or check cracks and thin parts of the geometry",

@@ -31,6 +31,9 @@ bool Shape::contains(const double* x, int dim) const {
 }
 
 bool Region::contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const {
+  if (has_within)
+    for (int i = 0; i < dim; ++i)
+      if (x[i] < within_min[i] || x[i] > within_max[i]) return false;
   switch (kind) {
     case Kind::All:
       return true;

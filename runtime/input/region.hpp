@@ -19,6 +19,10 @@ struct Region {
                              // Collar: depth from the box faces, set from `horizons` by region_particles
   double horizons = 0;       // Collar: depth in horizons
   Point min{}, max{};        // Box / Outside (the complement of the box)
+  // Optional `within: {min, max}`: only the region's particles inside this box (the middle
+  // of a side, whatever the placement puts its outermost row).
+  bool has_within = false;
+  Point within_min{}, within_max{};
   // True when a particle at x belongs (domain bounds lo/hi, spacing h).
   bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;
 };

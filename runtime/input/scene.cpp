@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/core.h>
 
 #include "input/block_domain.hpp"
 #include "input/particle_domain.hpp"
@@ -105,6 +106,15 @@ Region read_region(const YamlAt& at, int dim) {
     ++kinds;
   }
   if (kinds != 1) at.fail("give exactly one of side, box, outside, collar, all");
+  if (m.has("within")) {
+    MapReader b(m.get("within"));
+    r.has_within = true;
+    r.within_min = to_point(b.get("min"), dim);
+    r.within_max = to_point(b.get("max"), dim);
+    b.finish();
+    for (int i = 0; i < dim; ++i)
+      if (r.within_max[i] < r.within_min[i]) m.get("within").fail("max must not be below min in any coordinate");
+  }
   m.finish();
   return r;
 }
@@ -203,6 +213,8 @@ void check_crack_polygon(const YamlAt& at, const std::vector<Point>& poly) {
   }
 }
 
+constexpr double kLargestModulus = 1e100;
+
 MaterialSpec read_material(const YamlAt& at, int dim) {
   MapReader m(at);
   MaterialSpec s;
@@ -215,6 +227,15 @@ MaterialSpec read_material(const YamlAt& at, int dim) {
   } catch (const std::invalid_argument& e) {
     at.fail(e.what());
   }
+  // Forces scale with the moduli, and the solver squares them (residual norms, the
+  // factorisation's products): past ~1e100 that overflows double precision, and the run
+  // would end in "the residual is not finite". Name the key instead.
+  for (const char* key : {"E", "K", "G"})
+    if (m.has(key) && std::fabs(m.number(key)) > kLargestModulus)
+      m.get(key).fail(fmt::format("{:g} is too large a modulus for double precision (the solver squares forces; "
+                                  "above {:g} they overflow): give the moduli in units that make them moderate (e.g. "
+                                  "MPa or GPa instead of Pa)",
+                                  m.number(key), kLargestModulus));
   const std::string plane = m.choice("plane", dim == 2 ? "strain" : "none", dim == 2 ? std::vector<std::string>{"strain", "stress"} : std::vector<std::string>{"none"});
   s.plane = plane == "strain" ? PlaneAssumption::Strain : plane == "stress" ? PlaneAssumption::Stress : PlaneAssumption::None;
   s.density = m.number("density", 1.0);

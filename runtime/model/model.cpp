@@ -10,6 +10,7 @@
 #include "discretize/crack_cut.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
+#include "input/yaml_keys.hpp"  // SceneError
 #include "discretize/partial_volume.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
@@ -52,7 +53,7 @@ Model build_model(const Scene& scene) {
   const Particles& p = m.particles;
   for (int i = 0; i < p.size(); ++i)
     if (m.bonds.family_size(i) == 0)
-      throw std::runtime_error(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", i,
+      throw SceneError(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", i,
                                            p.x[i * p.dim], p.x[i * p.dim + 1]));
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)

@@ -2,6 +2,8 @@
 // point, or the mean over the probe's particles.
 #include "post/probe_reference.hpp"
 
+#include <algorithm>
+
 #include "input/yaml_keys.hpp"
 
 namespace pd {
@@ -19,7 +21,10 @@ Point probe_region_point(const Probe& probe, const Scene& s) {
     return x;
   }
   if (r.kind == Region::Kind::Side) {
-    for (int c = 0; c < 3; ++c) x[c] = 0.5 * (s.lo[c] + s.hi[c]);
+    // The middle of the face, or of its part `within` selects; then onto the face itself.
+    for (int c = 0; c < 3; ++c)
+      x[c] = r.has_within ? 0.5 * (std::max(s.lo[c], r.within_min[c]) + std::min(s.hi[c], r.within_max[c]))
+                          : 0.5 * (s.lo[c] + s.hi[c]);
     const std::string& side = r.side;
     if (side == "left") x[0] = s.lo[0];
     else if (side == "right") x[0] = s.hi[0];

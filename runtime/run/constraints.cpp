@@ -100,7 +100,9 @@ std::string missing_constraints(const Particles& p, const std::vector<int>& dofs
 }
 }  // namespace
 
-void check_held(const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
+namespace {
+// Empty when every cluster is held; otherwise what leaves the first free one free.
+std::string unheld_message(const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
   // Clusters of particles joined by intact bonds (union-find): each needs its own
   // constraints, or it floats (a particle whose every bond is broken is a cluster of one).
   const int n = particles.size(), d = particles.dim;
@@ -127,8 +129,26 @@ void check_held(const Particles& particles, const Bonds& bonds, const DofMap& do
                                  : fmt::format("a cluster of {} particle(s) joined by intact bonds (particles {}{}; the first at ({:.6g}, {:.6g})) "
                                                "is disconnected from the rest of the body and under-constrained: ",
                                                members.size(), list, members.size() > 8 ? ", ..." : "", x[0], x[1]);
-    throw std::runtime_error(what + missing.substr(0, missing.size() - 2));
+    return what + missing.substr(0, missing.size() - 2);
   }
+  return {};
+}
+}  // namespace
+
+void check_held(const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
+  if (const std::string m = unheld_message(particles, bonds, dofs); !m.empty()) throw std::runtime_error(m);
+}
+
+void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
+  const std::string m = unheld_message(particles, bonds, dofs);
+  if (m.empty()) return;
+  // Without constraints even a load-free body has no unique static solution (any rigid
+  // motion is one): refuse rather than report u = 0.
+  if (scene.boundary.empty())
+    throw SceneError(scene.file + ": boundary: the scene has no boundary section, so nothing holds the body (" + m +
+                     "); a static solve needs fixed or prescribed displacements that remove its rigid motions "
+                     "(a body in free flight needs a dynamics section)");
+  throw SceneError(scene.file + ": boundary: " + m);
 }
 
 }  // namespace pd

@@ -32,5 +32,8 @@ DofMap scene_constraints(const Scene& scene, const Particles& particles);
 // rigid translation or rotation the constraints leave free: dead loads cannot balance a
 // free rigid mode, and the message beats a singular factorisation.
 void check_held(const Particles& particles, const Bonds& bonds, const DofMap& dofs);
+// The same before a static solve, where a body the scene leaves free is bad input: throws
+// SceneError (exit 2), naming the missing `boundary` section when the scene has none.
+void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds, const DofMap& dofs);
 
 }  // namespace pd

@@ -45,7 +45,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   DynamicsReport& rep = *summary_.dynamics;
   rep.dt = 1;
   DofMap dofs = scene_constraints(scene_, model_.particles);
-  check_held(model_.particles, model_.bonds, dofs);
+  check_scene_holds_body(scene_, model_.particles, model_.bonds, dofs);
   AdaptiveDynamicRelaxation adr(density_, free_);
   int step = 0;
   long long broken_start = broken_bond_count(model_.bonds);

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
@@ -125,15 +126,36 @@ void Simulation::smooth() {
   }
 }
 
+// No load at all: the solution is zero, and Newton would only chase the residual's
+// rounding noise. A load that falls entirely on prescribed components (a traction on
+// fixed particles) is taken by the constraints and does no work: warned, and no load.
+bool Simulation::has_load(const DofMap& dofs) {
+  const auto free_force = [&](const Effect& e) {
+    std::vector<double> zero(u_.size(), 0.0), force(u_.size(), 0.0);
+    e.add_forces(zero.data(), 1.0, force.data());
+    return dofs.restrict_free(Eigen::Map<const Eigen::VectorXd>(force.data(), static_cast<Eigen::Index>(force.size()))).norm();
+  };
+  for (const BoundaryCondition& bc : scene_.boundary) {
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (free_force(*make_external_loads(scene_, model_.particles, std::span(&bc, 1))) > 0.0) continue;
+    const std::string w = bc.where + ": the " + (bc.kind == BoundaryCondition::Kind::Traction ? "traction" : "body force") +
+                          " acts only on components whose displacement is prescribed: the constraints take it and it "
+                          "does no work (check the regions)";
+    summary_.warnings.push_back(w);
+    log_("  warning: " + w);
+  }
+  bool loaded = false;
+  for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
+  for (const auto& e : model_.effects) loaded = loaded || free_force(*e) > 0.0;
+  if (!loaded) log_("  no load on a free component and no prescribed displacement: the solution is zero");
+  return loaded;
+}
+
 RunSummary Simulation::run(bool write) {
   const auto t0 = std::chrono::steady_clock::now();
   const DofMap dofs = scene_constraints(scene_, model_.particles);
-  check_held(model_.particles, model_.bonds, dofs);
-  // No load at all: the solution is zero (and the residual is rounding noise).
-  bool loaded = false;
-  for (const auto& e : model_.effects) loaded = loaded || e->is_load();
-  for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
-  if (!loaded) log_("  no load and no prescribed displacement: the solution is zero");
+  check_scene_holds_body(scene_, model_.particles, model_.bonds, dofs);
+  const bool loaded = has_load(dofs);
 
   std::vector<const Effect*> effects;
   for (const auto& e : model_.effects) effects.push_back(e.get());

@@ -44,6 +44,7 @@ class Simulation {
 
  private:
   NewtonSettings newton_settings() const;
+  bool has_load(const DofMap& dofs);  // false (and logged why) when the solution is zero
   void smooth();
   void write_outputs();
   const Scene scene_;  // never changed after reading

@@ -9,6 +9,7 @@
 
 #include "interrupt.hpp"
 #include "solve/linear_step.hpp"
+#include "solve/stopwatch.hpp"
 
 namespace pd {
 
@@ -54,6 +55,9 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       s_.matrix_free ? make_matrix_free_step(s_, sys, log_) : make_assembled_step(s_, sys.symmetric(), log_);
   Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
   double reference = 0;
+  // Each iteration's line carries the time since the solve began: a long solve shows
+  // where it is and how fast it goes (factorisations and Krylov solves are inside).
+  const auto started = std::chrono::steady_clock::now();
 
   // Newton iterations of one load step (round > 0: solved again after after_step
   // changed the system); false with res.message set when they fail.
@@ -70,13 +74,14 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       rec.residual = norm;
       res.history.push_back(rec);
       say(fmt::format(
-          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}", load, step,
+          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}  t = {:.1f} s", load, step,
           s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it, norm,
           reference > 0 ? norm / reference : 0.0,
           it == 0 ? std::string()
                   : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
                                 rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
-                                                      : std::string())));
+                                                      : std::string()),
+          seconds_since(started)));
       if (!std::isfinite(norm)) {
         res.message =
             fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);

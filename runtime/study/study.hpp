@@ -44,6 +44,10 @@ struct StudySpec {
   // Orders are also fitted on the finest `fine_points` resolutions of each series (the
   // asymptotic order, and the paper's "data after the jagged trend begins"); 0: not.
   int fine_points = 0;
+  // Replaces every problem's domain.placement (`pd study --placement`); empty: each scene's
+  // own. Paper 000 places nodes on the faces; `cell` measures the same series on the
+  // cell-centred lattice (docs/paper000.md section 1). Part of each point's cache key.
+  std::string placement;
   // The paper's values, keyed "problem|law|influence|ratio[|count]" (problem = scene file stem).
   std::map<std::string, PaperValues> paper;
 };
@@ -58,6 +62,7 @@ struct StudyPoint {
   std::string problem, law, influence;
   double ratio = 0, h = 0;
   int count = 0;
+  std::string placement;  // the override of StudySpec::placement (empty: the scene's own)
   bool converged = false;
   std::string failure;
   double error = 0;  // the first probe's error, or the field error (eq. 48) when the scene has a reference

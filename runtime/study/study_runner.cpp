@@ -15,6 +15,7 @@
 #include "output/atomic_file.hpp"
 #include "post/smoothing.hpp"
 #include "run/simulation.hpp"
+#include "study/installed_data.hpp"
 #include "study/peak_memory.hpp"
 #include "study/study.hpp"
 
@@ -23,7 +24,8 @@ namespace pd {
 namespace fs = std::filesystem;
 
 std::string StudyPoint::key() const {
-  return fmt::format("{}__{}__{}__r{}__n{}", problem, law, influence, ratio, count);
+  const std::string key = fmt::format("{}__{}__{}__r{}__n{}", problem, law, influence, ratio, count);
+  return placement.empty() ? key : key + "__" + placement;
 }
 
 double StudyPoint::error_of(const std::string& smoothing_influence) const {
@@ -34,7 +36,7 @@ double StudyPoint::error_of(const std::string& smoothing_influence) const {
 
 namespace {
 nlohmann::json to_json(const StudyPoint& p) {
-  return {{"problem", p.problem}, {"law", p.law}, {"influence", p.influence}, {"ratio", p.ratio}, {"count", p.count},
+  return {{"problem", p.problem}, {"law", p.law}, {"influence", p.influence}, {"ratio", p.ratio}, {"count", p.count}, {"placement", p.placement},
           {"h", p.h}, {"converged", p.converged}, {"failure", p.failure}, {"error", std::isfinite(p.error) ? p.error : -1.0},
           {"particles", p.particles}, {"nonzeros", p.nonzeros}, {"setup_seconds", p.setup_seconds},
           {"assembly_seconds", p.assembly_seconds}, {"solve_seconds", p.solve_seconds}, {"total_seconds", p.total_seconds},
@@ -44,6 +46,7 @@ nlohmann::json to_json(const StudyPoint& p) {
 StudyPoint from_json(const nlohmann::json& j) {
   StudyPoint p;
   p.problem = j["problem"], p.law = j["law"], p.influence = j["influence"];
+  p.placement = j.value("placement", std::string());
   p.ratio = j["ratio"], p.count = j["count"], p.h = j["h"], p.converged = j["converged"], p.failure = j["failure"];
   p.error = j["error"].get<double>() < 0 ? NAN : j["error"].get<double>();
   p.particles = j["particles"], p.nonzeros = j["nonzeros"];
@@ -66,6 +69,7 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   s.horizon_ratio = id.ratio;
   s.horizon_length = 0;
   s.h = pt.h;
+  if (!id.placement.empty()) s.placement = id.placement;
   // Estimated bonds: particles (from the box, before holes) x the lattice sites in a disc of radius delta/h.
   double particles = 1;
   for (int c = 0; c < s.dim; ++c) particles *= (s.hi[c] - s.lo[c]) / s.h;
@@ -104,6 +108,19 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   return pt;
 }
 
+// A point's cost in arbitrary units for the ETA: its bonds, particles x (delta/h)^dim.
+// Direct factorisations grow faster than that, so the ETA is a lower bound early on.
+double point_cost(const Scene& scene, const StudyPoint& p) {
+  const double particles = std::pow(p.count, scene.dim), neighbours = std::pow(p.ratio, scene.dim);
+  return particles * neighbours;
+}
+
+std::string eta_text(double seconds) {
+  if (seconds < 120) return fmt::format("ETA {:.0f} s", seconds);
+  if (seconds < 7200) return fmt::format("ETA {:.1f} min", seconds / 60);
+  return fmt::format("ETA {:.1f} h", seconds / 3600);
+}
+
 template <class T>
 const std::vector<T>& pick(bool quick, const std::vector<T>& full, const std::vector<T>& reduced) {
   return quick && !reduced.empty() ? reduced : full;
@@ -121,6 +138,7 @@ std::vector<StudyPoint> plan(const StudySpec& spec, const std::string& problem, 
           for (int count : pick(quick, w.counts, spec.quick.counts)) {
             StudyPoint p;
             p.problem = problem, p.law = law, p.influence = inf, p.ratio = ratio, p.count = count;
+            p.placement = spec.placement;
             const auto [it, added] = seen.emplace(p.key(), out.size());
             if (added) out.push_back(p);
             for (const auto& name : pick(quick, w.smoothing, spec.quick.smoothing)) {
@@ -155,10 +173,17 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
     problems.push_back({path, read_scene(path), plan(spec, fs::path(path).stem().string(), quick)});
     total += problems.back().todo.size();
   }
+  // The ETA: seconds per unit of estimated cost, measured on the points run so far (not
+  // the cached ones), times the cost still to come.
+  std::map<const StudyPoint*, double> cost;
+  double cost_left = 0, cost_run = 0, seconds_run = 0;
+  for (const Problem& problem : problems)
+    for (const StudyPoint& id : problem.todo) cost_left += cost[&id] = point_cost(problem.scene, id);
   std::vector<StudyPoint> points;
   for (const Problem& problem : problems) {
     for (const StudyPoint& id : problem.todo) {
       ++done;
+      cost_left -= cost[&id];
       const fs::path cache = fs::path(out) / "points" / (id.key() + ".json");
       StudyPoint pt;
       bool cached = false;
@@ -170,22 +195,28 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
       if (!cached) {
         pt = run_point(problem.scene, spec, id);
         write_file_atomically(cache.string(), to_json(pt).dump(1));
+        cost_run += cost[&id];
+        seconds_run += pt.total_seconds;
       }
+      const std::string eta = cost_run > 0 && done < total ? ", " + eta_text(seconds_run / cost_run * cost_left) : "";
       pt.smoothing = id.smoothing;
       std::string smoothed;
       for (const auto& name : pt.smoothing) smoothed += fmt::format(", smoothed ({}) {:.3e}", name, pt.error_of(name));
       log(fmt::format("[{}/{}] {} {} {} delta/h={} n={}: {}", done, total, pt.problem, pt.law, pt.influence, pt.ratio,
                       pt.count,
                       pt.converged ? fmt::format("error {:.3e}{}, {:.3f} s, {}", pt.error, smoothed, pt.total_seconds, pt.solver)
-                                   : "FAILED: " + pt.failure));
+                                   : "FAILED: " + pt.failure) + eta);
       points.push_back(pt);
     }
   }
   const auto orders = write_study_report(spec, points, out, quick);
   // Plots, when matplotlib is there: Debian's python3-matplotlib for /usr/bin/python3 (scripts/install_deps.sh),
-  // called by absolute path because a python3 earlier on PATH (pyenv) may not see it.
-  const fs::path script = fs::path(PD_SOURCE_DIR) / "scripts" / "plot_study.py";
-  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0) {
+  // called by absolute path because a python3 earlier on PATH (pyenv) may not see it. The script ships
+  // beside pd (share/pdgen/, build and installed trees alike), not in a source checkout that may be gone.
+  const fs::path script = installed_data_file("plot_study.py");
+  if (!fs::exists(script)) {
+    log("no plots: " + script.string() + " is missing (it is installed beside pd, in ../share/pdgen/)");
+  } else if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0) {
     const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), out);
     if (std::system(cmd.c_str()) != 0) log("plotting failed: " + cmd);
   } else {

@@ -34,7 +34,9 @@ inline std::filesystem::path fresh_directory(const std::string& name) {
   return dir;
 }
 
-inline PdResult run_pd(const std::vector<std::string>& args, const std::filesystem::path& cwd = {}) {
+// `exe`: another copy of pd (a relocated one), by default the build's.
+inline PdResult run_pd(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
+                       const std::string& exe = PD_EXE) {
   const auto tmp = fresh_directory("io");
   const auto out_file = tmp / "stdout", err_file = tmp / "stderr";
   const pid_t pid = fork();
@@ -44,10 +46,10 @@ inline PdResult run_pd(const std::vector<std::string>& args, const std::filesyst
     const int e = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(o, STDOUT_FILENO);
     dup2(e, STDERR_FILENO);
-    std::vector<char*> argv{const_cast<char*>(PD_EXE)};
+    std::vector<char*> argv{const_cast<char*>(exe.c_str())};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    execv(PD_EXE, argv.data());
+    execv(exe.c_str(), argv.data());
     _exit(127);
   }
   int status = 0;

@@ -20,9 +20,8 @@ pd::ProbeResult top_probe(const std::string& placement, const std::string& refer
   s.h = 10.0 / 20;
   s.law = "correspondence_plane_strain";
   s.horizon_ratio = 1.5;
+  // The probe is the middle of the top side (`within`): the outermost row on either lattice.
   pd::Probe& p = s.probes.at(0);
-  // Cell placement has no particle at y = H: the probe box reaches down to the top row.
-  if (placement == "cell") p.region.min[1] = 9.5;
   if (reference_at == "particles") p.reference_at = pd::Probe::ReferenceAt::particles;
   if (reference_at == "point") {
     p.reference_at = pd::Probe::ReferenceAt::point;

@@ -53,6 +53,7 @@ cases = [
  ("missing_domain", "domain:\n  box: {min: [0, 0], max: [1, 1]}\n  count: 6\n", "", "dimension: 2", r"\(top level\)", "missing required key 'domain'"),
  ("missing_materials", "materials:\n  - {E: 1, nu: 0.25}\n", "", "dimension: 2", r"\(top level\)", "missing required key 'materials'"),
  ("missing_nu", "{E: 1, nu: 0.25}", "{E: 1}", None, r"materials\[0\]", ""),
+ ("within_inverted", "region: {side: top}", "region: {side: top, within: {min: [1, 1], max: [0, 0]}}", None, r"boundary\[1\]\.region\.within", "max must not be below min"),
  ("missing_box_max", "region: {side: top}", "region: {box: {min: [0, 0.9]}}", None, r"boundary\[1\]\.region\.box", "missing required key 'max'"),
  # unknown keys and names
  ("unknown_top_key", "influence: const", "influence: const\ninfluense: cubic", "influense: cubic", "influense", "unknown key 'influense'"),
@@ -83,13 +84,23 @@ cases = [
  ("yaml_top_level_list", None, "- dimension: 2\n- law: x\n", "- dimension: 2", r"\(top level\)", "expected a map"),
  ("yaml_empty_file", None, "", None, r"\(top level\)", "expected a map"),
  # setup-time checks that used to mislead ("increase the horizon ratio")
- ("overflowing_modulus", "E: 1,", "E: 1e308,", None, None, r"\d+ of \d+ families give law silling_plane_strain an infinite or NaN response.*overflow"),
+ ("overflowing_modulus", "E: 1,", "E: 1e308,", None, r"materials\[0\]\.E", r"1e\+308 is too large a modulus for double precision"),
+ ("overflowing_modulus_1e200", "E: 1,", "E: 1e200,", None, r"materials\[0\]\.E", r"1e\+200 is too large a modulus for double precision"),
+ # set-up checks on what the scene asks for: bad input (exit 2), not a failed solve
+ ("no_stiffness", "ratio: 3.0", "ratio: 1.2", None, None, r"36 of 36 families give law silling_plane_strain no stiffness against some homogeneous strain"),
+ ("missing_boundary", "boundary:\n  - region: {side: bottom}\n    fixed: [x, y]\n  - region: {side: top}\n    traction: [0, 0.01]\n", "", "dimension: 2", None,
+  r"boundary: the scene has no boundary section, so nothing holds the body \(the body is under-constrained: no particle has its x displacement prescribed"),
+ ("under_constrained", "fixed: [x, y]", "fixed: [y]", None, None, r"boundary: the body is under-constrained: no particle has its x displacement prescribed \(rigid translation in x\)"),
+ ("disconnected_cluster", "output:", "cracks:\n  - segment: [[-1, 0.5], [2, 0.5]]\noutput:", "  - segment", None,
+  r"boundary: a cluster of 18 particle\(s\) joined by intact bonds .* is disconnected from the rest of the body and under-constrained"),
  ("memory_count_99999", "count: 6", "count: 99999", None, None,
   r"domain: the scene needs at least [0-9.e+]+ GiB of memory for its particles and bonds alone \(1e\+10 particles.*this machine has [0-9.e+]+ GiB available"),
  ("horizon_beyond_the_body", "ratio: 3.0", "length: 5", None, None, "the horizon delta = 5 exceeds the body"),
 ]
 warn_cases = [
  ("warn_crack_outside", "output:", "cracks:\n  - segment: [[3, 3], [4, 3]]\noutput:", "  - segment", r"cracks\[0\]", "the crack crosses no bond"),
+ ("warn_traction_on_fixed_particles", "region: {side: top}", "region: {side: bottom}", "region: {side: bottom}\n    traction", r"boundary\[1\]",
+  "the traction acts only on components whose displacement is prescribed: the constraints take it and it does no work"),
  ("warn_unused_parameter", "{E: 1, nu: 0.25}", "{E: 1, nu: 0.25, parameters: {stabb: 1}}", None, r"materials\[0\]\.parameters\.stabb",
   "law silling_plane_strain takes no parameter 'stabb'"),
 ]
