@@ -178,7 +178,7 @@ void DistributedBody::assemble_matrix(const FamilyAssembler& a, const std::vecto
     const int L = fam.n_bonds, m = (L + 1) * dim_;
     a.variant().tangent(fam, nullptr, factors);
     double* M = g.local_matrix();
-    form_local_matrix(dim_, S, fam, factors, M);
+    form_local_matrix(a.variant(), dim_, S, fam, factors, M);
     if (coll) scale_neighbour_rows(*coll, *a.inputs().bonds, p, m, M);
     if (!finite(M, static_cast<std::size_t>(m) * m)) {
       bad = p;
