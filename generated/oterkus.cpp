@@ -905,7 +905,14 @@ void oterkus_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   double s_m1 = 0.0;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -916,10 +923,14 @@ void oterkus_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1 + xi_2 * xi_2;
     const double b3 = std::sqrt(b2);
-    s_m1 += b3 * V * alpha * w;
-    s_m2 += b2 * V * alpha * w;
-    s_mx += 1.0 / b2 * V * alpha * w * b1 * b0;
+    lane0[lane] += b3 * V * alpha * w;
+    lane1[lane] += b2 * V * alpha * w;
+    lane2[lane] += 1.0 / b2 * V * alpha * w * b1 * b0;
+    }
   }
+  s_m1 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_m2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_mx += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   moments[0] = s_m1;
   moments[1] = s_m2;
   moments[2] = s_mx;
@@ -937,7 +948,12 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -952,14 +968,23 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -977,12 +1002,16 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double b13 = b11 * Y_1;
     const double b14 = b11 * Y_2;
     forces[(k + 1) * 3 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 3 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
     forces[(k + 1) * 3 + 2] = -b14;
-    forces[2] += b14;
+    lane3[lane] += b14;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_3d_damaged_tangent: per bond 41 add, 125 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
@@ -997,7 +1026,12 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1012,8 +1046,10 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -1022,7 +1058,14 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = 0.6666666666666666 * p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1068,11 +1111,11 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double b44 = b41 * b17 * b31 * b16 * V * alpha * w;
     const double b45 = p10 * b13 * b30 * b16 * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
-    if (forces != nullptr) forces[2] += b22;
+    lane3[lane] += b22;
     factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
     factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
     factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
@@ -1088,7 +1131,11 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_3d_damaged_jvp: per bond 52 add, 134 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
@@ -1104,7 +1151,13 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1132,9 +1185,12 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b11 = b1 * b10 * b9 * V * alpha * w;
     const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    s_theta += b7 * b8 * b9 * V * alpha * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
@@ -1142,7 +1198,14 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -1184,12 +1247,16 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
     const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b44;
-    df[0] += b44;
+    lane2[lane] += b44;
     df[(k + 1) * 3 + 1] = -b46;
-    df[1] += b46;
+    lane3[lane] += b46;
     df[(k + 1) * 3 + 2] = -b47;
-    df[2] += b47;
+    lane4[lane] += b47;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // oterkus_3d_damaged_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -1198,7 +1265,12 @@ void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m1 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1211,9 +1283,168 @@ void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void oterkus_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 // oterkus_3d_intact_moments: per bond 2 add, 11 mul, 1 div, 1 call; per family 0 add, 0 mul, 0 div, 0 call
@@ -1222,7 +1453,14 @@ void oterkus_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   double s_m1 = 0.0;
   double s_m2 = 0.0;
   double s_mx = 0.0;
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1232,10 +1470,14 @@ void oterkus_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
     const double b1 = xi_1 * xi_1;
     const double b2 = b0 + b1 + xi_2 * xi_2;
     const double b3 = std::sqrt(b2);
-    s_m1 += b3 * V * w;
-    s_m2 += b2 * V * w;
-    s_mx += 1.0 / b2 * V * w * b1 * b0;
+    lane0[lane] += b3 * V * w;
+    lane1[lane] += b2 * V * w;
+    lane2[lane] += 1.0 / b2 * V * w * b1 * b0;
+    }
   }
+  s_m1 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_m2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_mx += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   moments[0] = s_m1;
   moments[1] = s_m2;
   moments[2] = s_mx;
@@ -1253,7 +1495,12 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1267,14 +1514,23 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
   const double p6 = 0.3333333333333333 * s_theta * (4.5 * P_K - p5 * s_m2 * P_G) * (1.0 / s_m1);
   const double p7 = p5 * P_G;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1291,12 +1547,16 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double b13 = b11 * Y_1;
     const double b14 = b11 * Y_2;
     forces[(k + 1) * 3 + 0] = -b12;
-    forces[0] += b12;
+    lane1[lane] += b12;
     forces[(k + 1) * 3 + 1] = -b13;
-    forces[1] += b13;
+    lane2[lane] += b13;
     forces[(k + 1) * 3 + 2] = -b14;
-    forces[2] += b14;
+    lane3[lane] += b14;
+    }
   }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_3d_intact_tangent: per bond 41 add, 114 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
@@ -1311,7 +1571,12 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   double* const cache = fam.scratch;
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1325,8 +1590,10 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p4 = 2.0 * V0;
   const double p5 = 0.5 * (1.0 / s_mx);
@@ -1335,7 +1602,14 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   const double p8 = 0.3333333333333333 * s_theta * p6 * p7;
   const double p9 = p5 * P_G;
   const double p10 = 0.6666666666666666 * p6 * p7;
-  for (int k = 0; k < L; ++k) {
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b11 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1380,11 +1654,11 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double b44 = b41 * b17 * b31 * b16 * V * w;
     const double b45 = p10 * b13 * b30 * b16 * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
-    if (forces != nullptr) forces[0] += b20;
+    lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
-    if (forces != nullptr) forces[1] += b21;
+    lane2[lane] += b21;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b22;
-    if (forces != nullptr) forces[2] += b22;
+    lane3[lane] += b22;
     factors.direct[k * 9 + 0] = b24 + b33 * Y_0 - b34 * b27;
     factors.direct[k * 9 + 1] = b35 * Y_0 - b36;
     factors.direct[k * 9 + 2] = b37 * Y_0 - b39;
@@ -1400,7 +1674,11 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     factors.left[(k * 1 + 0) * 3 + 0] = b45 * Y_0;
     factors.left[(k * 1 + 0) * 3 + 1] = b45 * Y_1;
     factors.left[(k * 1 + 0) * 3 + 2] = b45 * Y_2;
+    }
   }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
 // oterkus_3d_intact_jvp: per bond 52 add, 124 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
@@ -1416,7 +1694,13 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   double s_theta = 0.0;
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1443,9 +1727,12 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b11 = b1 * b10 * b9 * V * w;
     const double b12 = p0 * b6 * b8 * b9 * V * w;
     const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    s_theta += b7 * b8 * b9 * V * w;
-    ds_theta += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+    lane0[lane] += b7 * b8 * b9 * V * w;
+    lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p14 = 0.5 * (1.0 / s_mx);
   const double p15 = 4.5 * P_K - p14 * s_m2 * P_G;
@@ -1453,7 +1740,14 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   const double p17 = 0.3333333333333333 * s_theta * p15 * p16;
   const double p18 = p14 * P_G;
   const double p19 = 0.6666666666666666 * ds_theta * p15 * p16;
-  for (int k = 0; k < L; ++k) {
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double b20 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b21 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -1494,12 +1788,16 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
     const double b47 = V0 * (dY_0 * (b36 * Y_2 - b42) + dY_1 * (b38 * Y_2 - b45) + dY_2 * (b27 + b40 * Y_2 - b37 * b32) + b43 * Y_2) * V;
     df[(k + 1) * 3 + 0] = -b44;
-    df[0] += b44;
+    lane2[lane] += b44;
     df[(k + 1) * 3 + 1] = -b46;
-    df[1] += b46;
+    lane3[lane] += b46;
     df[(k + 1) * 3 + 2] = -b47;
-    df[2] += b47;
+    lane4[lane] += b47;
+    }
   }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // oterkus_3d_intact_outputs: per bond 8 add, 16 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -1508,7 +1806,12 @@ void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const double s_m1 = fam.moments[0];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m1);
-  for (int k = 0; k < L; ++k) {
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1520,9 +1823,168 @@ void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    s_theta += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    }
   }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   outputs[0] = s_theta;
+}
+
+// oterkus_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void oterkus_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
 }
 
 pd::abi::LawDescriptor oterkus_3d_descriptor() {
@@ -1550,6 +2012,7 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.damaged.jvp = &oterkus_3d_damaged_jvp;
   d.damaged.jvp_ops = {52, 134, 6, 2};
   d.damaged.outputs = &oterkus_3d_damaged_outputs;
+  d.damaged.form = &oterkus_3d_damaged_form;
   d.intact.moments = &oterkus_3d_intact_moments;
   d.intact.residual = &oterkus_3d_intact_residual;
   d.intact.residual_ops = {12, 30, 4, 2};
@@ -1558,6 +2021,7 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.intact.jvp = &oterkus_3d_intact_jvp;
   d.intact.jvp_ops = {52, 124, 6, 2};
   d.intact.outputs = &oterkus_3d_intact_outputs;
+  d.intact.form = &oterkus_3d_intact_form;
   return d;
 }
 
