@@ -15,6 +15,7 @@
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
 #include "output/output_directory.hpp"
+#include "petsc/distributed_dynamics.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 #include "solve/distributed_backend.hpp"
@@ -76,7 +77,9 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   if (!distributed_backend_available())
     return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
                        "scripts/install_deps.sh and configure again)");
-  if (scene.dynamics) return std::string("solver.backend: petsc solves static scenes; dynamics runs on the serial backend");
+  if (scene.dynamics && scene.dynamics->method != DynamicsMethod::explicit_verlet)
+    return std::string("solver.backend: petsc runs static scenes and explicit dynamics; dynamic relaxation runs on the "
+                       "serial backend (or solve the scene statically with backend petsc)");
   return std::nullopt;
 }
 
@@ -128,7 +131,7 @@ int run_scene(const RunOptions& options) {
     if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
     if (scene.dynamics) {
       DynamicSimulation sim(std::move(scene), log);
-      s = sim.run();
+      s = session ? run_distributed_dynamics(sim, true) : sim.run();
     } else {
       Simulation sim(std::move(scene), log);
       s = sim.run(rank == 0);

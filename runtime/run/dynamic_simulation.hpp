@@ -73,6 +73,7 @@ class DynamicSimulation {
   void write_results();
   RunSummary run_explicit(bool write, int stop_after);
   RunSummary run_relaxation(bool write, int stop_after);
+  friend class DistributedExplicit;  // the MPI loop over the same set-up (runtime/petsc/distributed_explicit.cpp)
 
   const Scene scene_;  // never changed after reading
   Log log_;
