@@ -5,17 +5,17 @@
 
 namespace pd {
 
-class DynamicSimulation;
+struct DynamicRun;
 struct RunSummary;
 
-// Runs `sim` (built on every rank from the same scene, so its set-up -- model, masses,
-// stable time step -- is the serial one bit for bit) with each rank stepping only its
+// Runs `run` (prepared on every rank from the same scene by prepare_dynamic_run, so its
+// set-up -- model, inertia, stable time step -- is the serial one bit for bit) with each rank stepping only its
 // own particles: one ghost update of u per step, the forces of its own families summed
 // into their owners, bonds broken on its own families. Rank 0 gathers the state when a
 // series row, snapshot or checkpoint is due and writes the serial run's files (when
 // `write`); checkpoints are the serial format, restartable with any rank count.
 // Refuses dynamic relaxation (std::runtime_error): its damping needs global sums the
 // serial AdaptiveDynamicRelaxation does not take.
-RunSummary run_distributed_dynamics(DynamicSimulation& sim, bool write, int stop_after = 0);
+RunSummary run_distributed_dynamics(DynamicRun& run, bool write, int stop_after = 0);
 
 }  // namespace pd

@@ -1,12 +1,12 @@
-// Explicit dynamics over the ranks: the serial driver's set-up and velocity Verlet, each
-// rank stepping its own particles. Per step: the first half step on the owned free dofs,
+// Explicit dynamics over the ranks: the serial run's set-up (run/dynamic_run.hpp) and
+// velocity Verlet, each rank stepping its own particles. Per step: the first half step on the owned free dofs,
 // the prescribed motion, one ghost update of u (PETSc's forward scatter), bonds over the
 // limit broken in the rank's own families, their forces summed into the owners (the
 // reverse scatter with addition), the second half step. A bond shared by two ranks
 // breaks on both: each holds the same bits of u at both ends after the ghost update and
 // the rule is symmetric bit for bit (damage/critical_stretch.cpp). Rank 0 gathers u, v
 // and the factors alpha when the serial run would read them (a series row, a snapshot,
-// a checkpoint, the end) and writes through the serial driver's own functions.
+// a checkpoint, the end) and writes through the serial run's own functions.
 #include <fmt/core.h>
 #include <petscvec.h>
 
@@ -25,19 +25,21 @@
 #include "petsc/distributed_dynamics.hpp"
 #include "petsc/petsc_check.hpp"
 #include "petsc/rank_gather.hpp"
-#include "run/dynamic_simulation.hpp"
+#include "run/dynamic_run.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
 
 namespace pd {
 
+namespace {
+
 class DistributedExplicit {
  public:
-  explicit DistributedExplicit(DynamicSimulation& sim)
-      : s_(sim), body_(sim.model_.particles, sim.model_.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
-    const int d = s_.model_.particles.dim;
-    std::vector<char> constrained(s_.u_.size(), 0);
-    for (int i : s_.constrained_) constrained[i] = 1;
+  explicit DistributedExplicit(DynamicRun& run)
+      : s_(run), body_(run.model.particles, run.model.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
+    const int d = s_.model.particles.dim;
+    std::vector<char> constrained(s_.u.size(), 0);
+    for (int i : s_.model.dofs.constrained_dofs()) constrained[i] = 1;
     for (int i = 0; i < part_.owned(); ++i) {
       const int p = part_.owned_particle(i);
       owned_families_.push_back(p);
@@ -48,12 +50,12 @@ class DistributedExplicit {
       }
     }
     // Every dof a rank may hold besides its own: what the work's load vector must not count.
-    std::vector<char> owned(s_.u_.size(), 0);
+    std::vector<char> owned(s_.u.size(), 0);
     for (int dof : owned_dofs_) owned[dof] = 1;
     for (std::size_t i = 0; i < owned.size(); ++i)
       if (!owned[i]) foreign_dofs_.push_back(static_cast<int>(i));
-    if (s_.model_.damage)
-      damage_.emplace(s_.model_.particles, s_.model_.bonds, s_.model_.damage->s0(), s_.model_.damage->tension_only());
+    if (s_.model.damage)
+      damage_.emplace(s_.model.particles, s_.model.bonds, s_.model.damage->s0(), s_.model.damage->tension_only());
     x_ = body_.create_vector();
     F_ = body_.create_vector();
   }
@@ -77,7 +79,7 @@ class DistributedExplicit {
     return global;
   }
 
-  DynamicSimulation& s_;
+  DynamicRun& s_;
   DistributedBody body_;
   const Partition& part_;
   std::vector<int> owned_families_, owned_dofs_, owned_free_, owned_constrained_, foreign_dofs_;
@@ -90,23 +92,23 @@ class DistributedExplicit {
 void DistributedExplicit::ghost_update() {
   PetscScalar* a;
   check(VecGetArray(x_, &a), "VecGetArray");
-  for (std::size_t k = 0; k < owned_dofs_.size(); ++k) a[k] = s_.u_[owned_dofs_[k]];
+  for (std::size_t k = 0; k < owned_dofs_.size(); ++k) a[k] = s_.u[owned_dofs_[k]];
   check(VecRestoreArray(x_, &a), "VecRestoreArray");
-  body_.to_local(x_, s_.u_);
+  body_.to_local(x_, s_.u);
 }
 
 // The serial driver's forces() at the owned dofs: f = f_int + loads(t); g = the loads on
 // free dofs and -f_int on constrained ones (the reactions' work), zero at foreign dofs.
 void DistributedExplicit::forces(double t, std::vector<double>& f, std::vector<double>& g) {
-  f.resize(s_.u_.size());
-  g.assign(s_.u_.size(), 0.0);
-  body_.internal_forces(*s_.model_.assembler, s_.u_, f_local_);
+  f.resize(s_.u.size());
+  g.assign(s_.u.size(), 0.0);
+  body_.internal_forces(*s_.model.assembler, s_.u, f_local_);
   body_.from_local(f_local_, F_);
   const PetscScalar* a;
   check(VecGetArrayRead(F_, &a), "VecGetArrayRead");
   for (std::size_t k = 0; k < owned_dofs_.size(); ++k) f[owned_dofs_[k]] = a[k];
   check(VecRestoreArrayRead(F_, &a), "VecRestoreArrayRead");
-  for (const auto& e : s_.model_.effects) e->add_forces(s_.u_.data(), t, g.data());
+  for (const auto& e : s_.model.effects) e->add_forces(s_.u.data(), t, g.data());
   for (int i : foreign_dofs_) g[i] = 0.0;
   for (int i : owned_dofs_) f[i] += g[i];
   for (int i : owned_constrained_) g[i] = g[i] - f[i];
@@ -115,53 +117,52 @@ void DistributedExplicit::forces(double t, std::vector<double>& f, std::vector<d
 // The damage effect's after_step on the rank's own families (the serial after_step
 // would read u at particles this rank does not hold). Moments follow the broken bonds.
 bool DistributedExplicit::break_bonds() {
-  if (!damage_ || damage_->break_family_bonds(s_.u_.data(), owned_families_) == 0) return false;
-  s_.model_.assembler->update_moments();
+  if (!damage_ || damage_->break_family_bonds(s_.u.data(), owned_families_) == 0) return false;
+  s_.model.assembler->update_moments();
   return true;
 }
 
 // Rank 0's u, v and alpha = the owners' (for a row, snapshot, checkpoint or the end).
 void DistributedExplicit::gather() {
-  const int d = s_.model_.particles.dim;
-  gather_particle_values(part_, d, s_.u_, PETSC_COMM_WORLD);
-  gather_particle_values(part_, d, s_.v_, PETSC_COMM_WORLD);
-  if (!s_.model_.assembler->intact()) {
-    gather_family_alpha(part_, s_.model_.bonds, PETSC_COMM_WORLD);
+  const int d = s_.model.particles.dim;
+  gather_particle_values(part_, d, s_.u, PETSC_COMM_WORLD);
+  gather_particle_values(part_, d, s_.v, PETSC_COMM_WORLD);
+  if (!s_.model.assembler->intact()) {
+    gather_family_alpha(part_, s_.model.bonds, PETSC_COMM_WORLD);
     // Rank 0's other families now have their owners' broken bonds: their moments too
     // (the strain energy of a series row reads every family's).
-    if (part_.rank == 0) s_.model_.assembler->update_moments();
+    if (part_.rank == 0) s_.model.assembler->update_moments();
   }
 }
 
 RunSummary DistributedExplicit::run(bool write, int stop_after) {
   const auto t0 = std::chrono::steady_clock::now();
-  RunSummary& summary = s_.summary_;
-  summary.dynamics = DynamicsReport{};
-  summary.dynamics->method = s_.scene_.dynamics->method;
-  const DynamicsSpec& dyn = *s_.scene_.dynamics;
+  RunSummary& summary = s_.summary;
+  DynamicsReport& rep = s_.start_report();
+  const DynamicsSpec& dyn = *s_.scene.dynamics;
   if (dyn.method != DynamicsMethod::explicit_verlet)
     throw std::runtime_error("solver.backend: petsc runs explicit dynamics only; dynamic relaxation is serial (or solve "
                              "the static scene with the PETSc backend)");
   const bool root = part_.rank == 0;
   write = write && root;
   // The set-up ran on every rank from the same scene: its stable step must agree.
+  const double dt = s_.dt();
   double dt_max = 0, dt_min = 0;
-  MPI_Allreduce(&s_.dt_, &dt_max, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
-  MPI_Allreduce(&s_.dt_, &dt_min, 1, MPI_DOUBLE, MPI_MIN, PETSC_COMM_WORLD);
+  MPI_Allreduce(&dt, &dt_max, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  MPI_Allreduce(&dt, &dt_min, 1, MPI_DOUBLE, MPI_MIN, PETSC_COMM_WORLD);
   if (dt_max != dt_min) throw std::logic_error(fmt::format("the ranks' time steps differ ({:.17g} .. {:.17g})", dt_min, dt_max));
   const std::string line = fmt::format(
       "distributed: velocity Verlet over {} MPI ranks (PETSc), rank 0 owns {} particles and {} ghosts; one ghost update "
       "per step",
       part_.ranks, part_.owned(), part_.ghosts.size());
   summary.effects.push_back(line);
-  s_.log_("  effect: " + line);
+  s_.log("  effect: " + line);
 
-  DynamicsReport& rep = *summary.dynamics;
-  rep.dt = s_.dt_, rep.dt_stable = s_.dt_stable_, rep.damping = dyn.damping;
+  rep.dt = dt, rep.dt_stable = s_.model.inertia->dt_stable, rep.damping = dyn.damping;
   rep.dt_rule = dyn.dt > 0 ? "fixed" : fmt::format("{} x the stable estimate", dyn.safety_factor);
   ExternalWork work;  // this rank's dofs; the total is summed when a row or checkpoint needs it
   int step = 0;
-  long long broken_start = broken_bond_count(s_.model_.bonds);
+  long long broken_start = broken_bond_count(s_.model.bonds);
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
     s_.restore(dyn.restart, step, scalars);  // every rank reads the whole (serial-format) state
@@ -175,37 +176,35 @@ RunSummary DistributedExplicit::run(bool write, int stop_after) {
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  std::vector<double> inverse_mass(s_.mass_.size());
-  for (std::size_t i = 0; i < s_.mass_.size(); ++i) inverse_mass[i] = 1.0 / s_.mass_[i];
-  const VerletIntegrator verlet(std::move(inverse_mass), owned_free_, s_.dt_, dyn.damping);
+  const VerletIntegrator verlet(*s_.model.inertia, s_.model.damping, owned_free_, dt);
   std::vector<double> f, g, g_old, u_old;
-  double t = step * s_.dt_;
+  double t = step * dt;
   forces(t, f, g);
   auto record = [&](int st) {
     const double w = global_sum(work.value());
     if (!root) return;
     SeriesRow r = s_.make_row(st, t, 0.0);
     r.external_work = w;
-    s_.series_.push_back(r);
+    s_.series.push_back(r);
   };
   if (step == 0) {
     gather();
     record(0);
     if (dyn.snapshot_every > 0 && write) s_.write_snapshot(0, 0.0);
   }
-  Progress progress(s_.log_, write ? dyn.progress_seconds : 0.0, step, last);
+  Progress progress(s_.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int st = step + 1; st <= last; ++st) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", st, last));
-    u_old = s_.u_;
+    u_old = s_.u;
     g_old = g;
-    verlet.first_half(s_.u_, s_.v_, f);
-    t = st * s_.dt_;
+    verlet.first_half(s_.u, s_.v, f);
+    t = st * dt;
     s_.prescribe(t);
     ghost_update();
     break_bonds();
     forces(t, f, g);
-    verlet.second_half(s_.v_, f);
-    work.add(g_old, g, u_old, s_.u_);
+    verlet.second_half(s_.v, f);
+    work.add(g_old, g, u_old, s_.u);
     const bool row = st % dyn.output_every == 0 || st == dyn.steps;
     const bool snapshot = dyn.snapshot_every > 0 && (st % dyn.snapshot_every == 0 || st == dyn.steps);
     const bool checkpoint = dyn.checkpoint_every > 0 && st % dyn.checkpoint_every == 0;
@@ -220,33 +219,35 @@ RunSummary DistributedExplicit::run(bool write, int stop_after) {
   }
   gather();
   int finite = 1, all_finite = 0;
-  for (int i : owned_dofs_) finite = finite && std::isfinite(s_.u_[i]);
+  for (int i : owned_dofs_) finite = finite && std::isfinite(s_.u[i]);
   MPI_Allreduce(&finite, &all_finite, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
   if (!all_finite)
-    throw std::runtime_error(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", s_.dt_));
+    throw std::runtime_error(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
   const double total_work = global_sum(work.value());
   rep.last_step = last;
-  rep.time = last * s_.dt_;
+  rep.time = last * dt;
   rep.external_work = total_work;
-  rep.strain_available = s_.model_.assembler->has_energy();
+  rep.strain_available = s_.model.assembler->has_energy();
   if (root) {
     const SeriesRow end = s_.make_row(last, rep.time, 0.0);
     rep.kinetic = end.kinetic;
     rep.strain = end.strain;
-    rep.bonds_broken = broken_bond_count(s_.model_.bonds) - broken_start;
-    summary.broken_bonds = static_cast<int>(broken_bond_count(s_.model_.bonds));
+    rep.bonds_broken = broken_bond_count(s_.model.bonds) - broken_start;
+    summary.broken_bonds = static_cast<int>(broken_bond_count(s_.model.bonds));
     const std::vector<double> stress = s_.stress_field();
-    summary.probes = evaluate_probes(s_.scene_, s_.model_.particles, s_.probe_ids_, s_.u_, &stress);
+    summary.probes = evaluate_probes(s_.scene, s_.model.particles, s_.probe_ids, s_.u, &stress);
   }
   summary.solve_seconds = seconds_since(t0);
   if (write) s_.write_results();
-  s_.log_(summary.text());
+  s_.log(summary.text());
   return summary;
 }
 
-RunSummary run_distributed_dynamics(DynamicSimulation& sim, bool write, int stop_after) {
-  DistributedExplicit run(sim);
-  return run.run(write, stop_after);
+}  // namespace
+
+RunSummary run_distributed_dynamics(DynamicRun& run, bool write, int stop_after) {
+  DistributedExplicit distributed(run);
+  return distributed.run(write, stop_after);
 }
 
 }  // namespace pd

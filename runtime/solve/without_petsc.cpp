@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "petsc/distributed_dynamics.hpp"
-#include "run/run_summary.hpp"
+#include "run/dynamic_run.hpp"
 #include "solve/distributed_backend.hpp"
 
 namespace pd {
@@ -27,6 +27,6 @@ NewtonResult solve_distributed(const DistributedProblem&, Eigen::VectorXd&,
   refuse();
 }
 
-RunSummary run_distributed_dynamics(DynamicSimulation&, bool, int) { refuse(); }
+RunSummary run_distributed_dynamics(DynamicRun&, bool, int) { refuse(); }
 
 }  // namespace pd
