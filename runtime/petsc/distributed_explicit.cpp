@@ -194,7 +194,15 @@ RunSummary DistributedExplicit::run(bool write, int stop_after) {
   }
   Progress progress(s_.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int st = step + 1; st <= last; ++st) {
-    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", st, last));
+    // A signal reaches the ranks at different moments: they agree on it every step
+    // (one integer all-reduce), so all stop at the same step instead of one rank leaving
+    // the others waiting in the next ghost update.
+    int local_signal = interrupt_signal(), signal = 0;
+    MPI_Allreduce(&local_signal, &signal, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+    if (signal != 0) {
+      if (local_signal == 0) request_interrupt(signal);
+      throw_if_interrupted(fmt::format("at time step {} of {}", st, last));
+    }
     u_old = s_.u;
     g_old = g;
     verlet.first_half(s_.u, s_.v, f);

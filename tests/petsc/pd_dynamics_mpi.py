@@ -4,9 +4,10 @@ files a serial run writes (energies.csv, result.csv, snapshots, animation.pvd,
 checkpoint.bin, summary.json) with the same broken bonds and the same displacement; a
 checkpoint written on 2 ranks restarts a serial run and one written serially restarts
 on 2 ranks, each ending where the uninterrupted serial run ends; dynamic relaxation on
-the PETSc backend is refused with exit code 2.
+the PETSc backend is refused with exit code 2; SIGINT sent to one rank alone stops every
+rank at the same step (exit 130) instead of leaving the others waiting.
 Usage: pd_dynamics_mpi.py PD MPIEXEC SCENES_DIR WORK_DIR"""
-import csv, json, math, os, shutil, subprocess, sys
+import csv, json, math, os, shutil, signal, subprocess, sys, time
 
 pd, mpiexec, scenes, work = sys.argv[1:5]
 shutil.rmtree(work, ignore_errors=True)
@@ -95,6 +96,29 @@ open(os.path.join(work, "relax.yaml"), "w").write(relax)
 r = mpirun(os.path.join(work, "relax.yaml"), "--out", os.path.join(work, "relax"))
 if r.returncode != 2 or "dynamic relaxation runs on the serial backend" not in r.stderr:
     failures.append(f"relaxation on backend petsc: exit {r.returncode}, stderr {r.stderr!r}")
+# One rank interrupted: the ranks agree on the signal every step. Without that, the rank
+# that saw it stopped and the other waited forever in the next ghost update.
+endless = petsc_scene.replace("petsc.yaml", "endless.yaml")
+open(endless, "w").write(open(petsc_scene).read().replace("steps: 80", "steps: 1000000").replace(
+    "checkpoint_every: 60", "checkpoint_every: 0").replace("snapshot_every: 20", "snapshot_every: 0"))
+job = subprocess.Popen([mpiexec, "-n", "2", "--oversubscribe", pd, "run", endless, "--out", os.path.join(work, "endless")],
+                       env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+for line in job.stdout:  # the progress line: the ranks are stepping
+    if "step " in line and "%)" in line:
+        break
+ranks = subprocess.run(["pgrep", "-P", str(job.pid)], capture_output=True, text=True).stdout.split()
+if len(ranks) != 2:
+    failures.append(f"expected 2 rank processes under mpirun, found {ranks}")
+else:
+    os.kill(int(ranks[-1]), signal.SIGINT)
+    try:
+        job.communicate(timeout=60)
+        if job.returncode != 130:
+            failures.append(f"one rank interrupted: mpirun exit {job.returncode}, expected 130")
+    except subprocess.TimeoutExpired:
+        os.killpg(job.pid, signal.SIGKILL)
+        job.communicate()
+        failures.append("one rank interrupted: the run hung (the other rank never stopped)")
 if failures:
     sys.exit("\n".join(failures))
 print(f"mpirun -n 2 pd run (explicit fracture, {broken} bonds broken in all): same files and bonds, displacement within "
