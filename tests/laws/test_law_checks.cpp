@@ -41,8 +41,12 @@ TEST(AngularMomentum, ClaimedExactlyByBondBasedAndOrdinaryStateBasedLaws) {
     const std::string n = law.name;
     const bool parallel = starts_with(n, "bond_based_") || starts_with(n, "silling_") || starts_with(n, "oterkus_");
     const bool linearised = starts_with(n, "correspondence_") || starts_with(n, "lps_");
-    if (parallel) EXPECT_TRUE(law.balances_angular_momentum) << n;
-    if (linearised) EXPECT_FALSE(law.balances_angular_momentum) << n;
+    if (parallel) {
+      EXPECT_TRUE(law.balances_angular_momentum) << n;
+    }
+    if (linearised) {
+      EXPECT_FALSE(law.balances_angular_momentum) << n;
+    }
     if (law.balances_angular_momentum) continue;
     double worst = 0;
     for (const FamilyCheck& c : pd::verify::check_law(law, 1)) worst = std::max(worst, c.angular_momentum_error);
