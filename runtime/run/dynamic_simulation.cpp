@@ -26,6 +26,7 @@
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
+#include "discretize/fictitious_layer.hpp"
 #include "run/constraints.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
@@ -107,6 +108,9 @@ void DynamicSimulation::setup_constraints() {
   prescribed_ = prescribed_dofs(scene_, model_.particles);
   std::vector<char> constrained(N, 0);
   for (const PrescribedDof& q : prescribed_) constrained[q.dof] = 1;
+  // A fictitious layer's particles are not integrated: prescribe() sets them from the body.
+  ties_ = scene_layer_ties(scene_, model_.particles);
+  for (const TiedDof& t : ties_) constrained[t.dof] = 1;
   for (std::size_t i = 0; i < N; ++i) (constrained[i] ? constrained_ : free_).push_back(static_cast<int>(i));
 }
 
@@ -146,6 +150,15 @@ void DynamicSimulation::prescribe(double t) {
     }
     u_[q.dof] = u;
     if (!v_.empty()) v_[q.dof] = v;
+  }
+  for (const TiedDof& tie : ties_) {  // after the prescribed values: a master may be one
+    double u = tie.offset, v = 0;
+    for (std::size_t k = 0; k < tie.masters.size(); ++k) {
+      u += tie.coefficients[k] * u_[tie.masters[k]];
+      if (!v_.empty()) v += tie.coefficients[k] * v_[tie.masters[k]];
+    }
+    u_[tie.dof] = u;
+    if (!v_.empty()) v_[tie.dof] = v;
   }
 }
 

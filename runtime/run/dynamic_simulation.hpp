@@ -78,6 +78,7 @@ class DynamicSimulation {
   Log log_;
   Model model_;  // owns the effects: the timed loads, the pre-cracks, damage evolution
   std::vector<PrescribedDof> prescribed_;
+  std::vector<TiedDof> ties_;  // fictitious layers: set from the body by prescribe()
   std::vector<int> free_, constrained_;
   std::vector<std::vector<int>> probe_ids_;
   std::vector<double> mass_;             // explicit only: rho V per dof

@@ -89,6 +89,7 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u_);
+    if (!ties_.empty()) prescribe(0.0);  // a fictitious layer follows the body's update
     after_step();
     forces(0.0, f, g);
     ratio = norm_over(f, free_) / reference;

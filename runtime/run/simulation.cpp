@@ -137,6 +137,7 @@ bool Simulation::has_load(const DofMap& dofs) {
   };
   for (const BoundaryCondition& bc : scene_.boundary) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // a load through the layer's ties
     if (free_force(*make_external_loads(scene_, model_.particles, std::span(&bc, 1))) > 0.0) continue;
     const std::string w = bc.where + ": the " + (bc.kind == BoundaryCondition::Kind::Traction ? "traction" : "body force") +
                           " acts only on components whose displacement is prescribed: the constraints take it and it "
@@ -146,6 +147,7 @@ bool Simulation::has_load(const DofMap& dofs) {
   }
   bool loaded = false;
   for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
+  for (const TiedDof& t : dofs.ties()) loaded = loaded || t.offset != 0.0;
   for (const auto& e : model_.effects) loaded = loaded || free_force(*e) > 0.0;
   if (!loaded) log_("  no load on a free component and no prescribed displacement: the solution is zero");
   return loaded;
@@ -167,6 +169,9 @@ RunSummary Simulation::run(bool write) {
     settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) { return after_load_step(step, load, v, dofs); };
     if (scene_.damage) settings.max_resolves = scene_.damage->max_resolves;
     if (plan_.backend == Backend::petsc) {
+      if (dofs.tied_count() > 0)
+        throw SceneError(scene_.file + ": solver.backend: the PETSc backend does not take fictitious layers "
+                         "(multipoint constraints); use the serial backend");
       const FamilyAssembler* pc = model_.approximation ? model_.approximation.get() : model_.assembler.get();
       summary_.newton = solve_distributed({model_.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log_);
     } else {
