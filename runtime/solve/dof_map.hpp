@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assembly/sparsity_pattern.hpp"
+#include "solve/prescribed_motion.hpp"
 
 namespace pd {
 
@@ -76,11 +77,19 @@ class DofMap {
   // constrained dof; it must give prescribed()[i] at load 1.
   using LoadPath = std::function<double(double load, int i)>;
   void set_load_path(LoadPath path) { path_ = std::move(path); }
+  // A dynamic run's prescribed motion: each constrained dof's function of time
+  // (solve/prescribed_motion.hpp). apply_motion sets u and v (v: when not empty) of the
+  // constrained dofs at time t, then the tied dofs' from their masters (v: the ties'
+  // linear part).
+  void set_motion(PrescribedMotion motion) { motion_ = std::move(motion); }
+  const PrescribedMotion& motion() const { return motion_; }
+  void apply_motion(double t, std::vector<double>& u, std::vector<double>& v) const;
 
  private:
   std::vector<int> free_index_, free_, constrained_;
   std::vector<double> prescribed_;
   LoadPath path_;
+  PrescribedMotion motion_;
   std::vector<TiedDof> ties_;
 };
 
