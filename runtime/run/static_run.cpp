@@ -11,6 +11,7 @@
 #include "post/peridynamic_stress.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
+#include "input/yaml_keys.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
