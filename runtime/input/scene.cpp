@@ -264,6 +264,28 @@ std::array<bool, 3> read_components(const YamlAt& at, int dim) {
   return c;
 }
 
+// `method: on_body | fictitious_layer` and the layer's `face: {point, normal}`.
+void read_condition_method(const YamlAt& at, MapReader& m, BoundaryCondition& bc, int dim) {
+  const std::string method = as_text(at);
+  if (method == "on_body") return;
+  if (method != "fictitious_layer") at.fail("unknown method '" + method + "' (on_body, fictitious_layer)");
+  using K = BoundaryCondition::Kind;
+  if (bc.kind == K::Velocity || bc.kind == K::BodyForce)
+    at.fail("a fictitious layer carries fixed, displacement, field or traction conditions");
+  if (bc.kind == K::Traction && dim != 2) at.fail("the fictitious-layer traction (paper 003 eqs. 32-35) is two-dimensional");
+  if (bc.time) at.fail("a fictitious layer's values are applied in full (statics: by the load factor); no time_function");
+  bc.method = BoundaryCondition::Method::fictitious_layer;
+  const YamlAt face = m.get("face");
+  MapReader fm(face);
+  bc.face_point = to_point(fm.get("point"), dim);
+  bc.face_normal = to_point(fm.get("normal"), dim);
+  fm.finish();
+  double norm = 0;
+  for (int k = 0; k < dim; ++k) norm += bc.face_normal[k] * bc.face_normal[k];
+  if (!(norm > 0)) face.fail("normal must not be zero");
+  for (int k = 0; k < dim; ++k) bc.face_normal[k] /= std::sqrt(norm);
+}
+
 BoundaryCondition read_condition(const YamlAt& at, int dim) {
   MapReader m(at);
   BoundaryCondition bc;
@@ -311,7 +333,8 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
     bc.time = read_time_function(tf);
     bc.time_where = tf.location();
   }
-  if (bc.kind == BoundaryCondition::Kind::Traction) {
+  if (m.has("method")) read_condition_method(m.get("method"), m, bc, dim);
+  if (bc.kind == BoundaryCondition::Kind::Traction && bc.method == BoundaryCondition::Method::on_body) {
     bc.face_measure = m.number("face_measure", 0.0);
     if (bc.region.kind != Region::Kind::Side && bc.face_measure <= 0)
       at.fail("a traction on a region that is not a side needs face_measure (the length or area it acts on)");

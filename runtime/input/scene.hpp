@@ -57,6 +57,10 @@ struct BoundaryCondition {
   // integral). Without one: constant 1, i.e. applied at t = 0.
   std::optional<TimeFunction> time;
   std::string time_where;  // "file:line: boundary[i].time_function"
+  // `method: fictitious_layer` (paper 003 eqs. 29-35): the region is a layer outside the
+  // body whose particles follow their mirror images across `face` (discretize/fictitious_layer.hpp).
+  enum class Method { on_body, fictitious_layer } method = Method::on_body;
+  Point face_point{}, face_normal{};  // a point of the body's face, unit normal out of the body
 };
 
 // `body_force: {field, region}`: a body force density from an analytic field on the
