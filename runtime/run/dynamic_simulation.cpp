@@ -49,6 +49,7 @@ DynamicSimulation::DynamicSimulation(Scene scene, Log log) : scene_(std::move(sc
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken; no
   // matrix: the explicit loop needs forces only.
   const AssemblerOptions options = attach_assembler(model_, scene_, false, dyn.threads);
+  if (model_.gauss_points) summary_.effects.push_back(model_.gauss_points->describe());
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
                                          influence->name));

@@ -56,6 +56,7 @@ Simulation::Simulation(Scene scene, Log log) : scene_(std::move(scene)), log_(st
   const AssemblerOptions options = attach_assembler(model_, scene_, !plan_.matrix_free());
   attach_effects(model_, scene_);
   if (model_.collocation) summary_.effects.push_back(model_.collocation_description);
+  if (model_.gauss_points) summary_.effects.push_back(model_.gauss_points->describe());
   const StrainModeReport modes = check_strain_modes(*model_.assembler, influence->name, scene_.delta() / scene_.h);
   summary_.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary_.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary_.variant,
