@@ -7,7 +7,8 @@
 // P[0][a] = delta_a0 and P[k][a] = phi_{n_a}(x_{g_k}). The kernel's local forces f_loc
 // (center and points, kernel_abi.hpp) and local tangent M = d f_loc / d y_loc therefore give
 //   nodal forces   f_nodes = P^T f_loc              (chain rule, exact),
-//   nodal tangent  K_nodes = P^T M P                (P does not depend on u),
+//   nodal tangent  K_nodes = P^T M P                (P does not depend on u; formed from the
+//                                                    tangent factors without M, gauss_point_assembler.cpp),
 //   product        K v     = P^T jvp(P v),
 // and the stiffness couples every two nodes of {i} U supports: the sparsity pattern is the
 // family pattern of those node sets (reach_bonds), wider than the bond one by r_w on each

@@ -67,7 +67,10 @@ struct SourceFamily {
     particles.x = {0, 0, 0};
     particles.volume = {dx * dx * dx};
     particles.material = {0};
-    if (rule == Rule::gauss2) return gauss_points(m);
+    if (rule == Rule::gauss2) {
+      gauss_points(m);
+      return;
+    }
     const double reach = rule == Rule::cci ? kDelta : pd::quadrature_reach(rule == Rule::linear ? pd::Quadrature::PartialLinear : pd::Quadrature::PartialExact, kDelta, dx, 3);
     const int n = static_cast<int>(std::ceil(reach / dx));
     bonds.offsets = {0};
