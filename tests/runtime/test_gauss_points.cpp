@@ -25,6 +25,7 @@
 #include "discretize/partial_volume.hpp"
 #include "input/scene.hpp"
 #include "run/simulation.hpp"
+#include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 #include "material/elastic_constants.hpp"
 
 namespace {
@@ -98,7 +99,7 @@ const pd::abi::LawDescriptor& law_named(const char* name) { return *pd::abi::fin
 
 std::vector<std::vector<double>> params_of(const pd::abi::LawDescriptor& l) {
   const auto m = pd::IsotropicElastic::from_E_nu(1.0, l.has_fixed_poisson_ratio ? l.poisson_ratio : 0.3);
-  return {pd::law_parameters(l, m, pd::PlaneAssumption::Strain, {{"stab", 1.0}, {"hourglass", 1.0}})};
+  return {pd::law_parameters(l, m, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(l))};
 }
 
 TEST(GaussPoints, OnePointPerAxisIsTheLinearFactorQuadrature) {
