@@ -445,6 +445,18 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (s.compensation && s.perturbation > 0)
         d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
     }
+    if (d.has("gauss_points")) {
+      // {per_axis: 1|2|3, support: r_w / h}: fixed Gauss points with MLS displacements.
+      MapReader g(d.get("gauss_points"));
+      s.gauss_points = g.integer("per_axis", 2);
+      if (s.gauss_points < 1 || s.gauss_points > 3) g.get("per_axis").fail("per_axis is 1, 2 or 3 Gauss points per axis of a cell");
+      s.gauss_support = g.number("support", 3.0);
+      if (!(s.gauss_support >= 1.0)) g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
+      g.finish();
+      if (s.quadrature != Quadrature::Volume || s.compensation)
+        d.get("gauss_points").fail("the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
+                                   "another quadrature or compensation");
+    }
     for (const char* key : {"holes", "inclusions"}) {
       if (!d.has(key)) continue;
       const YamlAt list = d.get(key);

@@ -127,6 +127,10 @@ struct Scene {
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
   bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
+  // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
+  // each cell (0: off, the quadrature above) and the MLS support in units of h.
+  int gauss_points = 0;
+  double gauss_support = 3.0;
   std::vector<Shape> holes, inclusions;
   double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0
   double horizon_length = 0;
