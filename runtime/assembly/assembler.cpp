@@ -148,6 +148,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
   const SparsityPattern* pat = K ? pattern_.get() : nullptr;
   for_each_family(K ? "stiffness assembly" : "force assembly", [&](ThreadScratch& s, int p) -> const char* {
     const abi::Family fam = s.gather.gather(p, u);
+    if (!has_intact_bond(fam)) return nullptr;  // cut free: no force, no stiffness
     const int L = fam.n_bonds, m = (L + 1) * d;
     double* f_loc = forces ? s.gather.local_vector() : nullptr;
     if (K) {
@@ -194,6 +195,7 @@ void FamilyAssembler::stiffness_product(const double* u, const double* v, double
   std::fill(Kv, Kv + dofs(), 0.0);
   for_each_family("matrix-free product", [&](ThreadScratch& s, int p) -> const char* {
     const abi::Family fam = s.gather.gather(p, u);
+    if (!has_intact_bond(fam)) return nullptr;
     const int L = fam.n_bonds;
     double* df = s.gather.local_vector();
     variant_.jvp(fam, s.gather.gather_local(p, v), df);
@@ -213,6 +215,7 @@ void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
   std::fill(diag, diag + dofs(), 0.0);
   for_each_family("stiffness diagonal", [&](ThreadScratch& s, int p) -> const char* {
     const abi::Family fam = s.gather.gather(p, u);
+    if (!has_intact_bond(fam)) return nullptr;
     const int L = fam.n_bonds;
     const abi::TangentFactors& fac = s.factors;
     variant_.tangent(fam, nullptr, fac);
@@ -263,7 +266,10 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
   {
     FamilyGather g(inputs_);
 #pragma omp for schedule(static)
-    for (int p = 0; p < n; ++p) variant_.outputs(g.gather(p, u), out.data() + static_cast<std::ptrdiff_t>(p) * no);
+    for (int p = 0; p < n; ++p) {
+      const abi::Family fam = g.gather(p, u);
+      if (has_intact_bond(fam)) variant_.outputs(fam, out.data() + static_cast<std::ptrdiff_t>(p) * no);
+    }
   }
   return out;
 }
@@ -284,7 +290,7 @@ double FamilyAssembler::strain_energy(const double* u) const {
 #pragma omp for schedule(static)
     for (int p = 0; p < n; ++p) {
       const abi::Family fam = g.gather(p, u);
-      e[p] = fam.V0 * variant_.energy(fam);
+      e[p] = has_intact_bond(fam) ? fam.V0 * variant_.energy(fam) : 0.0;
     }
   }
   // Summed in particle order: the same value for any thread count.

@@ -63,6 +63,12 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   return f;
 }
 
+bool has_intact_bond(const abi::Family& f) {
+  for (int k = 0; k < f.n_bonds; ++k)
+    if (f.alpha[k] != 0.0) return true;
+  return false;
+}
+
 const double* FamilyGather::gather_local(int p, const double* global) {
   const int d = in_->dim(), L = in_->bonds->family_size(p);
   for (int a = 0; a <= L; ++a) {

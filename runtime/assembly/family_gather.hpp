@@ -54,4 +54,12 @@ class FamilyGather {
   std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_, scratch_;
 };
 
+// False when every bond of the family is broken (alpha = 0 for all; also for a family
+// with no bonds). Such a family carries no force and no stiffness, since every law weights
+// its bond's force state by the bond's alpha (the law test BrokenBondsCarryNoForce holds
+// each law to it), so its kernels are not evaluated: state-based laws divide by sums over
+// intact bonds (LPS's weighted volume, the shape tensor) and would give 0/0 for a particle
+// that damage has cut free.
+bool has_intact_bond(const abi::Family& f);
+
 }  // namespace pd

@@ -20,6 +20,9 @@ void compute_moments(FamilyInputs& inputs, const abi::LawDescriptor& law, const 
 #pragma omp for schedule(static)
     for (int p = 0; p < n; ++p) {
       const abi::Family f = g.gather(p, nullptr);
+      // A family cut free by damage keeps zero moments: its kernels are not evaluated
+      // (has_intact_bond). A particle without bonds at set-up is refused before this.
+      if (!has_intact_bond(f)) continue;
       double* m = inputs.moments.data() + static_cast<std::ptrdiff_t>(p) * nm;
       variant.moments(f, m);
       for (int i = 0; i < nm; ++i)
@@ -31,7 +34,7 @@ void compute_moments(FamilyInputs& inputs, const abi::LawDescriptor& law, const 
   }
   if (bad >= 0)
     throw std::runtime_error("moments: non-finite value at particle " + std::to_string(bad) + " (law " + law.name +
-                             "; a particle without intact bonds?)");
+                             ")");
 }
 
 }  // namespace pd

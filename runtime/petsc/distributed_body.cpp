@@ -113,6 +113,7 @@ void DistributedBody::scatter_family_vectors(const FamilyAssembler& a, const cha
   for (int i = 0; i < part_.owned() && bad < 0; ++i) {
     const int p = part_.owned_particle(i);
     const abi::Family fam = g.gather(p, u.data());
+    if (!has_intact_bond(fam)) continue;  // cut free by damage: no force
     const int L = fam.n_bonds;
     double* local = g.local_vector();
     kernel(g, p, fam, local);
@@ -175,6 +176,7 @@ void DistributedBody::assemble_matrix(const FamilyAssembler& a, const std::vecto
   for (int i = 0; i < part_.owned() && bad < 0; ++i) {
     const int p = part_.owned_particle(i);
     const abi::Family fam = g.gather(p, u.data());
+    if (!has_intact_bond(fam)) continue;  // cut free by damage: no stiffness
     const int L = fam.n_bonds, m = (L + 1) * dim_;
     a.variant().tangent(fam, nullptr, factors);
     double* M = g.local_matrix();

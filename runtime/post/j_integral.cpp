@@ -89,7 +89,10 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
   if (res.inside == 0) throw std::runtime_error(where + ": the contour box holds no particle");
 
   FamilyGather gather(in);
-  auto energy = [&](int i) { return kernels.energy(gather.gather(i, u)); };
+  auto energy = [&](int i) {
+    const abi::Family fam = gather.gather(i, u);
+    return has_intact_bond(fam) ? kernels.energy(fam) : 0.0;  // a particle cut free stores no energy
+  };
   // W at the contour point between lattice columns a (inside) and b (outside) of row cy:
   // the mean of the two, or the one that exists (a hole or the body's edge).
   auto edge_w = [&](long long a, long long b, long long cy) {
@@ -108,7 +111,9 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
     bool crosses = false;
     for (int e = bonds.offsets[q]; e < bonds.offsets[q + 1] && !crosses; ++e) crosses = inside[bonds.neighbor[e]] != inside[q];
     if (!crosses) continue;
-    kernels.residual(gather.gather(q, u), forces.data());
+    const abi::Family fam = gather.gather(q, u);
+    if (!has_intact_bond(fam)) continue;
+    kernels.residual(fam, forces.data());
     const std::array<double, 2> dq = dudx1(lat, p, u, q, h);
     for (int e = bonds.offsets[q], k = 1; e < bonds.offsets[q + 1]; ++e, ++k) {
       const int j = bonds.neighbor[e];

@@ -23,7 +23,9 @@ std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const d
   FamilyGather gather(in);
   std::vector<double> forces(static_cast<std::size_t>(gather.max_bonds() + 1) * d);
   for (int q = 0; q < n; ++q) {
-    assembler.variant().residual(gather.gather(q, u), forces.data());
+    const abi::Family fam = gather.gather(q, u);
+    if (!has_intact_bond(fam)) continue;  // cut free by damage: no bond force
+    assembler.variant().residual(fam, forces.data());
     for (int e = bonds.offsets[q], k = 1; e < bonds.offsets[q + 1]; ++e, ++k) {
       const int j = bonds.neighbor[e];
       const double* F = forces.data() + static_cast<std::ptrdiff_t>(k) * d;  // -V_q V_j t_q<j>

@@ -122,6 +122,22 @@ TEST_P(LawTangent, IntactVariantEqualsDamagedWithAllBondsIntact) {
   for (int i = 0; i < f.dofs(); ++i) EXPECT_NEAR(intact[i], damaged[i], 1e-13 * (1 + std::fabs(damaged[i])));
 }
 
+// The assembler skips a family whose bonds are all broken (has_intact_bond): sound only
+// if every law weights a bond's force by its alpha, so a broken bond carries no force.
+TEST_P(LawTangent, BrokenBondsCarryNoForce) {
+  TestFamily f = family(11);
+  for (int k = 0; k < f.bonds(); k += 3) f.alpha[k] = 0.0;  // besides any the case broke
+  f.update_moments(f.law->damaged);
+  const auto forces = f.forces(f.law->damaged);
+  int broken = 0;
+  for (int k = 0; k < f.bonds(); ++k) {
+    if (f.alpha[k] != 0.0) continue;
+    ++broken;
+    for (int c = 0; c < f.dim; ++c) EXPECT_EQ(forces[(k + 1) * f.dim + c], 0.0) << "bond " << k;
+  }
+  EXPECT_GT(broken, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllLaws, LawTangent, testing::ValuesIn(all_cases()), case_name);
 
 // Laws that declare a strain-energy density.

@@ -184,3 +184,33 @@ TEST(Assembler, MomentsFollowBrokenBonds) {
   s.a->update_moments();
   EXPECT_NEAR(s.a->inputs().moments[10], 0.5 * m0, 1e-15 * m0);
 }
+
+// Damage can cut a particle free (every bond of its family broken). LPS divides by the
+// weighted volume over intact bonds, which is then 0: before has_intact_bond the moments
+// update threw and the forces were 0/0. The particle must carry no force and no stiffness,
+// and the rest of the body must assemble as before.
+TEST(Assembler, AParticleCutFreeByDamageCarriesNoForceAndNoStiffness) {
+  const pd::abi::LawDescriptor* lps = pd::abi::find_law("lps_plane_strain");
+  ASSERT_NE(lps, nullptr);
+  Problem s(*lps, {1.3, 0.8}, 0);
+  auto& bonds = const_cast<pd::Bonds&>(s.body.bonds);
+  const int cut = 17;
+  for (int p = 0; p < s.body.particles.size(); ++p)
+    for (int e = bonds.offsets[p]; e < bonds.offsets[p + 1]; ++e)
+      if (p == cut || bonds.neighbor[e] == cut) bonds.alpha[e] = 0.0;
+  ASSERT_NO_THROW(s.a->update_moments());
+  std::vector<double> f(s.n());
+  ASSERT_NO_THROW(s.a->internal_forces(s.u.data(), f.data()));
+  for (int c = 0; c < 2; ++c) EXPECT_EQ(f[2 * cut + c], 0.0);
+  double others = 0;
+  for (double v : f) others = std::max(others, std::abs(v));
+  EXPECT_GT(others, 0.0);
+  pd::SparseMatrix K;
+  s.a->stiffness(s.u.data(), K);
+  const Eigen::MatrixXd Kd(K);
+  EXPECT_TRUE(Kd.allFinite());
+  EXPECT_EQ(Kd.row(2 * cut).cwiseAbs().sum() + Kd.col(2 * cut).cwiseAbs().sum(), 0.0);
+  expect_stiffness_matches_fd(s);
+  EXPECT_TRUE(std::isfinite(s.a->strain_energy(s.u.data())));
+  for (double v : s.a->particle_outputs(s.u.data())) EXPECT_TRUE(std::isfinite(v));
+}
