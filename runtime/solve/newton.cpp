@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "interrupt.hpp"
 #include "solve/linear_step.hpp"
+#include "solve/progress.hpp"
 #include "solve/stopwatch.hpp"
 
 namespace pd {
@@ -45,6 +47,9 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   auto say = [&](const std::string& line) {
     if (log_) log_(line);
   };
+  // Factorisations and Krylov solves longer than a few seconds log their progress (solve/progress.hpp).
+  std::optional<ProgressSink> progress;
+  if (log_) progress.emplace(log_);
   const int n = sys.size();
   if (dofs.size() != n || u.size() != n) throw std::invalid_argument("Newton: the system, dof map and u differ in size");
   if (dofs.free_count() == 0) throw std::invalid_argument("Newton: every degree of freedom is constrained");
