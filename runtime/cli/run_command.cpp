@@ -17,6 +17,7 @@
 #include "output/output_directory.hpp"
 #include "output/staging.hpp"
 #include "model/model.hpp"
+#include "petsc/distributed_dynamics.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
@@ -78,7 +79,9 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   if (!distributed_backend_available())
     return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
                        "scripts/install_deps.sh and configure again)");
-  if (scene.dynamics) return std::string("solver.backend: petsc solves static scenes; dynamics runs on the serial backend");
+  if (scene.dynamics && scene.dynamics->method != DynamicsMethod::explicit_verlet)
+    return std::string("solver.backend: petsc runs static scenes and explicit dynamics; dynamic relaxation runs on the "
+                       "serial backend (or solve the scene statically with backend petsc)");
   return std::nullopt;
 }
 
@@ -149,7 +152,7 @@ int run_scene(const RunOptions& options) {
     Model model = build_model(scene);
     if (scene.dynamics) {
       DynamicRun run = prepare_dynamic_run(model, scene, log);
-      s = run_dynamic(run, true);
+      s = session ? run_distributed_dynamics(run, true) : run_dynamic(run, true);
     } else {
       StaticRun run = plan_static_run(model, scene, log);
       run_static(run, model, scene, log);

@@ -56,8 +56,10 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
 
   res.unknowns = dofs.free_count();
-  const std::unique_ptr<LinearStep> linear_step =
-      s_.matrix_free ? make_matrix_free_step(s_, sys, log_) : make_assembled_step(s_, sys.symmetric(), log_);
+  // Tied dofs (multipoint constraints) make the reduced tangent S K P unsymmetric.
+  const bool symmetric = sys.symmetric() && dofs.keeps_symmetry();
+  const std::unique_ptr<LinearStep> linear_step = s_.matrix_free ? make_matrix_free_step(s_, sys, symmetric, log_)
+                                                                 : make_assembled_step(s_, symmetric, log_);
   Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
   double reference = 0;
   // Each iteration's line carries the time since the solve began: a long solve shows
