@@ -18,8 +18,10 @@ namespace pd {
 
 class AdaptiveDynamicRelaxation {
  public:
-  // density: D_ii per dof (only free dofs are read); free: the dofs it moves.
-  AdaptiveDynamicRelaxation(std::vector<double> density, std::vector<int> free);
+  // density: D_ii per dof (only free dofs are read), read in place (the model's
+  // fictitious-density effect, effects/inertia.hpp, which must outlive the iteration);
+  // free: the dofs it moves.
+  AdaptiveDynamicRelaxation(const std::vector<double>& density, std::vector<int> free);
   // One iteration from the force F^n at u^n: updates v (to v^{n+1/2}) and u (to u^{n+1}).
   void step(const std::vector<double>& F, std::vector<double>& u);
   double damping() const { return c_; }
@@ -30,7 +32,7 @@ class AdaptiveDynamicRelaxation {
   void restore(int iterations, std::vector<double> v, std::vector<double> f_prev);
 
  private:
-  std::vector<double> D_;
+  const std::vector<double>& D_;
   std::vector<int> free_;
   std::vector<double> v_, f_prev_;
   double c_ = 0;

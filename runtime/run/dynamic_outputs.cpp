@@ -144,6 +144,17 @@ void DynamicRun::write_snapshot(int step, double t) {
   ++summary.dynamics->snapshots;
 }
 
+RunSummary DynamicRun::finish(long long broken_start, std::chrono::steady_clock::time_point t0, bool write) {
+  summary.dynamics->bonds_broken = broken_bond_count(model.bonds) - broken_start;
+  summary.broken_bonds = static_cast<int>(broken_bond_count(model.bonds));
+  const std::vector<double> stress = stress_field();
+  summary.probes = evaluate_probes(scene, model.particles, probe_ids, u, &stress);
+  summary.solve_seconds = seconds_since(t0);
+  if (write) write_results();
+  log(summary.text());
+  return summary;
+}
+
 void DynamicRun::write_results() {
   const auto t1 = std::chrono::steady_clock::now();
   const std::string dir = scene.output.directory;

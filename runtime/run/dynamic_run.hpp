@@ -8,6 +8,7 @@
 // density replaces it).
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <utility>
@@ -62,6 +63,9 @@ struct DynamicRun {
   // The peridynamic stress at u when the scene asks for it (wants_stress), else empty.
   std::vector<double> stress_field() const;
   void write_results();
+  // The end of either run: bonds broken since broken_start, the probes, the solve time
+  // since t0, the result files (write), the summary's log text. Returns the summary.
+  RunSummary finish(long long broken_start, std::chrono::steady_clock::time_point t0, bool write);
 };
 
 // Refuses (std::invalid_argument) what the dynamic runs do not implement: obq quadrature.

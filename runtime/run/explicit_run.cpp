@@ -19,14 +19,11 @@
 namespace pd {
 
 RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
-  const Scene& scene = run.scene;
-  Model& model = run.model;
-  RunSummary& summary = run.summary;
+  const Model& model = run.model;
   std::vector<double>& u = run.u;
-  const DynamicRun::Log& log = run.log;
   const double dt = run.dt();
   const auto t0 = std::chrono::steady_clock::now();
-  const DynamicsSpec& dyn = *scene.dynamics;
+  const DynamicsSpec& dyn = *run.scene.dynamics;
   DynamicsReport& rep = run.start_report();
   rep.dt = dt, rep.dt_stable = model.inertia->dt_stable, rep.damping = dyn.damping;
   rep.dt_rule = dyn.dt > 0 ? "fixed" : fmt::format("{} x the stable estimate", dyn.safety_factor);
@@ -59,7 +56,7 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
     record(0);
     if (dyn.snapshot_every > 0 && write) run.write_snapshot(0, 0.0);
   }
-  Progress progress(log, write ? dyn.progress_seconds : 0.0, step, last);
+  Progress progress(run.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int s = step + 1; s <= last; ++s) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", s, last));
     u_old = u;
@@ -85,15 +82,7 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   rep.strain_available = model.assembler->has_energy();
   rep.strain = end.strain;
   rep.external_work = work.value();
-  rep.bonds_broken = broken_bond_count(model.bonds) - broken_start;
-  summary.broken_bonds = static_cast<int>(broken_bond_count(model.bonds));
-  const std::vector<double> stress = run.stress_field();
-  summary.probes = evaluate_probes(scene, model.particles, run.probe_ids, u, &stress);
-  summary.solve_seconds = seconds_since(t0);
-  if (write) run.write_results();
-  log(summary.text());
-  return summary;
+  return run.finish(broken_start, t0, write);
 }
-
 
 }  // namespace pd

@@ -29,10 +29,8 @@ double norm_over(const std::vector<double>& v, const std::vector<int>& dofs) {
 
 RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   const Scene& scene = run.scene;
-  Model& model = run.model;
-  RunSummary& summary = run.summary;
+  const Model& model = run.model;
   std::vector<double>& u = run.u;
-  const DynamicRun::Log& log = run.log;
   const auto t0 = std::chrono::steady_clock::now();
   const DynamicsSpec& dyn = *scene.dynamics;
   DynamicsReport& rep = run.start_report();
@@ -75,7 +73,7 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
   double ratio = norm_over(f, model.dofs.free_dofs()) / reference;
   if (step == 0) run.series.push_back(run.make_row(0, 0, ratio));
-  Progress progress(log, write ? dyn.progress_seconds : 0.0, step, last);
+  Progress progress(run.log, write ? dyn.progress_seconds : 0.0, step, last);
   int s = step;
   while (ratio > dyn.tolerance && s < last) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
@@ -104,20 +102,13 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   rep.damping = adr.damping();
   rep.strain_available = model.assembler->has_energy();
   if (rep.strain_available) rep.strain = model.assembler->strain_energy(u.data());
-  rep.bonds_broken = broken_bond_count(model.bonds) - broken_start;
-  summary.broken_bonds = static_cast<int>(broken_bond_count(model.bonds));
-  summary.newton.converged = rep.converged;
-  const std::vector<double> stress = run.stress_field();
-  summary.probes = evaluate_probes(scene, model.particles, run.probe_ids, u, &stress);
-  summary.solve_seconds = seconds_since(t0);
-  log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
-  if (write) run.write_results();
-  log(summary.text());
+  run.summary.newton.converged = rep.converged;
+  run.log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
+  RunSummary summary = run.finish(broken_start, t0, write);
   if (!rep.converged && stop_after == 0)
     throw std::runtime_error(fmt::format("adaptive dynamic relaxation did not converge in {} iterations (|r|/ref = {:.3e} > {:.3g})", s,
                                          ratio, dyn.tolerance));
   return summary;
 }
-
 
 }  // namespace pd
