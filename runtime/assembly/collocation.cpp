@@ -49,9 +49,8 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
   }
 }
 
-Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description,
-                                 const Box2* body) {
-  const ReproducingSpace space = paper001_space(particles.dim);
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                 std::string& description, const Box2* body) {
   CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space, body);
   description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
                             space.name, space.terms.size());
