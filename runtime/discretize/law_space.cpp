@@ -104,7 +104,7 @@ ReproducingSpace law_reproducing_space(std::string_view law, int dim, double (*w
             "law '{}' with influence '{}': its horizon sum of xi^b/|xi|^{} (|b| = {}) is not integrable at r = 0 "
             "in {}D (the continuum law diverges); choose another influence",
             law, influence, g.inverse_r_power, g.degree(), dim));
-  space.name = fmt::format("{} with {} ({} functions)", law, radial, space.terms.size());
+  space.name = fmt::format("{} with {}", law, radial);
   return space;
 }
 

@@ -3,6 +3,8 @@
 // non-symmetric solver, and the volume quadrature of the same scene misses the field.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "input/scene.hpp"
@@ -35,4 +37,33 @@ TEST(Paper001Scene, ObqReproducesALinearFieldOnAPerturbedCloud) {
 TEST(Paper001Scene, QuadratureKeyAcceptsObq) {
   EXPECT_EQ(pd::parse_quadrature("obq"), pd::Quadrature::Obq);
   EXPECT_EQ(pd::quadrature_name(pd::Quadrature::Obq), "obq");
+}
+
+namespace {
+// Paper 000's constant-strain block `problem` (studies/constant_strain_obq/) with n
+// particles along a side, Silling's law, cubic influence, delta = 3.5 h: the largest probe error.
+double block_error(const std::string& problem, int n, const std::string& space) {
+  pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/studies/constant_strain_obq/" + problem + "_cut_law.yaml");
+  s.h = (s.hi[0] - s.lo[0]) / n;
+  s.horizon_ratio = 3.5;
+  s.obq_space = space;
+  pd::Simulation sim(s, [](const std::string&) {});
+  const pd::RunSummary r = sim.run(false);
+  EXPECT_TRUE(r.newton.converged) << problem << " n " << n;
+  EXPECT_FALSE(r.probes.empty());
+  double worst = 0;  // biaxial has two probes (u_x on the right, u_y on the top)
+  for (const pd::ProbeResult& p : r.probes) worst = std::max(worst, p.error);
+  return r.probes.empty() ? 1.0 : worst;
+}
+}  // namespace
+
+TEST(Paper001Scene, LawSpaceMakesSillingConvergeOnTheConstantStrainBlocks) {
+  // With its own reproducing space (domain.obq_space: law) and cut-ball moments at the
+  // faces, the probe error of each block falls at order >= 0.9 from n = 10 to 20
+  // (the study's first-probe orders are 1.12, 1.15, 1.17; to n = 80 in docs/paper001.md). Both
+  // biaxial probes count here.
+  for (const char* problem : {"uniaxial", "biaxial", "shear"}) {
+    const double coarse = block_error(problem, 10, "law"), fine = block_error(problem, 20, "law");
+    EXPECT_GT(std::log2(coarse / fine), 0.9) << problem << ": " << coarse << " -> " << fine;
+  }
 }
