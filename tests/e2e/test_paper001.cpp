@@ -57,11 +57,13 @@ double block_error(const std::string& problem, int n, const std::string& space) 
 }
 }  // namespace
 
-TEST(Paper001Scene, LawSpaceMakesSillingConvergeOnTheConstantStrainBlocks) {
+TEST(Paper001Scene, LawSpaceHalvesSillingsErrorFromTenToTwentyParticles) {
   // With its own reproducing space (domain.obq_space: law) and cut-ball moments at the
   // faces, the probe error of each block falls at order >= 0.9 from n = 10 to 20
-  // (the study's first-probe orders are 1.12, 1.15, 1.17; to n = 80 in docs/paper001.md). Both
-  // biaxial probes count here.
+  // (the study's first-probe orders are 1.12, 1.15, 1.17). Both biaxial probes count here.
+  // This is the coarse, pre-asymptotic range: docs/paper001.md shows that at n = 80 the
+  // shear error changes sign and the bulk strain drifts from T/G by up to 1 %, so no
+  // asymptotic order is claimed here.
   for (const char* problem : {"uniaxial", "biaxial", "shear"}) {
     const double coarse = block_error(problem, 10, "law"), fine = block_error(problem, 20, "law");
     EXPECT_GT(std::log2(coarse / fine), 0.9) << problem << ": " << coarse << " -> " << fine;
