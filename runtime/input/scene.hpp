@@ -123,6 +123,7 @@ struct Scene {
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
   std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
+  bool obq_symmetric = false;                 // domain.obq_symmetric
   bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
   std::vector<Shape> holes, inclusions;
   double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0

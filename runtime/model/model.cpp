@@ -72,7 +72,8 @@ Model build_model(const Scene& scene) {
         throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());
       }
     m.collocation = std::make_unique<Collocation>(
-        make_obq_collocation(m.particles, m.bonds, space, m.collocation_description, body ? &*body : nullptr));
+        make_obq_collocation(m.particles, m.bonds, space, m.collocation_description, body ? &*body : nullptr,
+                             scene.obq_symmetric));
   }
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   return m;

@@ -147,6 +147,7 @@ TEST(SceneErrors, TopLevelAndDomain) {
       {"spacing: 0.5", "spacing: 0.00001", "domain", "more than 1e5 particles along x", "  box:"},
       {"placement: cell", "placement: face", "domain.placement", "'face' is not one of: cell, node"},
       {"placement: cell", "placement: cell\n  obq_space: law", "domain.obq_space", "obq_space needs quadrature: obq or obq_cut", "  obq_space"},
+      {"placement: cell", "placement: cell\n  obq_symmetric: true", "domain.obq_symmetric", "obq_symmetric needs quadrature: obq or obq_cut", "  obq_symmetric"},
       {"placement: cell", "placement: cell\n  quadrature: obq\n  obq_space: mine", "domain.obq_space", "'mine' is not one of: paper001, paper001_odd, law", "  obq_space"},
       {"amplitude: 0.1", "amplitude: 0.5", "domain.perturbation.amplitude", "amplitude is a fraction of h"},
       {"seed: 3}", "seed: 3, colour: 1}", "domain.perturbation.colour", "unknown key 'colour'", "perturbation:"},
