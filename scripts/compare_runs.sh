@@ -59,6 +59,31 @@ if [[ $# -eq 0 && -f $repo/scenes/crack.yaml ]]; then
     prepare crack+cg_ic "$crack" "solver: {linear: cg, preconditioner: ic}"
     prepare crack+bicgstab "$crack" "solver: {linear: bicgstab}"
 fi
+# No scene in scenes/ has viscous damping or prescribed motion in time (a velocity
+# condition, a displacement with a time function): one small explicit scene has all three.
+if [[ $# -eq 0 ]]; then
+    cat > "$work/motion_source.yaml" <<'YAML'
+dimension: 2
+domain: {box: {min: [0, 0], max: [0.2, 0.1]}, spacing: 0.01}
+horizon: {ratio: 3.0}
+law: silling_plane_strain
+influence: const
+materials: [{name: m, E: 1.0, nu: 0.25, density: 2.5}]
+boundary:
+  - region: {side: left}
+    fixed: [x, y]
+  - region: {side: right}
+    velocity: {x: 0.01}
+    time_function: {ramp: 0.5}
+  - region: {side: top}
+    displacement: {y: 0.001}
+    time_function: {sine: {period: 2.0}}
+probes:
+  - {name: u_mid, region: {box: {min: [0.09, 0.04], max: [0.11, 0.06]}}, component: x}
+dynamics: {method: explicit, steps: 300, damping: 0.5, output_every: 50, threads: 1}
+YAML
+    prepare damped_prescribed_motion "$work/motion_source.yaml" ""
+fi
 
 status=0
 for i in "${!names[@]}"; do

@@ -15,8 +15,9 @@
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
 #include "output/output_directory.hpp"
-#include "run/dynamic_simulation.hpp"
-#include "run/simulation.hpp"
+#include "model/model.hpp"
+#include "run/dynamic_run.hpp"
+#include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
 #include "version.hpp"
 
@@ -126,12 +127,17 @@ int run_scene(const RunOptions& options) {
     };
     log(version_line());
     if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
+    // Read (above), build the model, plan the solver, run, write.
+    if (scene.dynamics) check_dynamic_scene(scene);
+    Model model = build_model(scene);
     if (scene.dynamics) {
-      DynamicSimulation sim(std::move(scene), log);
-      s = sim.run();
+      DynamicRun run = prepare_dynamic_run(model, scene, log);
+      s = run_dynamic(run, true);
     } else {
-      Simulation sim(std::move(scene), log);
-      s = sim.run(rank == 0);
+      StaticRun run = plan_static_run(model, scene, log);
+      run_static(run, model, scene, log);
+      if (rank == 0) write_static_outputs(run, model, scene);
+      s = run.summary;
     }
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
     // Those found while setting up the body (a horizon beyond the body, overflowing

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <chrono>
 #include <optional>
 #include <stdexcept>
 
@@ -15,6 +16,8 @@
 #include "discretize/law_space.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
+#include "run/constraints.hpp"
+#include "solve/stopwatch.hpp"
 
 namespace pd {
 
@@ -35,6 +38,7 @@ std::optional<Box2> obq_cut_body(const Scene& scene) {
 }  // namespace
 
 Model build_model(const Scene& scene) {
+  const auto t0 = std::chrono::steady_clock::now();
   Model m;
   m.law = abi::find_law(scene.law);
   m.influence = abi::find_influence(scene.influence);
@@ -76,6 +80,8 @@ Model build_model(const Scene& scene) {
                              scene.obq_symmetric));
   }
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
+  m.dofs = scene_constraints(scene, m.particles);
+  m.build_seconds = seconds_since(t0);
   return m;
 }
 
@@ -92,6 +98,7 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.threads = threads;
   options.collocation = model.collocation.get();
   model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+  model.assembler_options = options;
   return options;
 }
 

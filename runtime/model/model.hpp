@@ -1,5 +1,6 @@
 // The model a run solves: the law and influence, the particles, the bonds (cut by the
-// pre-cracks), the per-material law parameters and the family checks, built once from
+// pre-cracks), the per-material law parameters, the family checks and the dof map (the
+// Dirichlet conditions, with their load path and motion in time), built once from
 // a const Scene by build_model; the assembler is added by the driver once the solver
 // plan has said whether it needs a matrix (attach_assembler), then the effects
 // (attach_effects), which read the assembler. The static and dynamic drivers both start from it.
@@ -16,11 +17,14 @@
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
+#include "solve/dof_map.hpp"
 #include "solve/solver_plan.hpp"
 
 namespace pd {
 
 class CriticalStretchDamage;
+class Inertia;
+class ViscousDamping;
 
 struct Model {
   const abi::LawDescriptor* law = nullptr;
@@ -29,6 +33,10 @@ struct Model {
   Bonds bonds;
   std::vector<std::vector<double>> params;  // per material, in law.param_names order
   FamilyQualityReport quality;
+  double build_seconds = 0;  // build_model's time (the run's setup time starts with it)
+  // The constrained dofs and their values at full load (run/constraints.hpp), with the
+  // load path of a rotation and each dof's function of time (DofMap::apply_motion).
+  DofMap dofs;
   long long bond_count = 0;    // each bond once (not per direction)
   int cut_by_cracks = 0;       // bonds the scene's pre-cracks cut, each once
   std::vector<std::string> warnings;  // the scene's and the set-up's (a crack that crosses no bond)
@@ -37,22 +45,25 @@ struct Model {
   std::unique_ptr<Collocation> collocation;
   std::string collocation_description;
   std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared after what it reads)
+  AssemblerOptions assembler_options;          // the options it was built with
   // Static matrix-free runs with the short-horizon preconditioner (attach_short_horizon):
   // the same law on delta = ratio h, whose factorised stiffness preconditions the solve.
   Bonds short_bonds;
   std::unique_ptr<FamilyAssembler> approximation;
   // attach_effects: every effect the scene calls for, in the order the run log lists
-  // them (loads, crack pressure, body forces, pre-cracks, damage evolution). Declared
-  // last: they read the assemblers and bonds above.
+  // them (loads, crack pressure, body forces, pre-cracks, damage evolution; a dynamic
+  // run's inertia and viscous damping last). Declared last: they read the assemblers and bonds above.
   std::vector<std::unique_ptr<Effect>> effects;
   const CriticalStretchDamage* damage = nullptr;  // the damage effect's rule (null without `damage`)
+  const Inertia* inertia = nullptr;          // dynamic runs: rho V (explicit) or the fictitious density (relaxation)
+  const ViscousDamping* damping = nullptr;   // explicit dynamics with dynamics.damping > 0
 
   // What the solver plan needs of the model (mean family size: bonds per particle).
   ProblemSize size(const Scene& scene, double short_family_size = -1) const;
 };
 
-// Throws std::invalid_argument on an unknown law or influence and std::runtime_error
-// naming a particle without neighbours.
+// Throws std::invalid_argument on an unknown law or influence, std::runtime_error
+// naming a particle without neighbours and SceneError naming a condition whose region is empty.
 Model build_model(const Scene& scene);
 
 // The assembler over the model's particles and bonds: the intact kernels (alpha folded
@@ -65,7 +76,9 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
 void attach_short_horizon(Model& model, const Scene& scene, double short_delta);
 
 // The scene's effects (model/model_effects.cpp), after attach_assembler (and
-// attach_short_horizon when used). A dynamic scene's loads carry their time functions.
+// attach_short_horizon when used). A dynamic scene's loads carry their time functions;
+// its inertia (and damping) come last, from the stiffness row sums at the reference
+// configuration (a temporary assembler with a matrix).
 void attach_effects(Model& model, const Scene& scene);
 
 }  // namespace pd

@@ -2,7 +2,9 @@
 // A new effect is one file in effects/ plus one line here (and its scene key).
 #include <fmt/core.h>
 
+#include "dynamics/time_step.hpp"
 #include "effects/damage_evolution.hpp"
+#include "effects/inertia.hpp"
 #include "effects/loads.hpp"
 #include "model/model.hpp"
 
@@ -35,6 +37,30 @@ void add_timed_loads(Model& m, const Scene& s) {
                                 crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
   if (auto e = make_body_force_field(s, m.particles)) add(m.effects, make_timed(std::move(e), TimeFunction{}, ", constant in time"));
 }
+// A dynamic run's inertia: explicit dynamics' rho V (and its time step) with the viscous
+// damping, or relaxation's fictitious density; both from the row sums of the stiffness at
+// the reference configuration, formed by a temporary assembler with a matrix pattern.
+void add_inertia(Model& m, const Scene& s) {
+  std::vector<double> rows;
+  {
+    AssemblerOptions with_matrix = m.assembler_options;
+    with_matrix.matrix = true;
+    const FamilyAssembler tangent(m.particles, m.bonds, *m.law, m.params, with_matrix);
+    rows = stiffness_row_sums(tangent, nullptr);
+  }
+  if (s.dynamics->method == DynamicsMethod::explicit_verlet) {
+    std::unique_ptr<Inertia> inertia = make_inertia(s, m.particles, rows);
+    m.inertia = inertia.get();
+    add(m.effects, std::move(inertia));
+    std::unique_ptr<ViscousDamping> damping = make_viscous_damping(s);
+    m.damping = damping.get();
+    add(m.effects, std::move(damping));
+  } else {
+    std::unique_ptr<Inertia> density = make_fictitious_density(s, rows);
+    m.inertia = density.get();
+    add(m.effects, std::move(density));
+  }
+}
 }  // namespace
 
 void attach_effects(Model& m, const Scene& s) {
@@ -46,6 +72,7 @@ void attach_effects(Model& m, const Scene& s) {
                                               m.approximation.get());
   m.damage = damage.rule;
   add(m.effects, std::move(damage.effect));
+  if (s.dynamics) add_inertia(m, s);
 }
 
 }  // namespace pd

@@ -39,7 +39,30 @@ std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& 
   return out;
 }
 
+namespace {
+// Each constrained dof's kind and time function (DofMap::set_motion), from the condition
+// that sets it: its `time`, copied once per condition that has one.
+PrescribedMotion prescribed_motion(const Scene& scene, const std::vector<int>& constrained, const std::vector<int>& condition,
+                                   const std::vector<BoundaryCondition::Kind>& kind) {
+  using K = BoundaryCondition::Kind;
+  PrescribedMotion m;
+  std::vector<int> function_of(scene.boundary.size(), -1);
+  for (std::size_t ci = 0; ci < scene.boundary.size(); ++ci)
+    if (scene.boundary[ci].time)
+      function_of[ci] = static_cast<int>(m.functions.size()), m.functions.push_back(*scene.boundary[ci].time);
+  for (int dof : constrained) {
+    const K k = kind[static_cast<std::size_t>(dof)];
+    m.kind.push_back(k == K::Velocity ? PrescribedMotion::Kind::velocity
+                     : k == K::Fixed  ? PrescribedMotion::Kind::fixed
+                                      : PrescribedMotion::Kind::displacement);
+    m.function.push_back(function_of[static_cast<std::size_t>(condition[static_cast<std::size_t>(dof)])]);
+  }
+  return m;
+}
+}  // namespace
+
 DofMap scene_constraints(const Scene& scene, const Particles& particles) {
+  using K = BoundaryCondition::Kind;
   const int d = particles.dim;
   const std::size_t n = static_cast<std::size_t>(particles.size()) * d;
   std::vector<double> value(n, 0.0);
@@ -49,24 +72,32 @@ DofMap scene_constraints(const Scene& scene, const Particles& particles) {
   std::vector<std::shared_ptr<const AnalyticField>> rotation(scene.boundary.size());
   for (std::size_t ci = 0; ci < scene.boundary.size(); ++ci) {
     const BoundaryCondition& bc = scene.boundary[ci];
-    if (bc.kind != BoundaryCondition::Kind::Field) continue;
+    if (bc.kind != K::Field) continue;
     auto field = std::make_shared<const AnalyticField>(bc.field, scene.materials[0].elastic);
     if (field->name() == "rotation") rotation[ci] = std::move(field);
   }
   std::vector<std::shared_ptr<const AnalyticField>> path(n);
+  std::vector<int> condition(n, -1);
+  std::vector<K> kind(n, K::Fixed);
   for (const PrescribedDof& q : prescribed_dofs(scene, particles)) {
     fixed[q.dof] = 1;
     value[q.dof] = q.value;
     path[q.dof] = rotation[q.condition];
+    condition[q.dof] = q.condition, kind[q.dof] = q.kind;
   }
   DofMap dofs(fixed, value);
-  if (std::any_of(path.begin(), path.end(), [](const auto& f) { return f != nullptr; }))
-    dofs.set_load_path([&particles, d, path = std::move(path), constrained = dofs.constrained_dofs(),
+  dofs.set_motion(prescribed_motion(scene, dofs.constrained_dofs(), condition, kind));
+  if (std::any_of(path.begin(), path.end(), [](const auto& f) { return f != nullptr; })) {
+    // The positions, copied: the map must not point into a particle array (the model
+    // that owns both may move).
+    dofs.set_load_path([d, x = particles.x, path = std::move(path), constrained = dofs.constrained_dofs(),
                         values = dofs.prescribed()](double load, int i) {
       const int dof = constrained[static_cast<std::size_t>(i)];
       const auto& f = path[static_cast<std::size_t>(dof)];
-      return f ? f->displacement_at_load(particles.position(dof / d), load)[dof % d] : load * values[static_cast<std::size_t>(i)];
+      return f ? f->displacement_at_load(&x[static_cast<std::size_t>(dof / d) * d], load)[dof % d]
+               : load * values[static_cast<std::size_t>(i)];
     });
+  }
   return dofs;
 }
 

@@ -1,30 +1,18 @@
 // Adaptive dynamic relaxation to the static answer.
-#include "run/dynamic_simulation.hpp"
+#include "run/dynamic_run.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
-#include "discretize/discretization.hpp"
-#include "discretize/family_quality.hpp"
-#include "model/model.hpp"
-#include "dynamics/checkpoint.hpp"
+#include "damage/critical_stretch.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
-#include "dynamics/energies.hpp"
 #include "dynamics/progress.hpp"
-#include "dynamics/pvd_writer.hpp"
-#include "dynamics/time_step.hpp"
-#include "dynamics/verlet_integrator.hpp"
-#include "fields/analytic.hpp"
-#include "input/yaml_keys.hpp"
+#include "effects/inertia.hpp"
 #include "interrupt.hpp"
-#include "output/atomic_file.hpp"
-#include "output/csv_writer.hpp"
-#include "output/vtu_writer.hpp"
 #include "run/constraints.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
@@ -39,16 +27,20 @@ double norm_over(const std::vector<double>& v, const std::vector<int>& dofs) {
 }
 }  // namespace
 
-RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
+RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
+  const Scene& scene = run.scene;
+  Model& model = run.model;
+  RunSummary& summary = run.summary;
+  std::vector<double>& u = run.u;
+  const DynamicRun::Log& log = run.log;
   const auto t0 = std::chrono::steady_clock::now();
-  const DynamicsSpec& dyn = *scene_.dynamics;
-  DynamicsReport& rep = *summary_.dynamics;
+  const DynamicsSpec& dyn = *scene.dynamics;
+  DynamicsReport& rep = run.start_report();
   rep.dt = 1;
-  DofMap dofs = scene_constraints(scene_, model_.particles);
-  check_scene_holds_body(scene_, model_.particles, model_.bonds, dofs);
-  AdaptiveDynamicRelaxation adr(density_, free_);
+  check_scene_holds_body(scene, model.particles, model.bonds, model.dofs);
+  AdaptiveDynamicRelaxation adr(model.inertia->mass(), model.dofs.free_dofs());
   int step = 0;
-  long long broken_start = broken_bond_count(model_.bonds);
+  long long broken_start = broken_bond_count(model.bonds);
   std::vector<double> f, g;
   double reference = 0;
   // Checkpoint scalars: [iterations, reference, broken_start, v (N), f_prev (N)]. The
@@ -57,50 +49,50 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   constexpr std::size_t kHead = 3;
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
-    restore(dyn.restart, step, scalars);
-    const std::size_t N = u_.size();
+    run.restore(dyn.restart, step, scalars);
+    const std::size_t N = u.size();
     if (scalars.size() != kHead + 2 * N) throw std::runtime_error(dyn.restart + ": not a relaxation checkpoint of this scene");
     const auto v_begin = scalars.begin() + kHead, f_begin = v_begin + static_cast<std::ptrdiff_t>(N);
     adr.restore(static_cast<int>(scalars[0]), std::vector<double>(v_begin, f_begin), std::vector<double>(f_begin, scalars.end()));
     reference = scalars[1];
     broken_start = static_cast<long long>(scalars[2]);
-    forces(0.0, f, g);
+    run.forces(0.0, f, g);
   } else {
-    apply_initial_conditions();
-    prescribe(0.0);
-    forces(0.0, f, g);
+    run.apply_initial_conditions();
+    run.prescribe(0.0);
+    run.forces(0.0, f, g);
     // The reference force: the larger of the loads and the initial out-of-balance force.
-    reference = norm_over(f, free_);
-    for (const auto& e : model_.effects) {
+    reference = norm_over(f, model.dofs.free_dofs());
+    for (const auto& e : model.effects) {
       if (!e->is_load()) continue;
-      std::vector<double> load(u_.size(), 0.0);
-      e->add_forces(u_.data(), 0.0, load.data());  // in full: relaxation has no time functions
-      reference = std::max(reference, norm_over(load, free_));
+      std::vector<double> load(u.size(), 0.0);
+      e->add_forces(u.data(), 0.0, load.data());  // in full: relaxation has no time functions
+      reference = std::max(reference, norm_over(load, model.dofs.free_dofs()));
     }
     if (reference == 0) reference = 1;
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  double ratio = norm_over(f, free_) / reference;
-  if (step == 0) series_.push_back(make_row(0, 0, ratio));
-  Progress progress(log_, write ? dyn.progress_seconds : 0.0, step, last);
+  double ratio = norm_over(f, model.dofs.free_dofs()) / reference;
+  if (step == 0) run.series.push_back(run.make_row(0, 0, ratio));
+  Progress progress(log, write ? dyn.progress_seconds : 0.0, step, last);
   int s = step;
   while (ratio > dyn.tolerance && s < last) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
-    adr.step(f, u_);
-    after_step();
-    forces(0.0, f, g);
-    ratio = norm_over(f, free_) / reference;
+    adr.step(f, u);
+    run.after_step();
+    run.forces(0.0, f, g);
+    ratio = norm_over(f, model.dofs.free_dofs()) / reference;
     if (!std::isfinite(ratio)) throw std::runtime_error(fmt::format("adaptive dynamic relaxation diverged at iteration {}", s));
     const bool done = ratio <= dyn.tolerance;
-    if (s % dyn.output_every == 0 || done) series_.push_back(make_row(s, s, ratio));
-    if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done)) write_snapshot(s, s);
+    if (s % dyn.output_every == 0 || done) run.series.push_back(run.make_row(s, s, ratio));
+    if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done)) run.write_snapshot(s, s);
     if (dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0) {
       std::vector<double> scalars{static_cast<double>(adr.iterations()), reference, static_cast<double>(broken_start)};
       scalars.insert(scalars.end(), adr.velocity().begin(), adr.velocity().end());
       scalars.insert(scalars.end(), adr.previous_force().begin(), adr.previous_force().end());
-      save_checkpoint(s, scalars);
+      run.save_checkpoint(s, scalars);
     }
     progress.update(s, s, fmt::format(", |r|/ref = {:.3e}", ratio));
   }
@@ -109,21 +101,21 @@ RunSummary DynamicSimulation::run_relaxation(bool write, int stop_after) {
   rep.converged = ratio <= dyn.tolerance;
   rep.residual_ratio = ratio;
   rep.damping = adr.damping();
-  rep.strain_available = model_.assembler->has_energy();
-  if (rep.strain_available) rep.strain = model_.assembler->strain_energy(u_.data());
-  rep.bonds_broken = broken_bond_count(model_.bonds) - broken_start;
-  summary_.broken_bonds = static_cast<int>(broken_bond_count(model_.bonds));
-  summary_.newton.converged = rep.converged;
-  const std::vector<double> stress = stress_field();
-  summary_.probes = evaluate_probes(scene_, model_.particles, probe_ids_, u_, &stress);
-  summary_.solve_seconds = seconds_since(t0);
-  log_(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
-  if (write) write_results();
-  log_(summary_.text());
+  rep.strain_available = model.assembler->has_energy();
+  if (rep.strain_available) rep.strain = model.assembler->strain_energy(u.data());
+  rep.bonds_broken = broken_bond_count(model.bonds) - broken_start;
+  summary.broken_bonds = static_cast<int>(broken_bond_count(model.bonds));
+  summary.newton.converged = rep.converged;
+  const std::vector<double> stress = run.stress_field();
+  summary.probes = evaluate_probes(scene, model.particles, run.probe_ids, u, &stress);
+  summary.solve_seconds = seconds_since(t0);
+  log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
+  if (write) run.write_results();
+  log(summary.text());
   if (!rep.converged && stop_after == 0)
     throw std::runtime_error(fmt::format("adaptive dynamic relaxation did not converge in {} iterations (|r|/ref = {:.3e} > {:.3g})", s,
                                          ratio, dyn.tolerance));
-  return summary_;
+  return summary;
 }
 
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assembly/sparsity_pattern.hpp"
+#include "solve/prescribed_motion.hpp"
 
 namespace pd {
 
@@ -41,11 +42,18 @@ class DofMap {
   // constrained dof; it must give prescribed()[i] at load 1.
   using LoadPath = std::function<double(double load, int i)>;
   void set_load_path(LoadPath path) { path_ = std::move(path); }
+  // A dynamic run's prescribed motion: each constrained dof's function of time
+  // (solve/prescribed_motion.hpp). apply_motion sets u and v (v: when not empty) of the
+  // constrained dofs at time t.
+  void set_motion(PrescribedMotion motion) { motion_ = std::move(motion); }
+  const PrescribedMotion& motion() const { return motion_; }
+  void apply_motion(double t, std::vector<double>& u, std::vector<double>& v) const;
 
  private:
   std::vector<int> free_index_, free_, constrained_;
   std::vector<double> prescribed_;
   LoadPath path_;
+  PrescribedMotion motion_;
 };
 
 // K_ff and K_fc of a matrix with a fixed pattern. The index plans are built once; each

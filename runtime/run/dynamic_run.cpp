@@ -1,0 +1,112 @@
+// The dynamic runs' set-up, initial conditions, and forces at time t. The two loops are
+// in explicit_run.cpp and relaxation_run.cpp, the series, checkpoints and files in
+// dynamic_outputs.cpp.
+#include "run/dynamic_run.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "discretize/discretization.hpp"
+#include "effects/inertia.hpp"
+#include "input/yaml_keys.hpp"
+#include "run/run_outputs.hpp"
+#include "solve/stopwatch.hpp"
+
+namespace pd {
+
+void check_dynamic_scene(const Scene& scene) {
+  if (!scene.dynamics) throw std::invalid_argument("dynamic run: the scene has no dynamics section");
+  if (is_obq(scene.quadrature))
+    throw std::invalid_argument(scene.file + ": domain.quadrature: " + std::string(quadrature_name(scene.quadrature)) +
+                                " is implemented for static solves only");
+}
+
+DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log log) {
+  check_dynamic_scene(scene);
+  const auto t0 = std::chrono::steady_clock::now();
+  const DynamicsSpec& dyn = *scene.dynamics;
+  DynamicRun run{scene, model, std::move(log), {}, {}, {}, {}, {}, {}};
+  RunSummary& summary = run.summary;
+  summary.describe(scene, model);
+  // The intact kernels (alpha folded to 1) unless a bond is or can become broken; no
+  // matrix: the explicit loop needs forces only.
+  const AssemblerOptions options = attach_assembler(model, scene, false, dyn.threads);
+  summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
+  summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name, summary.variant,
+                                        model.influence->name));
+  // The loads (each scaled by its own function of time), the pre-cracks, damage
+  // evolution, and the inertia (with the viscous damping) or relaxation's fictitious density.
+  attach_effects(model, scene);
+  for (const auto& e : model.effects) summary.effects.push_back(e->describe());
+  if (run.explicit_dynamics() && !dyn.initial.empty())
+    summary.effects.push_back(fmt::format("initial conditions: {} region(s)", dyn.initial.size()));
+  run.probe_ids = probe_particles(scene, model.particles);
+  const std::size_t N = static_cast<std::size_t>(model.particles.size()) * model.particles.dim;
+  run.u.assign(N, 0.0);
+  if (run.explicit_dynamics()) {
+    run.v.assign(N, 0.0);
+    if (dyn.dt > model.inertia->dt_stable)
+      run.log(fmt::format("  warning: dt = {:.6g} exceeds the stable estimate {:.6g}", dyn.dt, model.inertia->dt_stable));
+  }
+  summary.newton.unknowns = static_cast<std::int64_t>(model.dofs.free_count());
+  summary.setup_seconds = model.build_seconds + seconds_since(t0);
+  run.log(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene.file,
+                      summary.particles, summary.bonds, scene.delta(), scene.delta() / scene.h, summary.setup_seconds));
+  for (const auto& e : summary.effects) run.log("  effect: " + e);
+  for (const auto& w : summary.warnings) run.log("  warning: " + w);
+  return run;
+}
+
+double DynamicRun::dt() const { return model.inertia->dt; }
+
+DynamicsReport& DynamicRun::start_report() {
+  summary.dynamics = DynamicsReport{};
+  summary.dynamics->method = scene.dynamics->method;
+  return *summary.dynamics;
+}
+
+void DynamicRun::apply_initial_conditions() {
+  const int d = model.particles.dim;
+  for (const InitialCondition& ic : scene.dynamics->initial) {
+    const auto ids = region_particles(ic.region, model.particles, scene);
+    if (ids.empty()) throw SceneError(ic.where + ": the region holds no particle");
+    for (int p : ids) {
+      double shape = 1;
+      if (ic.gaussian) {
+        const double z = (model.particles.position(p)[ic.axis] - ic.center) / ic.width;
+        shape = std::exp(-0.5 * z * z);
+      }
+      for (int c = 0; c < d; ++c) {
+        double linear = 0;  // gradient (x - origin), zero without a gradient
+        for (int j = 0; ic.has_gradient && j < d; ++j)
+          linear += ic.gradient[c][j] * (model.particles.position(p)[j] - ic.origin[j]);
+        u[static_cast<std::size_t>(p) * d + c] = shape * ic.displacement[c] + linear;
+        if (!v.empty()) v[static_cast<std::size_t>(p) * d + c] = shape * ic.velocity[c];
+      }
+    }
+  }
+}
+
+bool DynamicRun::after_step() {
+  long long changes = 0;
+  for (const auto& e : model.effects) changes += e->after_step(u.data());
+  return changes > 0;
+}
+
+void DynamicRun::forces(double t, std::vector<double>& f, std::vector<double>& g) const {
+  f.resize(u.size());
+  g.assign(u.size(), 0.0);
+  model.assembler->internal_forces(u.data(), f.data());
+  // Each load at its time function's value (effects/timed_effect.cpp); relaxation has no
+  // time functions (the reader refuses them), so its loads are in full. Inertia and
+  // damping add no force here.
+  for (const auto& e : model.effects) e->add_forces(u.data(), t, g.data());
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] += g[i];
+  // The reaction of a constraint, R = -(f_int + load), plus the load there: -f_int.
+  for (int i : model.dofs.constrained_dofs()) g[i] = g[i] - f[i];
+}
+
+}  // namespace pd
