@@ -28,7 +28,8 @@ set(PD_GEN_SOURCES ${PD_GEN_FILES})
 list(FILTER PD_GEN_SOURCES INCLUDE REGEX "\\.cpp$")
 add_library(pd_kernels STATIC ${PD_GEN_SOURCES})
 add_dependencies(pd_kernels generate_kernels)
-target_include_directories(pd_kernels PUBLIC ${CMAKE_SOURCE_DIR}/runtime ${PD_GEN_DIR})
+target_include_directories(pd_kernels PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}/runtime> $<BUILD_INTERFACE:${PD_GEN_DIR}>
+                                              $<INSTALL_INTERFACE:include/pdgen>)
 # Generated code must compile cleanly: warnings are errors here.
 target_compile_options(pd_kernels PRIVATE -Wall -Wextra -Werror)
 # The bond loops carry `#pragma omp simd reduction(...)` (generator/emit/emitter.cpp):

@@ -70,12 +70,21 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   if (coupling == Coupling::pairwise && law.n_states > 0)
     throw std::invalid_argument(std::string("assembler: law ") + law.name + " has states; its tangent couples every two " +
                                 "particles of a family, not only the pairs of the pairwise pattern");
+  if (options.gauss_points) {
+    gauss_ = std::make_unique<GaussPointAssembler>(particles, *options.gauss_points, law, variant_, inputs_.params,
+                                                   options.matrix);
+    return;
+  }
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim, coupling);
 }
 
-void FamilyAssembler::update_moments() { compute_moments(inputs_, law_, variant_); }
+void FamilyAssembler::update_moments() {
+  compute_moments(inputs_, law_, variant_);
+  if (gauss_) gauss_->update_moments();
+}
 
 const SparsityPattern& FamilyAssembler::pattern() const {
+  if (gauss_) return gauss_->pattern();
   if (!pattern_) throw std::logic_error("assembler: built without a matrix pattern (AssemblerOptions::matrix = false)");
   return *pattern_;
 }
@@ -123,6 +132,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
   const std::size_t N = static_cast<std::size_t>(dofs());
   if (forces) std::fill(forces, forces + N, 0.0);
   double* values = nullptr;
+  if (gauss_) return gauss_->assemble(u, forces, K);
   if (K) {
     const SparsityPattern& pat = pattern();
     if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pat.nonzeros() || !K->isCompressed())
@@ -179,6 +189,7 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
 }
 
 void FamilyAssembler::stiffness_product(const double* u, const double* v, double* Kv) const {
+  if (gauss_) return gauss_->stiffness_product(u, v, Kv);
   const int d = inputs_.dim();
   std::fill(Kv, Kv + dofs(), 0.0);
   for_each_family("matrix-free product", [&](ThreadScratch& s, int p) -> const char* {
@@ -197,6 +208,7 @@ void FamilyAssembler::stiffness_product(const double* u, const double* v, double
 }
 
 void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
+  if (gauss_) return gauss_->stiffness_diagonal(u, diag);
   const int d = inputs_.dim(), S = law_.n_states, dd = d * d;
   std::fill(diag, diag + dofs(), 0.0);
   for_each_family("stiffness diagonal", [&](ThreadScratch& s, int p) -> const char* {
@@ -263,6 +275,7 @@ namespace pd {
 double FamilyAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   if (options_.collocation) throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
+  if (gauss_) return gauss_->strain_energy(u);
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);
 #pragma omp parallel num_threads(thread_count())

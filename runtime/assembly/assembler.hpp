@@ -7,6 +7,7 @@
 
 #include "assembly/family_colouring.hpp"
 #include "assembly/family_gather.hpp"
+#include "assembly/gauss_point_assembler.hpp"
 #include "assembly/sparsity_pattern.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
@@ -25,6 +26,9 @@ struct AssemblerOptions {
   // without states). Coupling::family on a pairwise law stores its structural zeros
   // (the two-horizon pattern, for comparison); pairwise on a law with states throws.
   std::optional<Coupling> coupling;
+  // Non-null: the families integrate over these fixed Gauss points (paper 002 §3.3) and
+  // every call goes to GaussPointAssembler (gauss_point_assembler.hpp). Must outlive the assembler.
+  const GaussPoints* gauss_points = nullptr;
 };
 
 // Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over
@@ -77,6 +81,8 @@ class FamilyAssembler {
   const abi::LawDescriptor& law() const { return law_; }
   const abi::KernelVariant& variant() const { return variant_; }
   bool intact() const { return options_.intact; }
+  // The Gauss-point path, or null (the bonds above are then the quadrature).
+  const GaussPointAssembler* gauss_points() const { return gauss_.get(); }
   int dofs() const { return inputs_.size() * inputs_.dim(); }
 
  private:
@@ -90,6 +96,7 @@ class FamilyAssembler {
   FamilyInputs inputs_;
   FamilyColouring colouring_;
   std::unique_ptr<SparsityPattern> pattern_;
+  std::unique_ptr<GaussPointAssembler> gauss_;
 };
 
 }  // namespace pd

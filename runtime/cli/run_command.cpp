@@ -15,7 +15,9 @@
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
 #include "output/output_directory.hpp"
+#include "output/staging.hpp"
 #include "model/model.hpp"
+#include "petsc/distributed_dynamics.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
@@ -77,7 +79,9 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   if (!distributed_backend_available())
     return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
                        "scripts/install_deps.sh and configure again)");
-  if (scene.dynamics) return std::string("solver.backend: petsc solves static scenes; dynamics runs on the serial backend");
+  if (scene.dynamics && scene.dynamics->method != DynamicsMethod::explicit_verlet)
+    return std::string("solver.backend: petsc runs static scenes and explicit dynamics; dynamic relaxation runs on the "
+                       "serial backend (or solve the scene statically with backend petsc)");
   return std::nullopt;
 }
 
@@ -112,27 +116,43 @@ int run_scene(const RunOptions& options) {
   }
   RunSummary s;
   const bool dynamic = scene.dynamics.has_value();
+  const std::string directory = scene.output.directory;
   int rank = 0;
+  // Rank 0 writes into a staging directory and publishes it when the run ends (done, failed
+  // or stopped by a signal; not on bad input): kill -9 leaves the older result whole.
+  std::optional<OutputDirectoryClaim> claim;
+  std::optional<StagingDirectory> staging;
+  const auto publish = [&] {
+    if (staging) staging->publish();
+  };
   try {
     // Every rank solves; rank 0 alone claims the directory, logs and writes the files.
     std::optional<DistributedSession> session;
     if (petsc) session.emplace(std::vector<std::string>{scene.solver.petsc_options, options.petsc_options});
     rank = session ? session->rank() : 0;
-    std::optional<OutputDirectoryClaim> claim;
-    if (rank == 0) claim.emplace(scene.output.directory);  // writable and ours, before any solve
+    if (rank == 0) {
+      claim.emplace(directory);  // writable and ours, before any solve
+      staging.emplace(directory);
+      scene.output.directory = staging->path();
+    }
     const auto log = [rank](const std::string& line) {
       if (rank != 0) return;
       fmt::print("{}\n", line);
       std::fflush(stdout);
     };
     log(version_line());
+    if (staging)
+      for (const std::string& old : staging->leftovers())
+        log(fmt::format("  warning: {}: the files of an earlier run into {} that did not finish (killed?): its checkpoint, "
+                        "if any, can resume it with --restart; remove the directory when it is not needed",
+                        old, directory));
     if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
     // Read (above), build the model, plan the solver, run, write.
     if (scene.dynamics) check_dynamic_scene(scene);
     Model model = build_model(scene);
     if (scene.dynamics) {
       DynamicRun run = prepare_dynamic_run(model, scene, log);
-      s = run_dynamic(run, true);
+      s = session ? run_distributed_dynamics(run, true) : run_dynamic(run, true);
     } else {
       StaticRun run = plan_static_run(model, scene, log);
       run_static(run, model, scene, log);
@@ -147,12 +167,21 @@ int run_scene(const RunOptions& options) {
     return 2;
   } catch (const Interrupted& e) {
     // Dynamic runs write snapshots and checkpoints as they go; those are complete files.
+    publish();
     fmt::print(stderr, "pd run: {}; {}\n", e.what(),
                dynamic ? "no result files were written (snapshots and checkpoints already written are complete)"
                        : "no result files were written");
     return 128 + e.signal();
+  } catch (const std::exception&) {
+    // A failed dynamic run's snapshots show how it failed: published like a finished run's
+    // (without summary.json, so the directory says the run did not finish).
+    publish();
+    throw;
   }
   if (rank != 0) return 0;
+  publish();
+  for (auto& f : s.files)
+    if (staging && f.rfind(staging->path() + "/", 0) == 0) f = directory + f.substr(staging->path().size());
   fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
              s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);
   for (const auto& f : s.files) fmt::print("  {}\n", f);

@@ -35,28 +35,40 @@ std::string critical_stretch_origin(const DamageSpec& spec, int dim, const abi::
 CriticalStretchDamage::CriticalStretchDamage(const Particles& particles, Bonds& bonds, double s0, bool tension_only)
     : p_(particles), b_(bonds), s0_(s0), tension_only_(tension_only) {}
 
+namespace {
+// Breaks bond entry e of family a when over the limit; true when it broke. Y = (x_b +
+// u_b) - (x_a + u_a): the two families subtract the same two numbers, so their |Y|
+// agree bit for bit and both copies of a bond break together, whichever process holds them.
+inline bool break_if_over(const Particles& p, Bonds& bonds, const double* u, double s0, bool tension_only, int a, int e) {
+  if (bonds.alpha[e] == 0.0) return false;
+  const int d = p.dim, b = bonds.neighbor[e];
+  double l2 = 0;
+  for (int c = 0; c < d; ++c) {
+    const std::size_t ia = static_cast<std::size_t>(a) * d + c, ib = static_cast<std::size_t>(b) * d + c;
+    const double y = (p.x[ib] + u[ib]) - (p.x[ia] + u[ia]);
+    l2 += y * y;
+  }
+  const double s = (std::sqrt(l2) - bonds.length[e]) / bonds.length[e];
+  if (!(s > s0 || (!tension_only && -s > s0))) return false;
+  bonds.alpha[e] = 0.0;
+  return true;
+}
+}  // namespace
+
 int CriticalStretchDamage::break_bonds(const double* u) {
-  const int n = p_.size(), d = p_.dim;
+  const int n = p_.size();
   int broken = 0;
-  // Y = (x_b + u_b) - (x_a + u_a): the two families subtract the same two numbers, so
-  // their |Y| agree bit for bit and both copies of a bond break together.
 #pragma omp parallel for reduction(+ : broken) schedule(static)
   for (int a = 0; a < n; ++a)
-    for (int e = b_.offsets[a]; e < b_.offsets[a + 1]; ++e) {
-      if (b_.alpha[e] == 0.0) continue;
-      const int b = b_.neighbor[e];
-      double l2 = 0;
-      for (int c = 0; c < d; ++c) {
-        const std::size_t ia = static_cast<std::size_t>(a) * d + c, ib = static_cast<std::size_t>(b) * d + c;
-        const double y = (p_.x[ib] + u[ib]) - (p_.x[ia] + u[ia]);
-        l2 += y * y;
-      }
-      const double s = (std::sqrt(l2) - b_.length[e]) / b_.length[e];
-      if (s > s0_ || (!tension_only_ && -s > s0_)) {
-        b_.alpha[e] = 0.0;
-        broken += b < a ? 0 : 1;
-      }
-    }
+    for (int e = b_.offsets[a]; e < b_.offsets[a + 1]; ++e)
+      if (break_if_over(p_, b_, u, s0_, tension_only_, a, e)) broken += b_.neighbor[e] < a ? 0 : 1;
+  return broken;
+}
+
+int CriticalStretchDamage::break_family_bonds(const double* u, const std::vector<int>& families) {
+  int broken = 0;
+  for (int a : families)
+    for (int e = b_.offsets[a]; e < b_.offsets[a + 1]; ++e) broken += break_if_over(p_, b_, u, s0_, tension_only_, a, e) ? 1 : 0;
   return broken;
 }
 

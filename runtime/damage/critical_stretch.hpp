@@ -39,6 +39,10 @@ class CriticalStretchDamage {
   // Breaks every intact bond over the limit at displacement u; returns how many bonds
   // broke (each counted once, not per family). Deterministic and thread-count independent.
   int break_bonds(const double* u);
+  // The same rule on the bonds of the listed families only (a rank's own families under
+  // MPI: runtime/petsc/distributed_explicit.cpp). Returns the bond entries broken, each
+  // family's copy counted (its partner copy is in another family, maybe on another rank).
+  int break_family_bonds(const double* u, const std::vector<int>& families);
   double s0() const { return s0_; }
   bool tension_only() const { return tension_only_; }
   std::string describe() const;

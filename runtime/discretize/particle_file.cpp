@@ -1,6 +1,8 @@
 // Reading a point cloud from CSV.
 #include "discretize/particle_file.hpp"
 
+#include "discretize/particle_vtu.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -37,6 +39,7 @@ bool parse_number(const std::string& s, double& v) {
 }  // namespace
 
 ParticleFile read_particle_file(const std::string& path, int dim) {
+  if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0) return read_particle_vtu(path, dim);
   std::ifstream in(path);
   if (!in) throw SceneError(path + ": cannot open the particle file");
   ParticleFile f;
@@ -105,7 +108,7 @@ std::vector<int> particle_materials(const ParticleFile& f, const std::vector<std
       if (r.ec == std::errc() && r.ptr == end && k >= 0 && k < static_cast<int>(names.size())) index = k;
     }
     if (index < 0)
-      throw SceneError(fmt::format("{}:{}: row {}: unknown material '{}' (the scene's materials: {})", f.path, f.line[i], i + 1, m,
+      throw SceneError(fmt::format("{}:{}: {}: unknown material '{}' (the scene's materials: {})", f.path, f.line[i], f.item(i), m,
                                    fmt::join(names, ", ")));
     out[static_cast<std::size_t>(i)] = index;
   }

@@ -43,6 +43,11 @@ CheckpointIdentity checkpoint_identity(const Scene& scene, const Particles& part
   id["horizon"] = fmt::format("{:.17g}", scene.delta());
   id["particles"] = fmt::format("{} (positions, volumes, materials: hash {}{}{})", particles.size(), hash_of(particles.x),
                                 hash_of(particles.volume), hash_of(particles.material));
+  // The quadrature sets each bond's volume (the bonds' hash above does not see the factors).
+  id["quadrature"] = std::string(quadrature_name(scene.quadrature)) + (scene.compensation ? ", compensation" : "") +
+                     (scene.gauss_points > 0 ? fmt::format(", gauss points {} per axis, MLS support {:.17g} h",
+                                                           scene.gauss_points, scene.gauss_support)
+                                             : std::string());
   id["bonds"] = fmt::format("{} (hash {})", bonds.neighbor.size(), hash_of(bonds.neighbor));
   for (std::size_t k = 0; k < scene.materials.size(); ++k) {
     const MaterialSpec& m = scene.materials[k];

@@ -1,5 +1,5 @@
 // What a checkpoint belongs to: the inputs that determine a dynamic run's state (law,
-// influence, horizon, particle geometry, bonds, materials, damage rule, method, time
+// influence, horizon, particle geometry, bonds, quadrature (with compensation and Gauss points), materials, damage rule, method, time
 // step) and the binary that wrote it. A restart from a checkpoint of another run would
 // continue a state this scene never produced (a law changed on the same grid ran with
 // a 6.7 % different result and no word), so it is refused instead.

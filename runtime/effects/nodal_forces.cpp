@@ -57,6 +57,7 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p,
   int tractions = 0, body = 0;
   for (const BoundaryCondition& bc : conditions) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // carried by the layer's ties
     const auto ids = region_particles(bc.region, p, s);
     if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
     if (bc.kind == BoundaryCondition::Kind::Traction) {

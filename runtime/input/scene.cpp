@@ -264,6 +264,28 @@ std::array<bool, 3> read_components(const YamlAt& at, int dim) {
   return c;
 }
 
+// `method: on_body | fictitious_layer` and the layer's `face: {point, normal}`.
+void read_condition_method(const YamlAt& at, MapReader& m, BoundaryCondition& bc, int dim) {
+  const std::string method = as_text(at);
+  if (method == "on_body") return;
+  if (method != "fictitious_layer") at.fail("unknown method '" + method + "' (on_body, fictitious_layer)");
+  using K = BoundaryCondition::Kind;
+  if (bc.kind == K::Velocity || bc.kind == K::BodyForce)
+    at.fail("a fictitious layer carries fixed, displacement, field or traction conditions");
+  if (bc.kind == K::Traction && dim != 2) at.fail("the fictitious-layer traction (paper 003 eqs. 32-35) is two-dimensional");
+  if (bc.time) at.fail("a fictitious layer's values are applied in full (statics: by the load factor); no time_function");
+  bc.method = BoundaryCondition::Method::fictitious_layer;
+  const YamlAt face = m.get("face");
+  MapReader fm(face);
+  bc.face_point = to_point(fm.get("point"), dim);
+  bc.face_normal = to_point(fm.get("normal"), dim);
+  fm.finish();
+  double norm = 0;
+  for (int k = 0; k < dim; ++k) norm += bc.face_normal[k] * bc.face_normal[k];
+  if (!(norm > 0)) face.fail("normal must not be zero");
+  for (int k = 0; k < dim; ++k) bc.face_normal[k] /= std::sqrt(norm);
+}
+
 BoundaryCondition read_condition(const YamlAt& at, int dim) {
   MapReader m(at);
   BoundaryCondition bc;
@@ -311,7 +333,8 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
     bc.time = read_time_function(tf);
     bc.time_where = tf.location();
   }
-  if (bc.kind == BoundaryCondition::Kind::Traction) {
+  if (m.has("method")) read_condition_method(m.get("method"), m, bc, dim);
+  if (bc.kind == BoundaryCondition::Kind::Traction && bc.method == BoundaryCondition::Method::on_body) {
     bc.face_measure = m.number("face_measure", 0.0);
     if (bc.region.kind != Region::Kind::Side && bc.face_measure <= 0)
       at.fail("a traction on a region that is not a side needs face_measure (the length or area it acts on)");
@@ -429,6 +452,18 @@ Scene read(const YAML::Node& root, const std::string& file) {
         d.get("compensation").fail("the compensation factor scales bond volumes; obq and obq_cut replace them by their own weights");
       if (s.compensation && s.perturbation > 0)
         d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
+    }
+    if (d.has("gauss_points")) {
+      // {per_axis: 1|2|3, support: r_w / h}: fixed Gauss points with MLS displacements.
+      MapReader g(d.get("gauss_points"));
+      s.gauss_points = g.integer("per_axis", 2);
+      if (s.gauss_points < 1 || s.gauss_points > 3) g.get("per_axis").fail("per_axis is 1, 2 or 3 Gauss points per axis of a cell");
+      s.gauss_support = g.number("support", 3.0);
+      if (!(s.gauss_support >= 1.0)) g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
+      g.finish();
+      if (s.quadrature != Quadrature::Volume || s.compensation)
+        d.get("gauss_points").fail("the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
+                                   "another quadrature or compensation");
     }
     for (const char* key : {"holes", "inclusions"}) {
       if (!d.has(key)) continue;

@@ -57,6 +57,10 @@ struct BoundaryCondition {
   // integral). Without one: constant 1, i.e. applied at t = 0.
   std::optional<TimeFunction> time;
   std::string time_where;  // "file:line: boundary[i].time_function"
+  // `method: fictitious_layer` (paper 003 eqs. 29-35): the region is a layer outside the
+  // body whose particles follow their mirror images across `face` (discretize/fictitious_layer.hpp).
+  enum class Method { on_body, fictitious_layer } method = Method::on_body;
+  Point face_point{}, face_normal{};  // a point of the body's face, unit normal out of the body
 };
 
 // `body_force: {field, region}`: a body force density from an analytic field on the
@@ -125,6 +129,10 @@ struct Scene {
   std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
   bool obq_symmetric = false;                 // domain.obq_symmetric
   bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
+  // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
+  // each cell (0: off, the quadrature above) and the MLS support in units of h.
+  int gauss_points = 0;
+  double gauss_support = 3.0;
   std::vector<Shape> holes, inclusions;
   double horizon_ratio = 3.0;  // delta / h, unless horizon_length > 0
   double horizon_length = 0;

@@ -79,6 +79,17 @@ Model build_model(const Scene& scene) {
         make_obq_collocation(m.particles, m.bonds, space, m.collocation_description, body ? &*body : nullptr,
                              scene.obq_symmetric));
   }
+  if (scene.gauss_points > 0) {
+    // The Gauss bonds are not cut by cracks and do not break; the cells are of one spacing.
+    if (!scene.cracks.empty() || scene.damage || !scene.particle_spacing.empty())
+      throw SceneError(scene.file + ": domain.gauss_points: not with cracks, damage or domain.blocks (the Gauss bonds "
+                       "are not cut and do not break; the cells need one spacing)");
+    GaussPointOptions o;
+    o.per_axis = scene.gauss_points;
+    o.support = scene.gauss_support;
+    m.gauss_points = std::make_unique<GaussPoints>(
+        build_gauss_points(m.particles, scene.h, scene.delta(), m.influence->weight, o));
+  }
   for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   m.dofs = scene_constraints(scene, m.particles);
   m.build_seconds = seconds_since(t0);
@@ -97,6 +108,7 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.matrix = matrix;
   options.threads = threads;
   options.collocation = model.collocation.get();
+  options.gauss_points = model.gauss_points.get();
   model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
   model.assembler_options = options;
   return options;

@@ -13,6 +13,7 @@
 #include "assembly/assembler.hpp"
 #include "assembly/collocation.hpp"
 #include "discretize/family_quality.hpp"
+#include "discretize/gauss_points.hpp"
 #include "effects/effect.hpp"
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
@@ -44,6 +45,9 @@ struct Model {
   // paper 001), and the log line that says how many families kept the volume rule.
   std::unique_ptr<Collocation> collocation;
   std::string collocation_description;
+  // domain.gauss_points (paper 002 §3.3): the points, their MLS shape functions and the
+  // Gauss families the assembler integrates over instead of the bonds.
+  std::unique_ptr<GaussPoints> gauss_points;
   std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared after what it reads)
   AssemblerOptions assembler_options;          // the options it was built with
   // Static matrix-free runs with the short-horizon preconditioner (attach_short_horizon):

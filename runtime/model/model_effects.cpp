@@ -28,6 +28,7 @@ void add_static_loads(Model& m, const Scene& s) {
 void add_timed_loads(Model& m, const Scene& s) {
   for (const BoundaryCondition& bc : s.boundary) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // carried by the layer's ties
     add(m.effects, make_timed(make_external_loads(s, m.particles, std::span(&bc, 1)), bc.time.value_or(TimeFunction{}),
                               bc.time ? ", times " + bc.time->describe() : std::string()));
   }

@@ -4,11 +4,13 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
+#include "discretize/fictitious_layer.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
 
@@ -22,6 +24,7 @@ std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& 
   for (std::size_t ci = 0; ci < scene.boundary.size(); ++ci) {
     const BoundaryCondition& bc = scene.boundary[ci];
     if (bc.kind == K::Traction || bc.kind == K::BodyForce) continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // ties: scene_layer_ties
     const auto ids = region_particles(bc.region, particles, scene);
     if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
     std::unique_ptr<AnalyticField> field;
@@ -98,6 +101,8 @@ DofMap scene_constraints(const Scene& scene, const Particles& particles) {
                : load * values[static_cast<std::size_t>(i)];
     });
   }
+  std::vector<TiedDof> ties = scene_layer_ties(scene, particles);
+  if (!ties.empty()) dofs.tie(std::move(ties));
   return dofs;
 }
 
@@ -149,6 +154,14 @@ std::string unheld_message(const Particles& particles, const Bonds& bonds, const
   std::map<int, std::vector<int>> clusters, cluster_dofs;
   for (int p = 0; p < n; ++p) clusters[root(p)].push_back(p);
   for (int dof : dofs.constrained_dofs()) cluster_dofs[root(dof / d)].push_back(dof);
+  // A tied dof holds its component when it does not follow a rigid translation of its
+  // masters (a fictitious layer's odd mirror u_f = 2U* - u: coefficients summing to -1).
+  for (const TiedDof& t : dofs.ties()) {
+    double same = 0;
+    for (std::size_t k = 0; k < t.masters.size(); ++k)
+      if (t.masters[k] % d == t.dof % d) same += t.coefficients[k];
+    if (std::abs(same - 1.0) > 1e-12) cluster_dofs[root(t.dof / d)].push_back(t.dof);
+  }
   for (const auto& [r, members] : clusters) {
     const std::string missing = missing_constraints(particles, cluster_dofs[r]);
     if (missing.empty()) continue;

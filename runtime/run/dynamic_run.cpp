@@ -34,6 +34,7 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
   // The intact kernels (alpha folded to 1) unless a bond is or can become broken; no
   // matrix: the explicit loop needs forces only.
   const AssemblerOptions options = attach_assembler(model, scene, false, dyn.threads);
+  if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
   summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name, summary.variant,
                                         model.influence->name));

@@ -81,6 +81,7 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
     if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u);
+    model.dofs.apply_ties(u.data(), 1.0);  // a fictitious layer follows the body's update
     run.after_step();
     run.forces(0.0, f, g);
     ratio = norm_over(f, model.dofs.free_dofs()) / reference;

@@ -122,10 +122,11 @@ std::string RunSummary::text() const {
     s += fmt::format("smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
                      has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");
   for (const auto& r : j_integrals) s += j_integral_line(r).substr(2) + "\n";
-  s += "probes:\n";
+  if (!probes.empty()) s += "probes:\n";
   for (const auto& p : probes)
     s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)
                          : fmt::format("  {}: value {:.12g}\n", p.name, p.value);
+  s.pop_back();  // one log call per line: the log adds the last newline (no empty line after it)
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include "post/peridynamic_stress.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
+#include "input/yaml_keys.hpp"
 #include "run/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
@@ -53,6 +54,7 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
   };
   for (const BoundaryCondition& bc : scene.boundary) {
     if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // a load through the layer's ties
     if (free_force(*make_external_loads(scene, model.particles, std::span(&bc, 1))) > 0.0) continue;
     const std::string w = bc.where + ": the " + (bc.kind == BoundaryCondition::Kind::Traction ? "traction" : "body force") +
                           " acts only on components whose displacement is prescribed: the constraints take it and it "
@@ -62,6 +64,7 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
   }
   bool loaded = false;
   for (double v : dofs.prescribed()) loaded = loaded || v != 0.0;
+  for (const TiedDof& t : dofs.ties()) loaded = loaded || t.offset != 0.0;
   for (const auto& e : model.effects) loaded = loaded || free_force(*e) > 0.0;
   if (!loaded) log("  no load on a free component and no prescribed displacement: the solution is zero");
   return loaded;
@@ -141,6 +144,9 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
     };
     if (scene.damage) settings.max_resolves = scene.damage->max_resolves;
     if (run.plan.backend == Backend::petsc) {
+      if (dofs.tied_count() > 0)
+        throw SceneError(scene.file + ": solver.backend: the PETSc backend does not take fictitious layers "
+                         "(multipoint constraints); use the serial backend");
       const FamilyAssembler* pc = model.approximation ? model.approximation.get() : model.assembler.get();
       summary.newton = solve_distributed({model.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log);
     } else {

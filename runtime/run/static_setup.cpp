@@ -33,6 +33,7 @@ StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
   const AssemblerOptions options = attach_assembler(model, scene, !run.plan.matrix_free());
   attach_effects(model, scene);
   if (model.collocation) summary.effects.push_back(model.collocation_description);
+  if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
   const StrainModeReport modes = check_strain_modes(*model.assembler, influence->name, scene.delta() / scene.h);
   summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name, summary.variant,

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "solve/linear_solver.hpp"
+#include "solve/progress.hpp"
 
 namespace pd {
 
@@ -22,7 +23,10 @@ class CholmodSolver final : public SparseSolver {
   }
   bool factor(const SparseMatrix& A) override {
     if (!analysed_) analyse(A);
-    llt_.factorize(A);
+    {
+      const ProgressPhase phase("CHOLMOD factorisation of " + std::to_string(A.rows()) + " unknowns");
+      llt_.factorize(A);
+    }
     if (llt_.info() == Eigen::Success) return true;
     failure_ = "CHOLMOD: the matrix is not positive definite (a rigid-body mode left unconstrained, a "
                "non-symmetric law, or a law that lost stability?)";
@@ -48,7 +52,10 @@ class UmfpackSolver final : public SparseSolver {
   }
   bool factor(const SparseMatrix& A) override {
     if (!analysed_) analyse(A);
-    lu_.factorize(A);
+    {
+      const ProgressPhase phase("UMFPACK factorisation of " + std::to_string(A.rows()) + " unknowns");
+      lu_.factorize(A);
+    }
     if (lu_.info() == Eigen::Success) return true;
     // Eigen reports every failure alike; UMFPACK's status says which it was (an
     // out-of-memory once passed for a singular matrix in the run log).

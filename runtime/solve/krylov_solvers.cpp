@@ -2,6 +2,7 @@
 #include <Eigen/IterativeLinearSolvers>
 
 #include "solve/linear_solver.hpp"
+#include "solve/progress.hpp"
 
 namespace pd {
 
@@ -20,13 +21,18 @@ class KrylovSolver final : public SparseSolver {
   // UBSan reports, and a random success/failure otherwise).
   void analyse(const SparseMatrix&) override {}
   bool factor(const SparseMatrix& A) override {
+    const ProgressPhase phase(name_ + " preconditioner of " + std::to_string(A.rows()) + " unknowns");
     solver_.compute(A);  // the preconditioner; Eigen keeps a reference to A for the products
     if (solver_.info() == Eigen::Success) return true;
     failure_ = name_ + ": the preconditioner broke down";
     return false;
   }
   LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    x = solver_.solve(b);
+    {
+      // Eigen's loop reports no iterations until it returns: the phase shows the time.
+      const ProgressPhase phase(name_ + " solve of " + std::to_string(b.size()) + " unknowns");
+      x = solver_.solve(b);
+    }
     LinearSolveStats s{name_, static_cast<int>(solver_.iterations()), solver_.error(), solver_.info() == Eigen::Success};
     return s;
   }

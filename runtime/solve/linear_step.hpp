@@ -43,7 +43,8 @@ std::unique_ptr<LinearStep> make_assembled_step(const NewtonSettings& settings, 
 // Matrix-free Newton-Krylov (solve/matrix_free_step.cpp): CG or GMRES on the system's
 // jvp, preconditioned by Jacobi or by the factorised approximate tangent. Throws
 // std::invalid_argument when the system lacks what the preconditioner needs.
+// `symmetric`: the reduced tangent is (the system's, and no tied dofs).
 std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings, const NonlinearSystem& system,
-                                                  StepLog log);
+                                                  bool symmetric, StepLog log);
 
 }  // namespace pd

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "interrupt.hpp"
+#include "solve/progress.hpp"
 
 namespace pd {
 
@@ -40,8 +41,11 @@ KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M,
   M(r, z);
   Eigen::VectorXd p = z;
   double rz = r.dot(z);
+  const ProgressPhase phase("matrix-free CG of " + std::to_string(b.size()) + " unknowns");
   for (res.iterations = 0; res.iterations < max_it; ++res.iterations) {
-    if (r.norm() <= tol * bnorm) break;
+    const double rnorm = r.norm();
+    progress_iteration(res.iterations, rnorm / bnorm);
+    if (rnorm <= tol * bnorm) break;
     throw_if_interrupted("during a matrix-free CG solve");
     A(p, Ap);
     const double pAp = p.dot(Ap);
@@ -78,6 +82,7 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator&
   const int m = std::max(1, restart);
   Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
   Eigen::VectorXd cs(m), sn(m), g(m + 1), w(n), Ax(n), z(n);
+  const ProgressPhase phase("matrix-free GMRES of " + std::to_string(n) + " unknowns");
   while (res.iterations < max_it) {
     A(x, Ax);
     Eigen::VectorXd r = b - Ax;
@@ -110,6 +115,7 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator&
       H(j + 1, j) = 0;
       g[j + 1] = -sn[j] * g[j];
       g[j] = cs[j] * g[j];
+      progress_iteration(res.iterations + 1, std::abs(g[j + 1]) / bnorm);
       if (std::abs(g[j + 1]) <= tol * bnorm || den == 0) {
         ++j, ++res.iterations;
         break;

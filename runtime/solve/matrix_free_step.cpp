@@ -33,12 +33,12 @@ StepLog preconditioner_log(const StepLog& log) {
 
 class MatrixFreeStep final : public LinearStep {
  public:
-  MatrixFreeStep(const NewtonSettings& s, const NonlinearSystem& system, StepLog log)
+  MatrixFreeStep(const NewtonSettings& s, const NonlinearSystem& system, bool symmetric, StepLog log)
       : s_(s),
         log_(std::move(log)),
         approximate_(s.matrix_free_preconditioner == MatrixFreePreconditioner::approximate_tangent),
-        P_solver_(direct_whatever_the_size(), system.symmetric(), preconditioner_log(log_)),
-        use_cg_(system.symmetric()),
+        P_solver_(direct_whatever_the_size(), symmetric, preconditioner_log(log_)),
+        use_cg_(symmetric),
         v_full_(system.size()),
         Kv_full_(system.size()),
         diag_(system.size()) {
@@ -145,8 +145,9 @@ class MatrixFreeStep final : public LinearStep {
 }  // namespace
 
 std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings, const NonlinearSystem& system,
+                                                  bool symmetric,
                                                   StepLog log) {
-  return std::make_unique<MatrixFreeStep>(settings, system, std::move(log));
+  return std::make_unique<MatrixFreeStep>(settings, system, symmetric, std::move(log));
 }
 
 }  // namespace pd

@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "interrupt.hpp"
 #include "solve/linear_step.hpp"
+#include "solve/progress.hpp"
 #include "solve/stopwatch.hpp"
 
 namespace pd {
@@ -45,14 +47,19 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   auto say = [&](const std::string& line) {
     if (log_) log_(line);
   };
+  // Factorisations and Krylov solves longer than a few seconds log their progress (solve/progress.hpp).
+  std::optional<ProgressSink> progress;
+  if (log_) progress.emplace(log_);
   const int n = sys.size();
   if (dofs.size() != n || u.size() != n) throw std::invalid_argument("Newton: the system, dof map and u differ in size");
   if (dofs.free_count() == 0) throw std::invalid_argument("Newton: every degree of freedom is constrained");
   if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
 
   res.unknowns = dofs.free_count();
-  const std::unique_ptr<LinearStep> linear_step =
-      s_.matrix_free ? make_matrix_free_step(s_, sys, log_) : make_assembled_step(s_, sys.symmetric(), log_);
+  // Tied dofs (multipoint constraints) make the reduced tangent S K P unsymmetric.
+  const bool symmetric = sys.symmetric() && dofs.keeps_symmetry();
+  const std::unique_ptr<LinearStep> linear_step = s_.matrix_free ? make_matrix_free_step(s_, sys, symmetric, log_)
+                                                                 : make_assembled_step(s_, symmetric, log_);
   Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
   double reference = 0;
   // Each iteration's line carries the time since the solve began: a long solve shows

@@ -23,6 +23,15 @@ void DofMap::apply_motion(double t, std::vector<double>& u, std::vector<double>&
     u[static_cast<std::size_t>(constrained_[i])] = x;
     if (!v.empty()) v[static_cast<std::size_t>(constrained_[i])] = rate;
   }
+  // A fictitious layer follows the body (and the constrained values just set): its
+  // offsets are applied in full (the reader refuses a time function on a layer).
+  apply_ties(u.data(), 1.0);
+  for (const TiedDof& tie : ties_) {
+    if (v.empty()) break;
+    double rate = 0;
+    for (std::size_t k = 0; k < tie.masters.size(); ++k) rate += tie.coefficients[k] * v[static_cast<std::size_t>(tie.masters[k])];
+    v[static_cast<std::size_t>(tie.dof)] = rate;
+  }
 }
 
 }  // namespace pd

@@ -2,6 +2,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "petsc/distributed_dynamics.hpp"
+#include "run/dynamic_run.hpp"
 #include "solve/distributed_backend.hpp"
 
 namespace pd {
@@ -24,5 +26,7 @@ NewtonResult solve_distributed(const DistributedProblem&, Eigen::VectorXd&,
                                const std::function<void(const std::string&)>&) {
   refuse();
 }
+
+RunSummary run_distributed_dynamics(DynamicRun&, bool, int) { refuse(); }
 
 }  // namespace pd

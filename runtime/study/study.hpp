@@ -31,8 +31,17 @@ struct PaperValues {
   std::optional<double> order, min_error, error;
 };
 
+// A dynamic problem's reference: its first probe's displacement against the columns
+// `time` and `value` of a CSV file (study/time_history.hpp), path relative to the study file.
+struct TimeReference {
+  std::string file, time = "t", value;
+};
+
 struct StudySpec {
   std::string file;
+  // Dynamic problems (scenes with a dynamics section, explicit): the point's error is the
+  // RMS of its first probe against this series, peak_error the largest difference.
+  std::optional<TimeReference> time_reference;
   std::vector<std::string> problems;  // scene files (paths relative to the study file resolved)
   std::vector<Sweep> sweeps;          // top-level laws/influences/ratios/counts, or `sweeps:`
   // The reduced sweep of --quick: each non-empty list replaces that list in every sweep.
@@ -65,7 +74,9 @@ struct StudyPoint {
   std::string placement;  // the override of StudySpec::placement (empty: the scene's own)
   bool converged = false;
   std::string failure;
-  double error = 0;  // the first probe's error, or the field error (eq. 48) when the scene has a reference
+  double error = 0;  // the first probe's error, or the field error (eq. 48) when the scene has a reference;
+                     // dynamic: the RMS time-history error against StudySpec::time_reference
+  double peak_error = NAN;  // dynamic: the peak time-history error (NaN for static points)
   int particles = 0;
   long long nonzeros = 0;  // of the reduced tangent; matrix-free: of the short-horizon preconditioner
   double setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;

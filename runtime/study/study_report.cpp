@@ -102,7 +102,7 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
   const auto best = frontier(points);
   std::ostringstream csv;
   csv << "problem,law,influence,ratio,count,h,converged,error,particles,nonzeros,setup_s,assembly_s,solve_s,total_s,"
-         "newton_iterations,krylov_iterations,solver,peak_rss_mb,non_dominated,failure";
+         "newton_iterations,krylov_iterations,solver,peak_rss_mb,non_dominated,failure,peak_error";
   for (const auto& name : all_smoothings) csv << ",error_smoothed_" << name;  // empty where not recorded
   csv << "\n";
   for (const auto& p : points) {
@@ -110,6 +110,7 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
                        p.problem, p.law, p.influence, p.ratio, p.count, p.h, p.converged ? 1 : 0, p.error, p.particles,
                        p.nonzeros, p.setup_seconds, p.assembly_seconds, p.solve_seconds, p.total_seconds,
                        p.newton_iterations, p.krylov_iterations, p.solver, p.peak_rss_mb, best.count(&p) ? 1 : 0, p.failure);
+    csv << (std::isfinite(p.peak_error) ? fmt::format(",{:.9g}", p.peak_error) : std::string(","));  // dynamic points
     for (const auto& name : all_smoothings) {
       const double v = p.error_of(name);
       csv << (std::isfinite(v) ? fmt::format(",{:.9g}", v) : std::string(","));

@@ -14,10 +14,12 @@
 #include "kernel_abi.hpp"
 #include "output/atomic_file.hpp"
 #include "post/smoothing.hpp"
+#include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 #include "study/installed_data.hpp"
 #include "study/peak_memory.hpp"
 #include "study/study.hpp"
+#include "study/time_history.hpp"
 
 namespace pd {
 
@@ -41,7 +43,8 @@ nlohmann::json to_json(const StudyPoint& p) {
           {"particles", p.particles}, {"nonzeros", p.nonzeros}, {"setup_seconds", p.setup_seconds},
           {"assembly_seconds", p.assembly_seconds}, {"solve_seconds", p.solve_seconds}, {"total_seconds", p.total_seconds},
           {"newton_iterations", p.newton_iterations}, {"krylov_iterations", p.krylov_iterations}, {"solver", p.solver},
-          {"peak_rss_mb", p.peak_rss_mb}, {"smoothed_error", p.smoothed_error}};
+          {"peak_rss_mb", p.peak_rss_mb}, {"smoothed_error", p.smoothed_error},
+          {"peak_error", std::isfinite(p.peak_error) ? p.peak_error : -1.0}};
 }
 StudyPoint from_json(const nlohmann::json& j) {
   StudyPoint p;
@@ -56,8 +59,35 @@ StudyPoint from_json(const nlohmann::json& j) {
   p.krylov_iterations = j.value("krylov_iterations", 0);
   p.solver = j.value("solver", std::string());
   p.peak_rss_mb = j.value("peak_rss_mb", -1.0);
+  p.peak_error = j.value("peak_error", -1.0) < 0 ? NAN : j["peak_error"].get<double>();
   if (j.contains("smoothed_error")) p.smoothed_error = j["smoothed_error"].get<std::map<std::string, double>>();
   return p;
+}
+
+// A dynamic point (paper 003 section 5.1): the run's first probe against the study's
+// time_reference, RMS and peak relative to the reference's largest magnitude.
+void dynamic_point(const Scene& s, const StudySpec& spec, StudyPoint& pt) {
+  if (!spec.time_reference)
+    throw std::runtime_error("a dynamic problem needs the study's time_reference: {file, time, value} to be measured against");
+  if (s.dynamics->method != DynamicsMethod::explicit_verlet)
+    throw std::runtime_error("a relaxation problem has no time history; study it as a static scene");
+  if (s.probes.empty()) throw std::runtime_error("a dynamic problem needs a probe: its first probe is measured");
+  const TimeSeries ref = read_time_series(spec.time_reference->file, spec.time_reference->time, spec.time_reference->value);
+  DynamicSimulation sim(s, [](const std::string&) {});
+  const RunSummary r = sim.run(false);
+  std::vector<double> t, v;
+  for (const SeriesRow& row : sim.series()) {
+    t.push_back(row.time);
+    v.push_back(row.probes.at(0));
+  }
+  const TimeHistoryError e = time_history_error(t, v, ref);
+  pt.converged = true;
+  pt.error = e.rms;
+  pt.peak_error = e.peak;
+  pt.particles = r.particles;
+  pt.setup_seconds = r.setup_seconds;
+  pt.solve_seconds = r.solve_seconds;
+  pt.solver = "explicit";
 }
 
 StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint& id) {
@@ -80,6 +110,12 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   const bool measured = reset_peak_memory();
   const auto t0 = std::chrono::steady_clock::now();
   try {
+    if (s.dynamics) {
+      dynamic_point(s, spec, pt);
+      pt.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (measured) pt.peak_rss_mb = peak_memory_mb();
+      return pt;
+    }
     Simulation sim(s, [](const std::string&) {});
     const RunSummary r = sim.run(false);
     pt.converged = true;

@@ -98,6 +98,17 @@ StudySpec read_study(const std::string& path) {
   }
   s.matrix_free_from_bonds = m.number("matrix_free_from_bonds", 0.0);
   if (s.matrix_free_from_bonds < 0) m.get("matrix_free_from_bonds").fail("must not be negative");
+  if (m.has("time_reference")) {
+    const YamlAt at = m.get("time_reference");
+    MapReader r(at);
+    TimeReference ref;
+    const std::filesystem::path f = r.text("file");
+    ref.file = f.is_absolute() ? f.string() : (std::filesystem::path(path).parent_path() / f).string();
+    if (r.has("time")) ref.time = r.text("time");
+    ref.value = r.text("value");
+    r.finish();
+    s.time_reference = ref;
+  }
   s.fine_points = m.integer("fine_points", 0);
   if (s.fine_points != 0 && s.fine_points < 2) m.get("fine_points").fail("0, or at least 2 points to fit");
   if (m.has("paper")) {

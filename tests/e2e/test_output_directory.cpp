@@ -17,6 +17,8 @@
 #include <sstream>
 #include <thread>
 
+#include <regex>
+
 #include "output/output_directory.hpp"
 #include "temp_files.hpp"
 
@@ -100,7 +102,8 @@ TEST(OutputDirectory, AWritableDirectoryRunsAndKeepsNoLockOrProbe) {
   ASSERT_EQ(o.status, 0) << o.err;
   for (const auto& e : fs::directory_iterator(out)) {
     const std::string name = e.path().filename().string();
-    EXPECT_TRUE(name == "result.vtu" || name == "result.csv" || name == "summary.json") << "left " << name;
+    // .pd.files: the list of the run's files, read by the next run into the directory (output/staging.hpp)
+    EXPECT_TRUE(name == "result.vtu" || name == "result.csv" || name == "summary.json" || name == ".pd.files") << "left " << name;
   }
   fs::remove_all(dir);
 }
@@ -173,5 +176,83 @@ TEST(OutputDirectory, TheClaimIsExclusiveWithinAProcessToo) {
   }
   EXPECT_NO_THROW(pd::OutputDirectoryClaim again(dir.string()));
   EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+namespace {
+// A dynamic bar with a snapshot every 10 steps; steps = 10^7 runs far longer than a test waits.
+std::string dynamic_scene(long steps) {
+  return "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 0.1]}, spacing: 0.025}\nhorizon: {ratio: 3.0}\n"
+         "law: silling_plane_strain\ninfluence: const\nmaterials: [{name: bar, E: 1.0, nu: 0.0, density: 1.0}]\n"
+         "boundary:\n  - {region: {all: true}, fixed: [y]}\n"
+         "dynamics:\n  method: explicit\n  steps: " + std::to_string(steps) + "\n  output_every: 10\n  snapshot_every: 10\n"
+         "  checkpoint_every: 10\n  threads: 1\n"
+         "  initial:\n    - {region: {all: true}, displacement: [1.0e-3, 0], gaussian: {axis: x, center: 0.5, width: 0.1}}\n";
+}
+std::string run_id_in(const fs::path& file) {
+  std::smatch m;
+  const std::string text = read_text(file).substr(0, 4096);
+  return std::regex_search(text, m, std::regex(R"(run_id"?\s*[=:]\s*"([^"]+)\")")) ? m[1].str() : "";
+}
+// Every VTK file under `out` (not in a staging directory) and summary.json carry `id`.
+void expect_one_run(const fs::path& out, const std::string& id) {
+  EXPECT_EQ(run_id_in(out / "summary.json"), id);
+  int vtk_files = 0;
+  for (auto it = fs::recursive_directory_iterator(out); it != fs::recursive_directory_iterator(); ++it) {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory() && name.rfind("unfinished-", 0) == 0) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    const std::string ext = it->path().extension().string();
+    if (ext == ".vtu" || ext == ".pvd") {
+      ++vtk_files;
+      EXPECT_EQ(run_id_in(it->path()), id) << it->path() << " belongs to another run";
+    }
+  }
+  EXPECT_GE(vtk_files, 3);
+}
+}  // namespace
+
+// A dynamic run killed with -9 into a directory holding an older result leaves that result
+// whole (before: its snapshots and pvd were overwritten by the killed run's, under the old
+// summary.json); the next run names the killed run's staging directory and replaces the old
+// result entirely, stale snapshots included.
+TEST(OutputDirectory, ARunKilledWithSignalNineLeavesTheOlderResultWhole) {
+  const fs::path dir = fresh_directory("pd_outdir_kill9"), out = dir / "out";
+  for (const char* d : {"a", "b", "c"}) fs::create_directories(dir / d);
+  const Outcome a = run_pd(dynamic_scene(40), out, dir / "a");
+  ASSERT_EQ(a.status, 0) << a.err;
+  const std::string id_a = run_id_in(out / "summary.json");
+  ASSERT_FALSE(id_a.empty());
+  expect_one_run(out, id_a);
+
+  std::ofstream(dir / "long.yaml") << dynamic_scene(10000000);
+  const pid_t b = start_pd(dir / "long.yaml", out, dir / "b", {});
+  // Wait until the second run has written snapshots of its own (wherever it writes them).
+  bool wrote = false;
+  for (int i = 0; i < 3000 && !wrote; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::error_code ec;
+    for (const auto& e : fs::recursive_directory_iterator(out, ec))
+      if (e.path().extension() == ".vtu" && e.path().filename().string() >= "step_00000040.vtu") {
+        const std::string id = run_id_in(e.path());
+        wrote = wrote || (!id.empty() && id != id_a);
+      }
+  }
+  kill(b, SIGKILL);
+  int status = 0;
+  waitpid(b, &status, 0);
+  ASSERT_TRUE(wrote) << "the second run wrote no snapshot";
+  expect_one_run(out, id_a);
+
+  const Outcome c = run_pd(dynamic_scene(20), out, dir / "c");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.out.find("  warning: " + out.string() + "/unfinished-"), std::string::npos) << c.out;
+  const std::string id_c = run_id_in(out / "summary.json");
+  EXPECT_NE(id_c, id_a);
+  expect_one_run(out, id_c);
+  EXPECT_FALSE(fs::exists(out / "snapshots/step_00000040.vtu")) << "a snapshot of the older run was left";
+  EXPECT_TRUE(fs::exists(out / "snapshots/step_00000020.vtu"));
   fs::remove_all(dir);
 }

@@ -6,7 +6,7 @@ checks with VTK that each .vtu opens, has the expected point count, the array na
 component counts, and the same values (bit for bit: the writer stores raw Float64) as
 result.csv; that every .pvd entry names a readable snapshot at increasing times; and
 that the last snapshot of the dynamic run equals its result; and that summary.json, the
-.pvd and every .vtu of a run carry one run_id.
+.pvd and every .vtu of a run carry one run_id, and .pd.files lists the run's files.
 
 usage: check_outputs.py PD_EXE WORK_DIR
 """
@@ -109,8 +109,15 @@ def check_one_run(directory, files):
     check(bool(rid), f"{directory}/summary.json has no run_id")
     for p in files:
         check(run_id_of(p) == rid, f"{p}: run_id {run_id_of(p)} is not summary.json's {rid}")
-    leftovers = [n for n in os.listdir(directory) if n.endswith(".tmp") or n.startswith(".pd.")]
-    check(not leftovers, f"{directory}: temporaries or lock left: {leftovers}")
+    leftovers = [n for n in os.listdir(directory)
+                 if n.endswith(".tmp") or (n.startswith(".pd.") and n != ".pd.files") or n.startswith("unfinished-")]
+    check(not leftovers, f"{directory}: temporaries, lock or staging directory left: {leftovers}")
+    # .pd.files lists what the run published (output/staging.hpp): every file of the run, and only those.
+    with open(os.path.join(directory, ".pd.files")) as f:
+        listed = set(f.read().split())
+    present = {os.path.relpath(os.path.join(root, n), directory) for root, _, names in os.walk(directory) for n in names}
+    check(listed == present - {".pd.files", "scene.yaml"}, f"{directory}/.pd.files lists {sorted(listed)}, the run wrote "
+          f"{sorted(present - {'.pd.files', 'scene.yaml'})}")
 
 
 def read_csv(path):

@@ -14,6 +14,7 @@
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
+#include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
 namespace {
 struct Plate {
@@ -31,7 +32,7 @@ struct Plate {
     const auto* influence = pd::abi::find_influence("const");
     b = pd::find_quadrature_bonds(p, ratio, 1.0, q, influence->weight);
     params = {pd::law_parameters(*law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain,
-                                 {{"stab", 1.0}, {"hourglass", 1.0}})};
+                                 pd::verify::declared_test_values(*law))};
     in = {law, &params, ratio, 1.0, q, influence->weight};
   }
   int at(double x, double y) const {

@@ -212,7 +212,9 @@ TEST(ObqWeights, FamiliesAtAFaceOfTheBodyIntegrateOverTheCutBall) {
     for (double v : w) sum += v;
     total_weight_gap = std::max(total_weight_gap, std::abs(sum - pd::ball_box_moment_2d({}, c.delta, x, body)));
     const double depth = std::min({x[0], 1 - x[0], x[1], 1 - x[1]});
-    if (depth < 0.5 * c.delta) EXPECT_LT(sum, 0.9 * M_PI * c.delta * c.delta) << "particle " << p;
+    if (depth < 0.5 * c.delta) {
+      EXPECT_LT(sum, 0.9 * M_PI * c.delta * c.delta) << "particle " << p;
+    }
   }
   EXPECT_GT(cut, 50);
   EXPECT_LT(worst, 1e-12);

@@ -20,6 +20,7 @@
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
 #include "post/peridynamic_stress.hpp"
+#include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
 namespace {
 
@@ -41,7 +42,7 @@ struct HomogeneousBody {
     s.materials.resize(1);
     particles = pd::discretize(s);
     bonds = pd::find_quadrature_bonds(particles, ratio, 1.0, q, pd::abi::find_influence("const")->weight);
-    const auto params = pd::law_parameters(l, material, pd::PlaneAssumption::Strain, {{"stab", 1.0}, {"hourglass", 1.0}});
+    const auto params = pd::law_parameters(l, material, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(l));
     pd::AssemblerOptions o;
     o.matrix = false;
     assembler = std::make_unique<pd::FamilyAssembler>(particles, bonds, l, std::vector<std::vector<double>>{params}, o);

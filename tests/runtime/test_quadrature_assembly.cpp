@@ -10,6 +10,7 @@
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
+#include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
 namespace {
 struct Case {
@@ -50,7 +51,7 @@ TEST_P(QuadratureAssembly, StiffnessIsMinusDerivativeOfForcesAndProductEqualsMat
   ASSERT_GT(fractional, 0);
   ASSERT_EQ(b.volume_factor.size(), b.neighbor.size());
   const auto params = pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain,
-                                         {{"stab", 1.0}, {"hourglass", 1.0}});
+                                         pd::verify::declared_test_values(law));
   const pd::FamilyAssembler a(p, b, law, {params}, {});
   const int dofs = static_cast<int>(p.x.size());
   std::vector<double> u(dofs), v(dofs);

@@ -1,0 +1,409 @@
+// Gauss-point families: gather, forces P^T f, tangent P^T M P, product P^T jvp(P v).
+#include "assembly/gauss_point_assembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "assembly/scatter.hpp"
+#include "local_matrix.hpp"
+#include "post/peridynamic_stress.hpp"
+
+namespace pd {
+
+namespace {
+bool finite(const double* v, std::size_t n) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < n; ++i) s += v[i] * 0.0;
+  return s == 0.0;
+}
+
+// The node sets of the families: the nodes in the MLS support of any of p's points,
+// without p, ascending.
+Bonds node_reach(const Particles& P, const GaussPoints& gp) {
+  Bonds r;
+  r.dim = P.dim;
+  r.offsets.assign(1, 0);
+  std::vector<char> seen(static_cast<std::size_t>(P.size()), 0);
+  std::vector<int> list;
+  for (int p = 0; p < P.size(); ++p) {
+    list.clear();
+    for (int b = gp.offsets[p]; b < gp.offsets[p + 1]; ++b) {
+      const int g = gp.point[b];
+      for (int e = gp.phi_start[g]; e < gp.phi_start[g + 1]; ++e) {
+        const int a = gp.phi_node[e];
+        if (a != p && !seen[a]) seen[a] = 1, list.push_back(a);
+      }
+    }
+    std::sort(list.begin(), list.end());
+    for (int a : list) seen[a] = 0;
+    r.neighbor.insert(r.neighbor.end(), list.begin(), list.end());
+    r.offsets.push_back(static_cast<int>(r.neighbor.size()));
+  }
+  return r;
+}
+// out[a] += scale * sum_g phi_a(x_g) per_point[g]: P^T applied to values per point.
+void add_mapped(const GaussPoints& gp, const double* per_point, double scale, double* out) {
+  const int d = gp.dim;
+  for (int g = 0; g < gp.points(); ++g) {
+    const double* v = per_point + static_cast<std::ptrdiff_t>(g) * d;
+    for (int e = gp.phi_start[g]; e < gp.phi_start[g + 1]; ++e) {
+      double* o = out + static_cast<std::ptrdiff_t>(gp.phi_node[e]) * d;
+      const double w = scale * gp.phi[e];
+      for (int c = 0; c < d; ++c) o[c] += w * v[c];
+    }
+  }
+}
+}  // namespace
+
+// One family's kernel inputs and, on request, its map P to the local nodes.
+class GaussPointAssembler::Gather {
+ public:
+  explicit Gather(const GaussPointAssembler& a) : a_(a) {
+    const int d = a.particles_->dim;
+    int L = 0;
+    for (int p = 0; p < a.particles_->size(); ++p) L = std::max(L, a.gp_->family_size(p));
+    const auto Ld = static_cast<std::size_t>(L) * d;
+    xi_.resize(Ld), Y_.resize(Ld), w_.resize(L), alpha_.assign(L, 1.0), V_.resize(L);
+    scratch_.resize(static_cast<std::size_t>(L) * a.law_.scratch_per_bond);
+    local_.resize(Ld + d), local2_.resize(Ld + d);
+    factors_ = tangent_.view(d, a.law_.n_states, L);
+    mark_.assign(static_cast<std::size_t>(a.particles_->size()), -1);
+  }
+
+  // Family of p; u (nodal) and ug (points, gauss_point_displacements) both null or both set.
+  abi::Family family(int p, const double* u, const double* ug) {
+    const GaussPoints& gp = *a_.gp_;
+    const Particles& P = *a_.particles_;
+    const int d = P.dim, b0 = gp.offsets[p], L = gp.family_size(p);
+    const double* xp = P.position(p);
+    const double delta = gp.delta[p];
+    for (int k = 0; k < L; ++k) {
+      const int g = gp.point[b0 + k];
+      double r2 = 0.0;
+      for (int c = 0; c < d; ++c) {
+        const double x = gp.x[static_cast<std::size_t>(g) * d + c] - xp[c];
+        xi_[k * d + c] = x;
+        r2 += x * x;
+        // Y = xi + (u_g - u_p): the small difference first, as FamilyGather does.
+        Y_[k * d + c] = u ? x + (ug[static_cast<std::size_t>(g) * d + c] - u[static_cast<std::size_t>(p) * d + c]) : x;
+      }
+      w_[k] = gp.influence(std::sqrt(r2), delta);
+      V_[k] = gp.beta[b0 + k] * gp.volume[g];
+    }
+    abi::Family f;
+    f.n_bonds = L;
+    f.xi = xi_.data();
+    f.Y = Y_.data();
+    f.w = w_.data();
+    f.alpha = alpha_.data();
+    f.V = V_.data();
+    f.V0 = P.volume[p];
+    f.delta = delta;
+    f.params = a_.params_[static_cast<std::size_t>(P.material[p])].data();
+    f.moments = a_.law_.n_moments > 0 && !a_.moments_.empty()
+                    ? a_.moments_.data() + static_cast<std::ptrdiff_t>(p) * a_.law_.n_moments
+                    : nullptr;
+    f.scratch = scratch_.data();
+    return f;
+  }
+
+  // The local nodes of p (p, then reach_bonds ascending) and, per bond k, the entries
+  // (local node, phi) of row k+1 of P: entry_start_[k] .. entry_start_[k+1].
+  void map(int p) {
+    const GaussPoints& gp = *a_.gp_;
+    const Bonds& R = a_.reach_bonds();
+    nodes_.assign(1, p);
+    nodes_.insert(nodes_.end(), R.neighbor.begin() + R.offsets[p], R.neighbor.begin() + R.offsets[p + 1]);
+    for (int a = 0; a < static_cast<int>(nodes_.size()); ++a) mark_[nodes_[a]] = a;
+    entry_start_.assign(1, 0);
+    entry_node_.clear(), entry_phi_.clear();
+    for (int b = gp.offsets[p]; b < gp.offsets[p + 1]; ++b) {
+      const int g = gp.point[b];
+      for (int e = gp.phi_start[g]; e < gp.phi_start[g + 1]; ++e)
+        entry_node_.push_back(mark_[gp.phi_node[e]]), entry_phi_.push_back(gp.phi[e]);
+      entry_start_.push_back(static_cast<int>(entry_node_.size()));
+    }
+    for (int a : nodes_) mark_[a] = -1;
+  }
+
+  // The nodal tangent d f_nodes / d u of the mapped family (map(p) first), from the
+  // factored tangent without forming the (L+1)d local matrix M. With Y_i = B_i u_loc
+  // (B_i = P[i+1] - P[0]: the point's MLS row minus the center), c_i = V0 V_i and
+  // T_ik = delta_ik D_i + sum_s l_i[s] (x) r_k[s] (kernel_abi.hpp), f_nodes = P^T f_loc =
+  // -sum_i c_i B_i^T t_i, so
+  //   d f_nodes / d u = -sum_i c_i B_i^T D_i B_i - sum_s a_s (x) b_s,
+  //   a_s = sum_i c_i B_i^T l_i[s],  b_s = sum_k B_k^T r_k[s]:
+  // the same matrix as P^T M P, in O(L n_phi^2 d^2 + n_loc^2 d^2 S) instead of O(L^2 d^2 n_phi).
+  void nodal_matrix(int d, int S, const abi::Family& fam, const abi::TangentFactors& fac) {
+    const int L = fam.n_bonds, nl = static_cast<int>(nodes_.size()), nd = nl * d, dd = d * d;
+    KN_.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+    ab_.assign(static_cast<std::size_t>(2) * S * nd, 0.0);
+    for (int i = 0; i < L; ++i) {
+      const double c = fam.V0 * fam.V[i];
+      // B_i's entries: the point's (node, phi) and the center's (0, -1).
+      row_node_.assign(entry_node_.begin() + entry_start_[i], entry_node_.begin() + entry_start_[i + 1]);
+      row_phi_.assign(entry_phi_.begin() + entry_start_[i], entry_phi_.begin() + entry_start_[i + 1]);
+      row_node_.push_back(0), row_phi_.push_back(-1.0);
+      const double* D = fac.direct + static_cast<std::ptrdiff_t>(i) * dd;
+      const int n = static_cast<int>(row_node_.size());
+      for (int x = 0; x < n; ++x) {
+        const double cx = c * row_phi_[x];
+        for (int y = 0; y < n; ++y) {
+          const double w = cx * row_phi_[y];
+          for (int r = 0; r < d; ++r) {
+            double* out = KN_.data() + static_cast<std::ptrdiff_t>(row_node_[x] * d + r) * nd + row_node_[y] * d;
+            for (int q = 0; q < d; ++q) out[q] -= w * D[r * d + q];
+          }
+        }
+        for (int st = 0; st < S; ++st) {
+          double* a = ab_.data() + static_cast<std::ptrdiff_t>(st) * nd + row_node_[x] * d;
+          double* b = ab_.data() + static_cast<std::ptrdiff_t>(S + st) * nd + row_node_[x] * d;
+          const double* l = fac.left + static_cast<std::ptrdiff_t>(i * S + st) * d;
+          const double* rr = fac.right + static_cast<std::ptrdiff_t>(i * S + st) * d;
+          for (int r = 0; r < d; ++r) a[r] += cx * l[r], b[r] += row_phi_[x] * rr[r];
+        }
+      }
+    }
+    for (int st = 0; st < S; ++st) {
+      const double* a = ab_.data() + static_cast<std::ptrdiff_t>(st) * nd;
+      const double* b = ab_.data() + static_cast<std::ptrdiff_t>(S + st) * nd;
+      for (int row = 0; row < nd; ++row) {
+        if (a[row] == 0.0) continue;
+        double* out = KN_.data() + static_cast<std::ptrdiff_t>(row) * nd;
+        for (int col = 0; col < nd; ++col) out[col] -= a[row] * b[col];
+      }
+    }
+  }
+
+  double* local() { return local_.data(); }
+  double* local2() { return local2_.data(); }
+  const abi::TangentFactors& factors() const { return factors_; }
+  const std::vector<int>& nodes() const { return nodes_; }
+  const double* nodal() const { return KN_.data(); }
+
+ private:
+  const GaussPointAssembler& a_;
+  std::vector<double> xi_, Y_, w_, alpha_, V_, scratch_, local_, local2_, KN_, ab_, row_phi_;
+  std::vector<int> row_node_;
+  TangentScratch tangent_;
+  abi::TangentFactors factors_;
+  std::vector<int> mark_, nodes_, entry_start_, entry_node_;
+  std::vector<double> entry_phi_;
+};
+
+}  // namespace pd
+
+namespace pd {
+
+GaussPointAssembler::GaussPointAssembler(const Particles& particles, const GaussPoints& gp, const abi::LawDescriptor& law,
+                                         const abi::KernelVariant& variant, std::vector<std::vector<double>> params,
+                                         bool matrix)
+    : particles_(&particles), gp_(&gp), law_(law), variant_(variant), params_(std::move(params)) {
+  if (gp.dim != particles.dim || gp.particle_count() != particles.size())
+    throw std::invalid_argument("Gauss-point assembler: the Gauss points were built for another body");
+  update_moments();
+  if (matrix) pattern_ = std::make_unique<SparsityPattern>(reach_bonds(), particles.dim, Coupling::family);
+}
+
+const Bonds& GaussPointAssembler::reach_bonds() const {
+  std::call_once(reach_once_, [&] { reach_ = node_reach(*particles_, *gp_); });
+  return reach_;
+}
+
+const SparsityPattern& GaussPointAssembler::pattern() const {
+  if (!pattern_) throw std::logic_error("Gauss-point assembler: built without a matrix pattern");
+  return *pattern_;
+}
+
+template <class Body>
+void GaussPointAssembler::for_each_family(const char* stage, Body&& body) const {
+  Gather g(*this);
+  for (int p = 0; p < particles_->size(); ++p)
+    if (const char* failed = body(g, p))
+      throw std::runtime_error(std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed + " of law " +
+                               law_.name + " at particle " + std::to_string(p) + " (Gauss-point quadrature)");
+}
+
+void GaussPointAssembler::update_moments() {
+  const int nm = law_.n_moments;
+  moments_.clear();
+  if (nm == 0) return;
+  if (variant_.moments == nullptr) throw std::invalid_argument(std::string("law ") + law_.name + " has no moments kernel");
+  std::vector<double> m(static_cast<std::size_t>(particles_->size()) * nm);
+  for_each_family("moments", [&](Gather& g, int p) -> const char* {
+    double* out = m.data() + static_cast<std::ptrdiff_t>(p) * nm;
+    variant_.moments(g.family(p, nullptr, nullptr), out);
+    return finite(out, static_cast<std::size_t>(nm)) ? nullptr : "moments kernel";
+  });
+  moments_ = std::move(m);
+}
+
+void GaussPointAssembler::assemble(const double* u, double* forces, SparseMatrix* K) const {
+  const int d = particles_->dim, S = law_.n_states;
+  const auto N = static_cast<std::size_t>(dofs());
+  if (forces) std::fill(forces, forces + N, 0.0);
+  if (!forces && !K) return;
+  double* values = nullptr;
+  if (K) {
+    if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pattern().nonzeros() || !K->isCompressed())
+      *K = pattern().matrix();
+    values = K->valuePtr();
+    std::fill(values, values + K->nonZeros(), 0.0);
+  }
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  std::vector<int> strides;
+  std::vector<double> point_forces(forces ? static_cast<std::size_t>(gp_->points()) * d : 0, 0.0);
+  for_each_family(K ? "stiffness assembly (Gauss points)" : "force assembly (Gauss points)",
+                  [&](Gather& g, int p) -> const char* {
+                    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+                    const int L = fam.n_bonds, m = (L + 1) * d;
+                    double* f_loc = forces ? g.local() : nullptr;
+                    if (K) {
+                      variant_.tangent(fam, f_loc, g.factors());
+                      if (!factors_finite(d, S, fam, g.factors())) return "tangent";
+                      g.map(p);
+                      g.nodal_matrix(d, S, fam, g.factors());
+                      const std::vector<int>& nodes = g.nodes();
+                      strides.resize(nodes.size());
+                      for (std::size_t a = 0; a < nodes.size(); ++a) strides[a] = pattern_->column_stride(nodes[a]);
+                      scatter_family(d, Coupling::family, g.nodal(), static_cast<int>(nodes.size()) - 1,
+                                     pattern_->family_slots(p).data(), strides.data(), values);
+                    } else {
+                      variant_.residual(fam, f_loc);
+                    }
+                    if (!f_loc) return nullptr;
+                    if (!finite(f_loc, static_cast<std::size_t>(m))) return "residual";
+                    // The center's row to p; each point's row summed per point, mapped below.
+                    for (int c = 0; c < d; ++c) forces[static_cast<std::ptrdiff_t>(p) * d + c] += f_loc[c];
+                    for (int k = 0; k < L; ++k) {
+                      double* f = point_forces.data() + static_cast<std::ptrdiff_t>(gp_->point[gp_->offsets[p] + k]) * d;
+                      for (int c = 0; c < d; ++c) f[c] += f_loc[(k + 1) * d + c];
+                    }
+                    return nullptr;
+                  });
+  // f_nodes = P^T f_loc, the points' rows once per point (a point is in ~30 families at
+  // delta = 3h: mapping each bond's row to the ~28 MLS nodes instead cost 4x the kernels).
+  if (forces) add_mapped(*gp_, point_forces.data(), 1.0, forces);
+}
+
+void GaussPointAssembler::stiffness_product(const double* u, const double* v, double* Kv) const {
+  const int d = particles_->dim;
+  std::fill(Kv, Kv + dofs(), 0.0);
+  const auto Gd = static_cast<std::size_t>(gp_->points()) * d;
+  std::vector<double> ug(Gd), vg(Gd);
+  if (u) gauss_point_displacements(*gp_, u, ug.data());
+  gauss_point_displacements(*gp_, v, vg.data());
+  std::vector<double> point_df(Gd, 0.0);
+  for_each_family("matrix-free product (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    const int L = fam.n_bonds;
+    // dy_loc = P v: the center's v_p, each point's MLS value.
+    double* dy = g.local2();
+    for (int c = 0; c < d; ++c) dy[c] = v[static_cast<std::ptrdiff_t>(p) * d + c];
+    for (int k = 0; k < L; ++k) {
+      const int pt = gp_->point[gp_->offsets[p] + k];
+      for (int c = 0; c < d; ++c) dy[(k + 1) * d + c] = vg[static_cast<std::size_t>(pt) * d + c];
+    }
+    double* df = g.local();
+    variant_.jvp(fam, dy, df);
+    if (!finite(df, static_cast<std::size_t>((L + 1) * d))) return "tangent-vector product";
+    // K v = -P^T df: the center's row now, the points' rows summed per point and mapped below.
+    for (int c = 0; c < d; ++c) Kv[static_cast<std::ptrdiff_t>(p) * d + c] -= df[c];
+    for (int k = 0; k < L; ++k) {
+      double* out = point_df.data() + static_cast<std::ptrdiff_t>(gp_->point[gp_->offsets[p] + k]) * d;
+      for (int c = 0; c < d; ++c) out[c] += df[(k + 1) * d + c];
+    }
+    return nullptr;
+  });
+  add_mapped(*gp_, point_df.data(), -1.0, Kv);
+}
+
+void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) const {
+  // The diagonal of P^T M P needs M and the map: O(L^2) per family, as for the matrix.
+  const int d = particles_->dim, S = law_.n_states;
+  std::fill(diag, diag + dofs(), 0.0);
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  for_each_family("stiffness diagonal (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    variant_.tangent(fam, nullptr, g.factors());
+    if (!factors_finite(d, S, fam, g.factors())) return "tangent (diagonal)";
+    g.map(p);
+    g.nodal_matrix(d, S, fam, g.factors());
+    const std::vector<int>& nodes = g.nodes();
+    const std::size_t nd = nodes.size() * d;
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int r = 0; r < d; ++r) diag[static_cast<std::ptrdiff_t>(nodes[a]) * d + r] -= g.nodal()[(a * d + r) * nd + a * d + r];
+    return nullptr;
+  });
+}
+
+double GaussPointAssembler::strain_energy(const double* u) const {
+  if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  double total = 0.0;
+  for_each_family("strain energy (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    total += fam.V0 * variant_.energy(fam);
+    return nullptr;
+  });
+  return total;
+}
+
+double GaussPointAssembler::family_energy_density(int p, const double* u) const {
+  if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  Gather g(*this);
+  return variant_.energy(g.family(p, u, u ? ug.data() : nullptr));
+}
+
+std::vector<double> GaussPointAssembler::particle_outputs(const double* u) const {
+  const int n = particles_->size(), no = law_.n_outputs;
+  std::vector<double> out(static_cast<std::size_t>(n) * no, 0.0);
+  if (no == 0 || variant_.outputs == nullptr) return out;
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  for_each_family("outputs (Gauss points)", [&](Gather& g, int p) -> const char* {
+    variant_.outputs(g.family(p, u, u ? ug.data() : nullptr), out.data() + static_cast<std::ptrdiff_t>(p) * no);
+    return nullptr;
+  });
+  return out;
+}
+
+std::vector<double> GaussPointAssembler::family_stresses(const double* u) const {
+  const int n = particles_->size(), d = particles_->dim;
+  std::vector<double> sigma(static_cast<std::size_t>(n) * d * d, 0.0);
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gauss_point_displacements(*gp_, u, ug.data());
+  }
+  for_each_family("stress (Gauss points)", [&](Gather& g, int p) -> const char* {
+    double* s = sigma.data() + static_cast<std::ptrdiff_t>(p) * d * d;
+    family_stress(variant_.residual, g.family(p, u, u ? ug.data() : nullptr), d, g.local(), s);
+    return finite(s, static_cast<std::size_t>(d) * d) ? nullptr : "stress";
+  });
+  return sigma;
+}
+
+}  // namespace pd
