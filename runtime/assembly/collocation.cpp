@@ -49,9 +49,19 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
   }
 }
 
-Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, std::string& description,
-                                 const Box2* body) {
-  const ReproducingSpace space = paper001_space(particles.dim);
+std::vector<double> symmetric_pair_weights(const Particles& particles, const Bonds& bonds, const std::vector<double>& weights) {
+  std::vector<double> out(weights.size());
+  for (int p = 0; p < bonds.particle_count(); ++p)
+    for (int b = bonds.offsets[p]; b < bonds.offsets[p + 1]; ++b) {
+      const int q = bonds.neighbor[b], r = reverse_bond(bonds, p, q);
+      if (r < 0) throw std::invalid_argument("symmetric_pair_weights: bond " + std::to_string(p) + " -> " + std::to_string(q) + " has no reverse bond");
+      out[b] = 0.5 * (weights[b] * particles.volume[p] + weights[r] * particles.volume[q]) / particles.volume[p];
+    }
+  return out;
+}
+
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
+                                 std::string& description, const Box2* body, bool symmetric) {
   CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space, body);
   description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
                             space.name, space.terms.size());
@@ -61,6 +71,10 @@ Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds,
   if (w.volume_families > 0)
     description += fmt::format("; {} families not unisolvent keep the volume quadrature (particle {} first)",
                                w.volume_families, w.first_volume_family);
+  if (symmetric) {
+    description += "; pair weights symmetrised (V_p w_qp = V_q w_pq: momentum-conserving pair forces)";
+    w.weights = symmetric_pair_weights(particles, bonds, w.weights);
+  }
   return make_collocation(particles, bonds, std::move(w.weights));
 }
 

@@ -66,6 +66,33 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
   return report;
 }
 
+FamilyModuli family_moduli(const FamilyAssembler& assembler, int p) {
+  const FamilyInputs& in = assembler.inputs();
+  const int d = in.dim(), nk = d * (d + 1) / 2;
+  FamilyGather g(in);
+  const abi::Family f = g.gather(p, nullptr);
+  const int m = (f.n_bonds + 1) * d;
+  std::vector<double> dy(static_cast<std::size_t>(m)), df(static_cast<std::size_t>(m));
+  FamilyModuli out{Eigen::MatrixXd::Zero(d * d, nk), Eigen::MatrixXd::Zero(d, nk)};
+  int k = 0;
+  for (int r = 0; r < d; ++r)
+    for (int c = r; c < d; ++c, ++k) {
+      std::fill(dy.begin(), dy.end(), 0.0);
+      for (int b = 0; b < f.n_bonds; ++b) {
+        const double* xi = f.xi + static_cast<std::ptrdiff_t>(b) * d;
+        dy[static_cast<std::size_t>(b + 1) * d + r] += 0.5 * xi[c];
+        dy[static_cast<std::size_t>(b + 1) * d + c] += 0.5 * xi[r];
+      }
+      assembler.variant().jvp(f, dy.data(), df.data());
+      for (int a = 0; a < d; ++a) out.force(a, k) = df[a] / f.V0;
+      for (int b = 0; b < f.n_bonds; ++b)
+        for (int a = 0; a < d; ++a)
+          for (int e = 0; e < d; ++e)
+            out.stress(a * d + e, k) -= df[static_cast<std::size_t>(b + 1) * d + a] * f.xi[b * d + e] / f.V0;
+    }
+  return out;
+}
+
 StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h) {
   StrainModeReport report = find_strain_blind_families(assembler);
   const int n = assembler.inputs().size();

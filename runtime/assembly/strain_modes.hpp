@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "assembly/assembler.hpp"
 
 namespace pd {
@@ -29,5 +31,21 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
 // influence, delta/h and particles when more than half of the families are blind (the body then has a mechanism); returns the
 // report otherwise (a few blind families at corners are stiffened by their neighbours').
 StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h);
+
+// The discrete moduli of particle p's family: its response to the unit homogeneous
+// strains eps_k (k over the pairs r <= c: 11, 12, 22 in 2D; 11, 12, 13, 22, 23, 33 in
+// 3D; eps_k = (e_r e_c^T + e_c e_r^T) / 2), from the generated tangent-vector product at
+// u = 0. `stress` (d*d rows, a*d + b, one column per k) is the family's stress
+// sigma = sum_j t_j (x) xi_j V_j, which for a homogeneous deformation is the continuum
+// stress (Silling & Lehoucq 2008); with a quadrature exact for the law's horizon sums
+// (law_space.hpp) it is the material's C : eps_k. `force` (d rows) is sum_j t_j V_j, zero
+// in the continuum. V_j is the family's quadrature weight (the collocation weight under
+// obq). Nodal forces are -V0 V_j t_j on neighbour j and +V0 sum_j V_j t_j on the centre
+// (kernel_abi.hpp).
+struct FamilyModuli {
+  Eigen::MatrixXd stress;
+  Eigen::MatrixXd force;
+};
+FamilyModuli family_moduli(const FamilyAssembler& assembler, int p);
 
 }  // namespace pd

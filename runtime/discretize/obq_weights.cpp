@@ -34,9 +34,11 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
   Box2 unit_body;
   if (cut)
     for (int a = 0; a < 2; ++a) unit_body.lo[a] = body->lo[a] / delta, unit_body.hi[a] = body->hi[a] / delta;
-  for (int t = 0; t < m; ++t)
-    b[t] = std::pow(delta, dim) * (cut ? ball_box_moment_2d(space.terms[t], 1.0, unit_center, unit_body)
-                                       : ball_moment(dim, space.terms[t], 1.0));
+  for (int t = 0; t < m; ++t) {
+    b[t] = 0;
+    for (const auto& [c, f] : weighted_term(space, space.terms[t]))
+      b[t] += c * std::pow(delta, dim) * (cut ? ball_box_moment_2d(f, 1.0, unit_center, unit_body) : ball_moment(dim, f, 1.0));
+  }
   for (int j = 0; j < n; ++j) {
     double scaled[3] = {0, 0, 0};
     double r2 = 0;
@@ -45,7 +47,8 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
       r2 += scaled[c] * scaled[c];
     }
     const double r = std::sqrt(r2);
-    for (int t = 0; t < m; ++t) At(j, t) = space.terms[t].value(dim, scaled, r);
+    const double w = radial_weight(space, r);  // r is |xi|/delta here
+    for (int t = 0; t < m; ++t) At(j, t) = w * space.terms[t].value(dim, scaled, r);
   }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(At);
   qr.setThreshold(kRankThreshold);

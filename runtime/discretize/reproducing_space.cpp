@@ -1,6 +1,7 @@
 // Reproducing spaces of the optimisation-based quadrature.
 #include "discretize/reproducing_space.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace pd {
@@ -20,8 +21,23 @@ std::vector<BondMonomial> monomials(int dim, int min_degree, int max_degree, int
   return out;
 }
 
+double radial_weight(const ReproducingSpace& space, double rho) {
+  if (space.weight.empty()) return 1.0;
+  double w = 0;
+  for (const RadialPower& t : space.weight) w += t.coefficient * std::pow(rho, t.power);
+  return w;
+}
+
+std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space, const BondMonomial& f) {
+  if (space.weight.empty()) return {{1.0, f}};
+  std::vector<std::pair<double, BondMonomial>> out;
+  for (const RadialPower& t : space.weight)
+    out.push_back({t.coefficient, BondMonomial{f.powers, f.inverse_r_power - t.power}});
+  return out;
+}
+
 ReproducingSpace paper001_space(int dim) {
-  ReproducingSpace space{"paper001 P2 + S_(1/r,2)", dim, monomials(dim, 0, 2, 0)};
+  ReproducingSpace space{"paper001 P2 + S_(1/r,2)", dim, monomials(dim, 0, 2, 0), {}};
   const std::vector<BondMonomial> tensor_kernel = monomials(dim, 3, 4, 3);
   space.terms.insert(space.terms.end(), tensor_kernel.begin(), tensor_kernel.end());
   return space;

@@ -3,17 +3,35 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "discretize/ball_moments.hpp"
 
 namespace pd {
 
+// One term c rho^k of a radial weight w(rho) = sum c rho^k, rho = |xi| / delta.
+struct RadialPower {
+  double coefficient = 1;
+  int power = 0;
+};
+
 struct ReproducingSpace {
   std::string name;
   int dim = 2;
   std::vector<BondMonomial> terms;  // a basis: linearly independent as functions on the ball
+  // Every function of the space is w(|xi|/delta) * term: the influence a law's horizon sums
+  // carry (law_space.hpp). Empty: w = 1 (paper 001's spaces).
+  std::vector<RadialPower> weight;
 };
+
+// w(rho) of the space (1 when it has no weight).
+double radial_weight(const ReproducingSpace& space, double rho);
+
+// The term w(|xi|/delta) f(xi) as a sum of monomials of the bond scaled by 1/delta:
+// c_k rho^k f(xi/delta) = c_k (xi/delta)^b / |xi/delta|^(s - k). Each pair is a
+// coefficient and a monomial; their ball moments are closed-form (ball_moments.hpp).
+std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space, const BondMonomial& f);
 
 // Every monomial xi^b with min_degree <= |b| <= max_degree, divided by |xi|^inverse_r_power.
 std::vector<BondMonomial> monomials(int dim, int min_degree, int max_degree, int inverse_r_power);

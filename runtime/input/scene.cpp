@@ -431,6 +431,14 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (!choice) q.fail("unknown quadrature (volume, partial_linear, partial_exact, obq, obq_cut)");
       s.quadrature = *choice;
     }
+    if (d.has("obq_space")) {
+      s.obq_space = d.choice("obq_space", "paper001", {"paper001", "paper001_odd", "law"});
+      if (!is_obq(s.quadrature)) d.get("obq_space").fail("obq_space needs quadrature: obq or obq_cut");
+    }
+    if (d.has("obq_symmetric")) {
+      s.obq_symmetric = d.boolean("obq_symmetric", false);
+      if (!is_obq(s.quadrature)) d.get("obq_symmetric").fail("obq_symmetric needs quadrature: obq or obq_cut");
+    }
     if (d.has("perturbation")) {
       MapReader p(d.get("perturbation"));
       s.perturbation = p.number("amplitude", 0.0);

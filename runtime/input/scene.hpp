@@ -126,6 +126,8 @@ struct Scene {
   double perturbation = 0;         // fraction of h
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
+  std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
+  bool obq_symmetric = false;                 // domain.obq_symmetric
   bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
   // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
   // each cell (0: off, the quadrature above) and the MLS support in units of h.

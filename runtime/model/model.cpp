@@ -13,6 +13,7 @@
 #include "discretize/lattice_blocks.hpp"
 #include "input/yaml_keys.hpp"  // SceneError
 #include "discretize/partial_volume.hpp"
+#include "discretize/law_space.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
 #include "run/constraints.hpp"
@@ -68,8 +69,15 @@ Model build_model(const Scene& scene) {
   }
   if (is_obq(scene.quadrature)) {
     const std::optional<Box2> body = obq_cut_body(scene);
+    ReproducingSpace space = scene.obq_space == "paper001_odd" ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
+    if (scene.obq_space == "law") try {
+        space = law_reproducing_space(m.law->name, scene.dim, m.influence->weight, m.influence->name);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());
+      }
     m.collocation = std::make_unique<Collocation>(
-        make_obq_collocation(m.particles, m.bonds, m.collocation_description, body ? &*body : nullptr));
+        make_obq_collocation(m.particles, m.bonds, space, m.collocation_description, body ? &*body : nullptr,
+                             scene.obq_symmetric));
   }
   if (scene.gauss_points > 0) {
     // The Gauss bonds are not cut by cracks and do not break; the cells are of one spacing.

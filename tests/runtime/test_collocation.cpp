@@ -127,3 +127,60 @@ TEST(Collocation, TangentProductAndDiagonalMatchFiniteDifferencesOnAPerturbedClo
     }
   }
 }
+
+TEST(Collocation, SymmetricPairWeightsConserveMomentumAndKeepALatticeInterior) {
+  // Perturbed cloud: V_p w'_{q,p} = V_q w'_{p,q} for every pair, so the pair forces of
+  // eq. (2.13) are equal and opposite: the forces sum to zero for any displacement, and
+  // the tangent of an energy law (LPS) is symmetric again.
+  const obq_test::Cloud c = obq_test::unit_square_cloud(1.0 / 12);
+  const pd::Collocation plain = obq_test::paper001_collocation(c);
+  const std::vector<double> w = pd::symmetric_pair_weights(c.particles, c.bonds, plain.weight);
+  const pd::Bonds& B = c.bonds;
+  for (int p = 0; p < B.particle_count(); ++p)
+    for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b) {
+      const int q = B.neighbor[b];
+      int r = B.offsets[q];
+      while (B.neighbor[r] != p) ++r;
+      EXPECT_NEAR(c.particles.volume[p] * w[b], c.particles.volume[q] * w[r], 1e-15) << p << " -> " << q;
+    }
+  const pd::Collocation col = pd::make_collocation(c.particles, c.bonds, w);
+  const auto* law = pd::abi::find_law("lps_plane_strain");
+  pd::AssemblerOptions opt;
+  opt.collocation = &col;
+  const pd::FamilyAssembler A(c.particles, c.bonds, *law, lps_params(*law), opt);
+  const std::vector<double> u = random_field(A.dofs(), 1e-2, 3);
+  std::vector<double> f(u.size());
+  A.internal_forces(u.data(), f.data());
+  double sum[2] = {0, 0}, size = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) sum[i % 2] += f[i], size = std::max(size, std::abs(f[i]));
+  EXPECT_LT(std::abs(sum[0]) + std::abs(sum[1]), 1e-12 * size * c.particles.size());
+  pd::SparseMatrix K = A.make_matrix();
+  A.stiffness(u.data(), K);
+  const Eigen::MatrixXd Kd(K);
+  EXPECT_LT((Kd - Kd.transpose()).cwiseAbs().maxCoeff(), 1e-12 * Kd.cwiseAbs().maxCoeff());
+  // With the paper's collocation weights the same forces do not sum to zero.
+  pd::AssemblerOptions opt_plain;
+  opt_plain.collocation = &plain;
+  const pd::FamilyAssembler A_plain(c.particles, c.bonds, *law, lps_params(*law), opt_plain);
+  A_plain.internal_forces(u.data(), f.data());
+  double plain_sum = 0;
+  for (std::size_t i = 0; i < f.size(); i += 2) plain_sum += f[i];
+  EXPECT_GT(std::abs(plain_sum), 1e-6 * size);
+
+  // Regular lattice: an interior family's OBQ weights equal its neighbours' mirrored
+  // ones, so symmetrising leaves every family whose neighbours all have full balls as it was.
+  const obq_test::Cloud lattice = obq_test::unit_box_cloud(2, 1.0 / 24, 3.5, 0.0);
+  const std::vector<double> lw = pd::obq_weights(lattice.particles, lattice.bonds, pd::paper001_space(2), lattice.full_ball);
+  const std::vector<double> ls = pd::symmetric_pair_weights(lattice.particles, lattice.bonds, lw);
+  int checked = 0;
+  for (int p = 0; p < lattice.particles.size(); ++p) {
+    bool inner = lattice.full_ball[p];
+    for (int b = lattice.bonds.offsets[p]; inner && b < lattice.bonds.offsets[p + 1]; ++b)
+      inner = lattice.full_ball[lattice.bonds.neighbor[b]];
+    if (!inner) continue;
+    ++checked;
+    for (int b = lattice.bonds.offsets[p]; b < lattice.bonds.offsets[p + 1]; ++b)
+      EXPECT_NEAR(ls[b], lw[b], 1e-12 * lattice.particles.volume[p]) << "particle " << p;
+  }
+  EXPECT_GT(checked, 0);
+}
