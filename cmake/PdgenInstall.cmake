@@ -7,6 +7,13 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
+if(PD_SANITIZE)
+  # A sanitizer build's libraries are instrumented: whoever links them needs the sanitizer
+  # runtimes too, so the exported targets carry the link option (the consumer test of the
+  # sanitizer build failed on undefined __asan_* symbols without it).
+  target_link_options(pd_runtime INTERFACE -fsanitize=address,undefined)
+  target_link_options(pd_kernels INTERFACE -fsanitize=address,undefined)
+endif()
 set_target_properties(pd_runtime PROPERTIES EXPORT_NAME runtime)
 set_target_properties(pd_kernels PROPERTIES EXPORT_NAME kernels)
 install(TARGETS pd_runtime pd_kernels EXPORT pdgenTargets
