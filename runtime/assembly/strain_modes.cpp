@@ -4,12 +4,27 @@
 #include <fmt/core.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "input/yaml_keys.hpp"  // SceneError
 
 namespace pd {
+
+namespace {
+// dy_a = eps x_a relative to the center for the symmetric unit strain
+// eps = (e_r e_c^T + e_c e_r^T) / 2; dy has (L+1) d entries, the center's zero.
+void unit_strain_displacement(const abi::Family& f, int d, int r, int c, std::vector<double>& dy) {
+  std::fill(dy.begin(), dy.end(), 0.0);
+  for (int b = 0; b < f.n_bonds; ++b) {
+    const double* xi = f.xi + static_cast<std::ptrdiff_t>(b) * d;
+    dy[static_cast<std::size_t>(b + 1) * d + r] += 0.5 * xi[c];
+    dy[static_cast<std::size_t>(b + 1) * d + c] += 0.5 * xi[r];
+  }
+}
+}  // namespace
 
 StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, double tolerance) {
   const FamilyInputs& in = assembler.inputs();
@@ -32,13 +47,7 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
       int k = 0;
       for (int r = 0; r < d; ++r)
         for (int c = r; c < d; ++c, ++k) {
-          // dy_a = eps x_a relative to the center: eps = (e_r e_c^T + e_c e_r^T) / 2.
-          std::fill(dy.begin(), dy.end(), 0.0);
-          for (int b = 0; b < f.n_bonds; ++b) {
-            const double* xi = f.xi + static_cast<std::ptrdiff_t>(b) * d;
-            dy[static_cast<std::size_t>(b + 1) * d + r] += 0.5 * xi[c];
-            dy[static_cast<std::size_t>(b + 1) * d + c] += 0.5 * xi[r];
-          }
+          unit_strain_displacement(f, d, r, c, dy);
           variant.jvp(f, dy.data(), df.data());
           for (int i = 0; i < m; ++i) response(i, k) = df[i];
         }
@@ -77,12 +86,7 @@ FamilyModuli family_moduli(const FamilyAssembler& assembler, int p) {
   int k = 0;
   for (int r = 0; r < d; ++r)
     for (int c = r; c < d; ++c, ++k) {
-      std::fill(dy.begin(), dy.end(), 0.0);
-      for (int b = 0; b < f.n_bonds; ++b) {
-        const double* xi = f.xi + static_cast<std::ptrdiff_t>(b) * d;
-        dy[static_cast<std::size_t>(b + 1) * d + r] += 0.5 * xi[c];
-        dy[static_cast<std::size_t>(b + 1) * d + c] += 0.5 * xi[r];
-      }
+      unit_strain_displacement(f, d, r, c, dy);
       assembler.variant().jvp(f, dy.data(), df.data());
       for (int a = 0; a < d; ++a) out.force(a, k) = df[a] / f.V0;
       for (int b = 0; b < f.n_bonds; ++b)
