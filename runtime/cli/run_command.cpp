@@ -79,9 +79,6 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   if (!distributed_backend_available())
     return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
                        "scripts/install_deps.sh and configure again)");
-  if (scene.dynamics && scene.dynamics->method != DynamicsMethod::explicit_verlet)
-    return std::string("solver.backend: petsc runs static scenes and explicit dynamics; dynamic relaxation runs on the "
-                       "serial backend (or solve the scene statically with backend petsc)");
   return std::nullopt;
 }
 

@@ -12,6 +12,7 @@
 // (internal plus external); the iteration stops when |F_free| <= tolerance x reference.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 namespace pd {
@@ -21,7 +22,10 @@ class AdaptiveDynamicRelaxation {
   // density: D_ii per dof (only free dofs are read), read in place (the model's
   // fictitious-density effect, effects/inertia.hpp, which must outlive the iteration);
   // free: the dofs it moves.
-  AdaptiveDynamicRelaxation(const std::vector<double>& density, std::vector<int> free);
+  // sum: over processes, in place, of the damping's two sums over `free` (distributed runs
+  // pass each rank's own free dofs and an all-reduce; none: one process holds every dof).
+  using Sum = std::function<void(double* values, int count)>;
+  AdaptiveDynamicRelaxation(const std::vector<double>& density, std::vector<int> free, Sum sum = {});
   // One iteration from the force F^n at u^n: updates v (to v^{n+1/2}) and u (to u^{n+1}).
   void step(const std::vector<double>& F, std::vector<double>& u);
   double damping() const { return c_; }
@@ -34,6 +38,7 @@ class AdaptiveDynamicRelaxation {
  private:
   const std::vector<double>& D_;
   std::vector<int> free_;
+  Sum sum_;
   std::vector<double> v_, f_prev_;
   double c_ = 0;
   int n_ = 0;

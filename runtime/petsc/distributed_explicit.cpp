@@ -8,23 +8,18 @@
 // and the factors alpha when the serial run would read them (a series row, a snapshot,
 // a checkpoint, the end) and writes through the serial run's own functions.
 #include <fmt/core.h>
-#include <petscvec.h>
+#include <mpi.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include "damage/critical_stretch.hpp"
 #include "dynamics/energies.hpp"
 #include "dynamics/progress.hpp"
 #include "dynamics/verlet_integrator.hpp"
-#include "interrupt.hpp"
-#include "petsc/distributed_body.hpp"
 #include "petsc/distributed_dynamics.hpp"
-#include "petsc/petsc_check.hpp"
-#include "petsc/rank_gather.hpp"
+#include "petsc/rank_steps.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
@@ -35,115 +30,21 @@ namespace {
 
 class DistributedExplicit {
  public:
-  explicit DistributedExplicit(DynamicRun& run)
-      : s_(run), body_(run.model.particles, run.model.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
-    const int d = s_.model.particles.dim;
-    std::vector<char> constrained(s_.u.size(), 0);
-    for (int i : s_.model.dofs.constrained_dofs()) constrained[i] = 1;
-    for (int i = 0; i < part_.owned(); ++i) {
-      const int p = part_.owned_particle(i);
-      owned_families_.push_back(p);
-      for (int c = 0; c < d; ++c) {
-        const int dof = p * d + c;
-        owned_dofs_.push_back(dof);
-        (constrained[dof] ? owned_constrained_ : owned_free_).push_back(dof);
-      }
-    }
-    // Every dof a rank may hold besides its own: what the work's load vector must not count.
-    std::vector<char> owned(s_.u.size(), 0);
-    for (int dof : owned_dofs_) owned[dof] = 1;
-    for (std::size_t i = 0; i < owned.size(); ++i)
-      if (!owned[i]) foreign_dofs_.push_back(static_cast<int>(i));
-    if (s_.model.damage)
-      damage_.emplace(s_.model.particles, s_.model.bonds, s_.model.damage->s0(), s_.model.damage->tension_only());
-    x_ = body_.create_vector();
-    F_ = body_.create_vector();
-  }
-  ~DistributedExplicit() {
-    VecDestroy(&x_);
-    VecDestroy(&F_);
-  }
-  DistributedExplicit(const DistributedExplicit&) = delete;
-  DistributedExplicit& operator=(const DistributedExplicit&) = delete;
-
+  explicit DistributedExplicit(DynamicRun& run) : s_(run), steps_(run), part_(steps_.partition()) {}
   RunSummary run(bool write, int stop_after);
 
  private:
-  void ghost_update();
-  void forces(double t, std::vector<double>& f, std::vector<double>& g);
-  bool break_bonds();
-  void gather();
-  double global_sum(double local) const {
-    double global = 0;
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
-    return global;
-  }
-
   DynamicRun& s_;
-  DistributedBody body_;
+  RankSteps steps_;
   const Partition& part_;
-  std::vector<int> owned_families_, owned_dofs_, owned_free_, owned_constrained_, foreign_dofs_;
-  std::optional<CriticalStretchDamage> damage_;
-  Vec x_ = nullptr, F_ = nullptr;
-  std::vector<double> f_local_;
 };
-
-// u at the ghosts = their owners' u (the owned entries are the rank's own already).
-void DistributedExplicit::ghost_update() {
-  PetscScalar* a;
-  check(VecGetArray(x_, &a), "VecGetArray");
-  for (std::size_t k = 0; k < owned_dofs_.size(); ++k) a[k] = s_.u[owned_dofs_[k]];
-  check(VecRestoreArray(x_, &a), "VecRestoreArray");
-  body_.to_local(x_, s_.u);
-}
-
-// The serial driver's forces() at the owned dofs: f = f_int + loads(t); g = the loads on
-// free dofs and -f_int on constrained ones (the reactions' work), zero at foreign dofs.
-void DistributedExplicit::forces(double t, std::vector<double>& f, std::vector<double>& g) {
-  f.resize(s_.u.size());
-  g.assign(s_.u.size(), 0.0);
-  body_.internal_forces(*s_.model.assembler, s_.u, f_local_);
-  body_.from_local(f_local_, F_);
-  const PetscScalar* a;
-  check(VecGetArrayRead(F_, &a), "VecGetArrayRead");
-  for (std::size_t k = 0; k < owned_dofs_.size(); ++k) f[owned_dofs_[k]] = a[k];
-  check(VecRestoreArrayRead(F_, &a), "VecRestoreArrayRead");
-  for (const auto& e : s_.model.effects) e->add_forces(s_.u.data(), t, g.data());
-  for (int i : foreign_dofs_) g[i] = 0.0;
-  for (int i : owned_dofs_) f[i] += g[i];
-  for (int i : owned_constrained_) g[i] = g[i] - f[i];
-}
-
-// The damage effect's after_step on the rank's own families (the serial after_step
-// would read u at particles this rank does not hold). Moments follow the broken bonds.
-bool DistributedExplicit::break_bonds() {
-  if (!damage_ || damage_->break_family_bonds(s_.u.data(), owned_families_) == 0) return false;
-  s_.model.assembler->update_moments();
-  return true;
-}
-
-// Rank 0's u, v and alpha = the owners' (for a row, snapshot, checkpoint or the end).
-void DistributedExplicit::gather() {
-  const int d = s_.model.particles.dim;
-  gather_particle_values(part_, d, s_.u, PETSC_COMM_WORLD);
-  gather_particle_values(part_, d, s_.v, PETSC_COMM_WORLD);
-  if (!s_.model.assembler->intact()) {
-    gather_family_alpha(part_, s_.model.bonds, PETSC_COMM_WORLD);
-    // Rank 0's other families now have their owners' broken bonds: their moments too
-    // (the strain energy of a series row reads every family's).
-    if (part_.rank == 0) s_.model.assembler->update_moments();
-  }
-}
 
 RunSummary DistributedExplicit::run(bool write, int stop_after) {
   const auto t0 = std::chrono::steady_clock::now();
   RunSummary& summary = s_.summary;
   DynamicsReport& rep = s_.start_report();
   const DynamicsSpec& dyn = *s_.scene.dynamics;
-  if (dyn.method != DynamicsMethod::explicit_verlet)
-    throw std::runtime_error("solver.backend: petsc runs explicit dynamics only; dynamic relaxation is serial (or solve "
-                             "the static scene with the PETSc backend)");
-  const bool root = part_.rank == 0;
+  const bool root = steps_.root();
   write = write && root;
   // The set-up ran on every rank from the same scene: its stable step must agree.
   const double dt = s_.dt();
@@ -176,62 +77,50 @@ RunSummary DistributedExplicit::run(bool write, int stop_after) {
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  const VerletIntegrator verlet(*s_.model.inertia, s_.model.damping, owned_free_, dt);
+  const VerletIntegrator verlet(*s_.model.inertia, s_.model.damping, steps_.owned_free(), dt);
   std::vector<double> f, g, g_old, u_old;
   double t = step * dt;
-  forces(t, f, g);
+  steps_.forces(t, f, g);
   auto record = [&](int st) {
-    const double w = global_sum(work.value());
+    const double w = steps_.sum(work.value());
     if (!root) return;
     SeriesRow r = s_.make_row(st, t, 0.0);
     r.external_work = w;
     s_.series.push_back(r);
   };
   if (step == 0) {
-    gather();
+    steps_.gather();
     record(0);
     if (dyn.snapshot_every > 0 && write) s_.write_snapshot(0, 0.0);
   }
   Progress progress(s_.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int st = step + 1; st <= last; ++st) {
-    // A signal reaches the ranks at different moments: they agree on it every step
-    // (one integer all-reduce), so all stop at the same step instead of one rank leaving
-    // the others waiting in the next ghost update.
-    int local_signal = interrupt_signal(), signal = 0;
-    MPI_Allreduce(&local_signal, &signal, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
-    if (signal != 0) {
-      if (local_signal == 0) request_interrupt(signal);
-      throw_if_interrupted(fmt::format("at time step {} of {}", st, last));
-    }
+    steps_.agree_on_interrupt(fmt::format("at time step {} of {}", st, last));
     u_old = s_.u;
     g_old = g;
     verlet.first_half(s_.u, s_.v, f);
     t = st * dt;
     s_.prescribe(t);
-    ghost_update();
-    break_bonds();
-    forces(t, f, g);
+    steps_.ghost_update();
+    steps_.break_bonds();
+    steps_.forces(t, f, g);
     verlet.second_half(s_.v, f);
     work.add(g_old, g, u_old, s_.u);
     const bool row = st % dyn.output_every == 0 || st == dyn.steps;
     const bool snapshot = dyn.snapshot_every > 0 && (st % dyn.snapshot_every == 0 || st == dyn.steps);
     const bool checkpoint = dyn.checkpoint_every > 0 && st % dyn.checkpoint_every == 0;
-    if (row || snapshot || checkpoint) gather();
+    if (row || snapshot || checkpoint) steps_.gather();
     if (row) record(st);
     if (write && snapshot) s_.write_snapshot(st, t);
     if (checkpoint) {
-      const double w = global_sum(work.value());
+      const double w = steps_.sum(work.value());
       if (root) s_.save_checkpoint(st, {w, static_cast<double>(broken_start)});
     }
     progress.update(st, t);
   }
-  gather();
-  int finite = 1, all_finite = 0;
-  for (int i : owned_dofs_) finite = finite && std::isfinite(s_.u[i]);
-  MPI_Allreduce(&finite, &all_finite, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
-  if (!all_finite)
-    throw std::runtime_error(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
-  const double total_work = global_sum(work.value());
+  steps_.gather();
+  steps_.check_finite(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
+  const double total_work = steps_.sum(work.value());
   rep.last_step = last;
   rep.time = last * dt;
   rep.external_work = total_work;
@@ -253,7 +142,7 @@ RunSummary DistributedExplicit::run(bool write, int stop_after) {
 
 }  // namespace
 
-RunSummary run_distributed_dynamics(DynamicRun& run, bool write, int stop_after) {
+RunSummary run_distributed_explicit(DynamicRun& run, bool write, int stop_after) {
   DistributedExplicit distributed(run);
   return distributed.run(write, stop_after);
 }

@@ -14,6 +14,7 @@
 #include "effects/inertia.hpp"
 #include "interrupt.hpp"
 #include "run/constraints.hpp"
+#include "run/relaxation_state.hpp"
 #include "run/run_outputs.hpp"
 #include "solve/stopwatch.hpp"
 
@@ -41,33 +42,19 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   long long broken_start = broken_bond_count(model.bonds);
   std::vector<double> f, g;
   double reference = 0;
-  // Checkpoint scalars: [iterations, reference, broken_start, v (N), f_prev (N)]. The
-  // reference is the one of iteration 0: recomputed at the restored u it would be the
-  // residual there, and the restarted run would stop at another iteration.
-  constexpr std::size_t kHead = 3;
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
     run.restore(dyn.restart, step, scalars);
-    const std::size_t N = u.size();
-    if (scalars.size() != kHead + 2 * N) throw std::runtime_error(dyn.restart + ": not a relaxation checkpoint of this scene");
-    const auto v_begin = scalars.begin() + kHead, f_begin = v_begin + static_cast<std::ptrdiff_t>(N);
-    adr.restore(static_cast<int>(scalars[0]), std::vector<double>(v_begin, f_begin), std::vector<double>(f_begin, scalars.end()));
-    reference = scalars[1];
-    broken_start = static_cast<long long>(scalars[2]);
+    RelaxationRestart state = relaxation_restart(scalars, u.size(), dyn.restart);
+    adr.restore(state.iterations, std::move(state.v), std::move(state.f_prev));
+    reference = state.reference;
+    broken_start = state.broken_start;
     run.forces(0.0, f, g);
   } else {
     run.apply_initial_conditions();
     run.prescribe(0.0);
     run.forces(0.0, f, g);
-    // The reference force: the larger of the loads and the initial out-of-balance force.
-    reference = norm_over(f, model.dofs.free_dofs());
-    for (const auto& e : model.effects) {
-      if (!e->is_load()) continue;
-      std::vector<double> load(u.size(), 0.0);
-      e->add_forces(u.data(), 0.0, load.data());  // in full: relaxation has no time functions
-      reference = std::max(reference, norm_over(load, model.dofs.free_dofs()));
-    }
-    if (reference == 0) reference = 1;
+    reference = relaxation_reference(model, u, f, [&](const std::vector<double>& v) { return norm_over(v, model.dofs.free_dofs()); });
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
@@ -88,10 +75,7 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
     if (s % dyn.output_every == 0 || done) run.series.push_back(run.make_row(s, s, ratio));
     if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done)) run.write_snapshot(s, s);
     if (dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0) {
-      std::vector<double> scalars{static_cast<double>(adr.iterations()), reference, static_cast<double>(broken_start)};
-      scalars.insert(scalars.end(), adr.velocity().begin(), adr.velocity().end());
-      scalars.insert(scalars.end(), adr.previous_force().begin(), adr.previous_force().end());
-      run.save_checkpoint(s, scalars);
+      run.save_checkpoint(s, relaxation_scalars({adr.iterations(), reference, broken_start, adr.velocity(), adr.previous_force()}));
     }
     progress.update(s, s, fmt::format(", |r|/ref = {:.3e}", ratio));
   }

@@ -106,5 +106,56 @@ TEST(DistributedDynamics, NotchedBar3DFractureEqualsSerial) {
                        200);
 }
 
+// Adaptive dynamic relaxation over the ranks against the serial iteration. Unlike the
+// explicit runs, the trajectory is not reproduced to rounding: the damping coefficient
+// c = 2 sqrt(u'K1u / u'u) divides force differences by small velocities, and the
+// residual near convergence is a difference of nearly equal forces, so the 1e-16
+// differences of another summation order grow (measured on the uniaxial scene: the
+// residual ratio at iteration 100 differs by 1.5e-6 relative even on one rank, whose
+// Morton order sums in another order than the serial loop). Both runs stop inside the
+// tolerance ball of the same static answer, so what must hold is: the distributed answer
+// is converged by the serial driver's own residual, and it is the serial displacement to
+// 1e-8 relative (issue 18's criterion; measured 1.2e-10 to 4.0e-10 at 1, 2 and 3 ranks).
+template <class MakeScene>
+void expect_same_relaxation(MakeScene make) {
+  const Scene scene_s = make(), scene_d = make();
+  Model model_s = build_model(scene_s), model_d = build_model(scene_d);
+  DynamicRun serial = prepare_dynamic_run(model_s, scene_s, [](const std::string&) {});
+  const RunSummary ss = run_dynamic(serial, false);
+  DynamicRun distributed = prepare_dynamic_run(model_d, scene_d, [](const std::string&) {});
+  const RunSummary s = run_distributed_dynamics(distributed, false);
+  ASSERT_TRUE(ss.dynamics->converged);
+  EXPECT_TRUE(s.dynamics->converged);
+  EXPECT_GT(ss.dynamics->last_step, 50) << "the test must exercise the iteration";
+  // The same iteration to within a few percent: the stopping point moves with rounding only.
+  EXPECT_NEAR(s.dynamics->last_step, ss.dynamics->last_step, 0.05 * ss.dynamics->last_step);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) return;
+  // The serial driver's residual at the gathered answer, against the serial reference
+  // (the loads' norm here: the body starts at rest, so the initial residual is the loads).
+  const std::vector<int>& free = model_s.dofs.free_dofs();
+  std::vector<double> f, g, load(serial.u.size(), 0.0);
+  const std::vector<double> u_serial = serial.u;
+  serial.u = distributed.u;
+  serial.forces(0.0, f, g);
+  serial.u = u_serial;
+  for (const auto& e : model_s.effects)
+    if (e->is_load()) e->add_forces(u_serial.data(), 0.0, load.data());
+  double r = 0, ref = 0;
+  for (int i : free) r += f[i] * f[i], ref += load[i] * load[i];
+  EXPECT_LE(std::sqrt(r / ref), scene_s.dynamics->tolerance);
+  EXPECT_LT(relative_difference(serial.u, distributed.u), 1e-8);
+  ASSERT_EQ(s.probes.size(), ss.probes.size());
+  for (std::size_t k = 0; k < ss.probes.size(); ++k)
+    EXPECT_NEAR(s.probes[k].value, ss.probes[k].value, 1e-8 * std::abs(ss.probes[k].value)) << ss.probes[k].name;
+}
+
+// scenes/relaxation_uniaxial.yaml (2D, 400 particles): the loads' reference and the
+// constrained sides cross the rank boundaries.
+TEST(DistributedRelaxation, UniaxialEqualsSerial) {
+  expect_same_relaxation([] { return scene("relaxation_uniaxial.yaml", {}); });
+}
+
 }  // namespace
 }  // namespace pd
