@@ -15,7 +15,7 @@ work=$(mktemp -d /tmp/petsc_cube.XXXX)
 sed -e "s|  count: 8|  count: $count|" -e "s|horizon: {ratio: 2.0}|horizon: {ratio: $ratio}|" -e "s|^law: silling_3d|law: $law|" \
     -e "s|output: {directory: out/cube_tension}|output: {directory: $work/out}\nsolver: {backend: petsc}|" \
     "$here/scenes/cube_tension.yaml" > "$work/cube.yaml"
-echo "cube ${count}^3 = $((count * count * count)) particles, delta/h = $ratio, $law, $(date -u +%FT%TZ)"
+echo "cube count $count ((count + 1)^3 = $(((count + 1) * (count + 1) * (count + 1))) particles, node placement), delta/h = $ratio, $law, $(date -u +%FT%TZ)"
 run_ranks cube "$ranks" "$work/cube.yaml" "$work" "$petsc_options"
 grep -E "front_uz|Newton|SNES|converged" "$work/cube_$ranks.log" | head -5 || true
 echo "logs: $work"
