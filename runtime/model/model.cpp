@@ -46,7 +46,8 @@ Model build_model(const Scene& scene) {
   m.particles = discretize(scene);
   m.bonds = scene.particle_spacing.empty()
                 ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
-                : find_bonds_per_particle(m.particles, scene.particle_horizons(), m.influence->weight);  // domain.blocks
+                : find_block_bonds(m.particles, scene.particle_horizons(), scene.particle_spacing, scene.quadrature,
+                                   m.influence->weight);  // domain.blocks
   m.bond_count = m.bonds.bond_count() / 2;
   std::vector<int> crossed;
   m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
