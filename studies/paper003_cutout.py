@@ -29,7 +29,7 @@ import numpy as np
 
 from paper003_plate import E, NU, RHO, law_parameters, relative_errors, run_pd, stable_step, first_error, model_size
 
-SIDE, A, U_RIGHT, EPS0, SAMPLE = 0.5, 0.1, 5e-4, 1e-3, 0.0025
+SIDE, A, U_RIGHT, EPS0, SAMPLE = 0.5, 0.1, 5e-4, 1e-3, 0.005
 LAWS = ["oterkus_plane_strain", "correspondence_silling_plane_strain", "silling_plane_strain", "bond_based_constant_2d"]
 
 
@@ -115,6 +115,8 @@ def main():
     ap.add_argument("--ratios", nargs="+", type=float, default=[1, 2, 3, 4, 5])
     ap.add_argument("--spacing", type=float, default=0.01)
     ap.add_argument("--t-end", type=float, default=4e-4)
+    ap.add_argument("--check-rms", nargs=2, type=float, metavar=("UX", "UY"),
+                    help="exit 1 unless every point ran and its u_x and u_y RMS errors are below these")
     args = ap.parse_args()
     table = []
     for case in args.case:
@@ -136,6 +138,12 @@ def main():
         w = csv.DictWriter(fh, fieldnames=keys, extrasaction="ignore")
         w.writeheader()
         w.writerows(table)
+    if args.check_rms:
+        bad = [p for p in table if p["status"] != "ok" or p["ux_rms"] > args.check_rms[0] or p["uy_rms"] > args.check_rms[1]]
+        for p in bad:
+            print(f"FAIL: {p['case']} {p['law']} m={p['ratio']:g}: {p.get('status')} {p.get('ux_rms')} {p.get('uy_rms')}")
+        if bad:
+            raise SystemExit(1)
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@ as a function of the horizon delta / dx, per law, with the time each point took.
   /usr/bin/python3 studies/paper003_plate.py --pd build/bin/pd --fem DIR --out DIR
         [--case dynamic static] [--laws oterkus_plane_strain ...] [--ratios 1 2 3 4 5]
         [--spacing 0.01] [--t-end 1e-3] [--probe 0.255 0.255] [--check-rms UX UY]
-        [--boundary held|fictitious] [--k 1 2 4]
+        [--boundary held|fictitious] [--k 1 2 4] [--solver YAML]
 
 --fem DIR holds scripts/fem/plate_reference.py's plate_dynamic_fem.csv / plate_static_fem.csv
 (made with the same --probe). Every point writes its scene and its pd output under --out;
@@ -193,6 +193,8 @@ def dynamic_point(args, law, ratio, fem, k=None):
 def static_point(args, law, ratio, fem, k=None):
     directory = point_directory(args, "static", law, ratio, k)
     text = scene("static", law, ratio, args.spacing, 0, args.probe, directory, args.boundary, k)
+    if args.solver:
+        text += f"solver: {args.solver}\n"
     proc, seconds = run_pd(args.pd, text, directory)
     if proc.returncode != 0:
         return {"status": first_error(proc)}
@@ -288,6 +290,8 @@ def main():
                          "mirror layers 2 delta deep (method: fictitious_layer)")
     ap.add_argument("--k", nargs="+", type=float,
                     help="the non-uniform plate of Fig. 23 (sections 5.3-5.4) for each refinement k = dx2/dx1")
+    ap.add_argument("--solver", help="a static scene's solver map, e.g. '{linear: matrix_free, preconditioner_ratio: 1}' "
+                                     "(the k = 4 plate: the default path's factorisation does not fit in memory)")
     ap.add_argument("--check-rms", nargs=2, type=float, metavar=("UX", "UY"),
                     help="exit 1 unless every point ran and its u_x and u_y RMS errors are below these")
     args = ap.parse_args()

@@ -19,9 +19,9 @@ quarter; chosen here (docs/paper003.md says so again):
   paper's Figs. 37-39).
 
 Writes DIR/cutout_static_fem.csv and DIR/cutout_dynamic_fem.csv: rows `x,y,ux,uy` on the node
-lattice of spacing 0.0025 m inside the body (it contains the particle centres of the PD grids
-dx = 0.01, 0.005, 0.0025, so the study reads the reference at its particles without
-interpolation in space), the dynamic one at t = --t-end.
+lattice of spacing 0.005 m inside the body (it contains the particle centres of the PD grids
+dx = 0.01 and 0.02, so the study reads the reference at its particles without interpolation
+in space), the dynamic one at t = --t-end.
 
 Mesh: an n x n grid of quadrilaterals on the quarter with the elements inside the hole removed
 (n a multiple of 5 so that the hole's edges are element edges), Q2 by default. Time
@@ -48,7 +48,7 @@ from sfepy.terms import Term
 E, NU, RHO = 200e9, 0.25, 7850.0
 SIDE, A = 0.5, 0.1  # the quarter's side and the hole's half side
 U_RIGHT, EPS0 = 5e-4, 1e-3
-SAMPLE = 0.0025  # the output lattice
+SAMPLE = 0.005  # the output lattice
 
 
 def quarter_mesh(n):
@@ -118,7 +118,7 @@ def write(path, pts, vals):
     with open(path, "w") as fh:
         fh.write("x,y,ux,uy\n")
         for (x, y), (ux, uy) in zip(pts, vals):
-            fh.write(f"{x:.6f},{y:.6f},{ux:.12e},{uy:.12e}\n")
+            fh.write(f"{x:.6f},{y:.6f},{ux:.10e},{uy:.10e}\n")
 
 
 def solve_static(n, order, out):
