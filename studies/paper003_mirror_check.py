@@ -9,6 +9,7 @@ x = +0.5 (no FEM needed):
 
   /usr/bin/python3 studies/paper003_mirror_check.py --pd build/bin/pd --out DIR
         [--laws oterkus_plane_strain ...] [--ratios 4 5] [--spacing 0.02] [--probe 0.27 0.27]
+        [--clamps held mirrored] [--check-rms LIMIT]
 
 Each point runs twice, the clamp held (a collar at zero) and mirrored (eq. 29, `method:
 fictitious_layer`); the rollers are mirror layers 2 delta deep with fixed: [y] in both (u_y odd,
@@ -79,22 +80,27 @@ def main():
     ap.add_argument("--spacing", type=float, default=0.02)
     ap.add_argument("--probe", nargs=2, type=float, default=[0.27, 0.27])
     ap.add_argument("--t-end", type=float, default=1e-3)
+    ap.add_argument("--clamps", nargs="+", default=["held", "mirrored"], choices=["held", "mirrored"])
+    ap.add_argument("--check-rms", type=float, help="exit 1 unless every point ran with a u_x RMS error below this")
     a = ap.parse_args()
     rows = []
+    failed = []
     for law in a.laws:
         for ratio in a.ratios:
-            for clamp in ("held", "mirrored"):
+            for clamp in a.clamps:
                 directory = os.path.join(a.out, f"{law}_m{ratio:g}_{clamp}")
                 text = scene(law, ratio, a.spacing, a.probe, clamp, directory)
                 dt, proc = stable_step(a.pd, text, directory)
                 if dt is None:
                     print(law, ratio, clamp, first_error(proc))
+                    failed.append((law, ratio, clamp))
                     continue
                 steps = math.ceil(a.t_end / dt)
                 text = text.replace("STEPS", str(steps)).replace("EVERY", str(max(1, steps // 400)))
                 proc, seconds = run_pd(a.pd, text, directory)
                 if proc.returncode != 0:
                     print(law, ratio, clamp, first_error(proc))
+                    failed.append((law, ratio, clamp))
                     continue
                 r = list(csv.DictReader(open(os.path.join(directory, "energies.csv"))))
                 t = np.array([float(x["time"]) for x in r])
@@ -109,6 +115,12 @@ def main():
         fh.write("law,ratio,clamp,ux_rms,ux_peak,seconds\n")
         for row in rows:
             fh.write(",".join(str(v) for v in row) + "\n")
+    if a.check_rms is not None:
+        failed += [row[:3] for row in rows if not row[3] < a.check_rms]
+        for f in failed:
+            print(f"FAIL: {f} (limit {a.check_rms:g})")
+        if failed:
+            raise SystemExit(1)
 
 
 if __name__ == "__main__":
