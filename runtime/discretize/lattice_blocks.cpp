@@ -1,6 +1,8 @@
 // Non-uniform lattices and families with a horizon per particle (lattice_blocks.hpp).
 #include "discretize/lattice_blocks.hpp"
 
+#include "discretize/partial_volume.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -130,6 +132,39 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
       b.length.push_back(r);
       b.w.push_back(influence(r, delta[i]));
       b.alpha.push_back(1.0);
+    }
+    b.offsets[i + 1] = static_cast<int>(b.neighbor.size());
+  }
+  return b;
+}
+
+Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta, const std::vector<double>& spacing,
+                       Quadrature q, double (*influence)(double, double)) {
+  if (q == Quadrature::Volume) return find_bonds_per_particle(p, delta, influence);
+  if (q != Quadrature::PartialLinear)
+    throw std::invalid_argument("a body of blocks supports quadrature: volume or partial_linear");
+  if (spacing.size() != delta.size()) throw std::invalid_argument("find_block_bonds: one spacing per particle");
+  const int d = p.dim;
+  // Search out to delta_i + h_max / 2, the farthest a cell of any block can still reach in.
+  const double half = 0.5 * *std::max_element(spacing.begin(), spacing.end());
+  std::vector<double> reach(delta);
+  for (double& r : reach) r += half;
+  const Bonds all = find_bonds_per_particle(p, reach, influence);
+  Bonds b;
+  b.dim = d;
+  b.offsets.assign(all.offsets.size(), 0);
+  b.delta = delta;
+  for (int i = 0; i < all.particle_count(); ++i) {
+    for (int k = all.offsets[i]; k < all.offsets[i + 1]; ++k) {
+      const int j = all.neighbor[k];
+      const double f = linear_volume_factor(all.length[k], delta[i], spacing[j]);
+      if (f <= 0.0) continue;
+      b.neighbor.push_back(j);
+      for (int c = 0; c < d; ++c) b.xi.push_back(all.xi[static_cast<std::size_t>(k) * d + c]);
+      b.length.push_back(all.length[k]);
+      b.w.push_back(influence(std::min(all.length[k], delta[i]), delta[i]));
+      b.alpha.push_back(1.0);
+      b.volume_factor.push_back(f);
     }
     b.offsets[i + 1] = static_cast<int>(b.neighbor.size());
   }

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "discretize/quadrature.hpp"
 #include "input/region.hpp"  // Point
 #include "particles.hpp"
 
@@ -38,5 +39,15 @@ Particles lattice_blocks(const std::vector<LatticeBlock>& blocks, int dim, std::
 // neighbour counts with its whole volume (domain.quadrature: volume).
 Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& delta,
                               double (*influence)(double r, double delta));
+
+// The families of a body of blocks under a quadrature: `volume` is find_bonds_per_particle;
+// `partial_linear` (paper 003 eq. 17 = paper 002 eq. 2.16) weighs neighbour j of i by
+// (delta_i + h_j/2 - |xi|) / h_j clipped to [0, 1], h_j the spacing of j's own cell (the cell
+// whose share of i's horizon is measured), so a fine neighbour's cell is cut finer than a
+// coarse one's; as find_quadrature_bonds, w is taken at min(|xi|, delta_i) and bonds of factor 0
+// are left out. On one spacing it gives find_quadrature_bonds' families. Other quadratures
+// throw std::invalid_argument.
+Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta, const std::vector<double>& spacing,
+                       Quadrature q, double (*influence)(double r, double delta));
 
 }  // namespace pd

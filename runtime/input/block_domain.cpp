@@ -13,8 +13,10 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
   MapReader d(domain);
   for (const char* key : {"box", "count", "spacing", "placement", "perturbation", "holes", "inclusions", "particles"})
     if (d.has(key)) d.get(key).fail(std::string(key) + " does not apply to a body of blocks (give it per block)");
-  if (d.has("quadrature") && d.text("quadrature") != "volume")
-    d.get("quadrature").fail("a body of blocks supports quadrature: volume only (neighbours count whole)");
+  if (d.has("quadrature") && d.text("quadrature") != "volume" && d.text("quadrature") != "partial_linear")
+    d.get("quadrature").fail("a body of blocks supports quadrature: volume or partial_linear (paper 003 eq. 17)");
+  s.quadrature = d.has("quadrature") && d.text("quadrature") == "partial_linear" ? Quadrature::PartialLinear
+                                                                                  : Quadrature::Volume;
   const YamlAt list = d.get("blocks");
   require_list(list);
   if (list.node.size() == 0) list.fail("give at least one block");

@@ -46,7 +46,8 @@ Model build_model(const Scene& scene) {
   m.particles = discretize(scene);
   m.bonds = scene.particle_spacing.empty()
                 ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
-                : find_bonds_per_particle(m.particles, scene.particle_horizons(), m.influence->weight);  // domain.blocks
+                : find_block_bonds(m.particles, scene.particle_horizons(), scene.particle_spacing, scene.quadrature,
+                                   m.influence->weight);  // domain.blocks
   m.bond_count = m.bonds.bond_count() / 2;
   std::vector<int> crossed;
   m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
@@ -117,7 +118,17 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
 void attach_short_horizon(Model& model, const Scene& scene, double short_delta) {
   // The same law's stiffness on a horizon of ratio h: far fewer nonzeros, and spectrally
   // close on the smooth modes that make K ill-conditioned.
-  model.short_bonds = find_bonds(model.particles, short_delta, model.influence->weight);
+  // A body of blocks: each particle's own short horizon min(delta_i, ratio h_i) -- one
+  // short_delta from the largest spacing would give a fine particle more bonds than its real
+  // family, and a coarse one at the interface a degenerate family.
+  if (!scene.particle_spacing.empty()) {
+    std::vector<double> delta = scene.particle_horizons();
+    for (std::size_t i = 0; i < delta.size(); ++i)
+      delta[i] = std::min(delta[i], scene.solver.preconditioner_ratio * scene.particle_spacing[i]);
+    model.short_bonds = find_bonds_per_particle(model.particles, delta, model.influence->weight);
+  } else {
+    model.short_bonds = find_bonds(model.particles, short_delta, model.influence->weight);
+  }
   drop_negligible_bonds(model.short_bonds);
   const int cut = cut_bonds(scene.cracks, model.particles, model.short_bonds);
   AssemblerOptions options;

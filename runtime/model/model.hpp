@@ -76,7 +76,8 @@ Model build_model(const Scene& scene);
 AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads = 0);
 
 // The short-horizon approximation (bonds within short_delta, negligible ones dropped,
-// cut by the same cracks) for the matrix-free path's preconditioner.
+// cut by the same cracks) for the matrix-free path's preconditioner. On a body of blocks
+// each particle's own min(delta_i, preconditioner_ratio h_i) instead of short_delta.
 void attach_short_horizon(Model& model, const Scene& scene, double short_delta);
 
 // The scene's effects (model/model_effects.cpp), after attach_assembler (and
