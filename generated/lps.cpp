@@ -29,7 +29,7 @@ void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[0] = s_m;
 }
 
-// lps_plane_strain_damaged_residual: per bond 9 add, 24 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_damaged_residual: per bond 9 add, 27 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -48,10 +48,11 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -70,12 +71,13 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -86,7 +88,7 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_damaged_tangent: per bond 9 add, 46 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -105,10 +107,11 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -131,19 +134,21 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b8 = xi_0 * xi_0;
     const double b9 = xi_1 * xi_1;
     const double b10 = 1.0 / (b8 + b9);
     const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * alpha * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * alpha * w;
-    const double b14 = p6 * b10 * alpha * w;
+    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * sf * V * alpha * w;
+    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * sf * V * alpha * w;
+    const double b14 = p6 * b10 * sf * alpha * w;
     const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * V * alpha * w;
-    const double b17 = p7 * alpha * w;
+    const double b16 = p0 * sd * V * alpha * w;
+    const double b17 = p7 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
     lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
@@ -162,7 +167,7 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 6 add, 39 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -178,13 +183,14 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1;
+    lane0[lane] += p0 * dY_0 * sd * V * alpha * w * xi_0 + p0 * dY_1 * sd * V * alpha * w * xi_1;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -202,6 +208,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -209,9 +216,9 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * alpha * w;
-    const double b8 = p2 * dY_1 * b6 * alpha * w;
-    const double b9 = p3 * alpha * w;
+    const double b7 = p2 * dY_0 * b6 * sf * alpha * w;
+    const double b8 = p2 * dY_1 * b6 * sf * alpha * w;
+    const double b9 = p3 * sf * alpha * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -224,7 +231,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_damaged_energy: per bond 7 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -261,10 +268,11 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -272,7 +280,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_plane_strain_damaged_outputs: per bond 3 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_plane_strain_damaged_outputs: per bond 3 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -288,10 +296,11 @@ void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* output
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -408,7 +417,7 @@ void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments
   moments[0] = s_m;
 }
 
-// lps_plane_strain_intact_residual: per bond 9 add, 21 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_intact_residual: per bond 9 add, 24 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -427,9 +436,10 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -448,11 +458,12 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -463,7 +474,7 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_tangent: per bond 9 add, 34 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_intact_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -482,9 +493,10 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -507,18 +519,20 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b8 = xi_0 * xi_0;
     const double b9 = xi_1 * xi_1;
     const double b10 = 1.0 / (b8 + b9);
     const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * w;
-    const double b14 = p6 * b10 * w;
+    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * sf * V * w;
+    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * sf * V * w;
+    const double b14 = p6 * b10 * sf * w;
     const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * V * w;
-    const double b17 = p7 * w;
+    const double b16 = p0 * sd * V * w;
+    const double b17 = p7 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
     lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
@@ -537,7 +551,7 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_jvp: per bond 6 add, 29 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -553,12 +567,13 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1;
+    lane0[lane] += p0 * dY_0 * sd * V * w * xi_0 + p0 * dY_1 * sd * V * w * xi_1;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -576,15 +591,16 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * w;
-    const double b8 = p2 * dY_1 * b6 * w;
-    const double b9 = p3 * w;
+    const double b7 = p2 * dY_0 * b6 * sf * w;
+    const double b8 = p2 * dY_1 * b6 * sf * w;
+    const double b9 = p3 * sf * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -597,7 +613,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_energy: per bond 7 add, 13 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_intact_energy: per bond 7 add, 14 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -633,9 +649,10 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -643,7 +660,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_plane_strain_intact_outputs: per bond 3 add, 5 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_plane_strain_intact_outputs: per bond 3 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -659,9 +676,10 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -770,26 +788,27 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
   d.damaged.residual = &lps_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {9, 24, 1, 0};
+  d.damaged.residual_ops = {9, 27, 1, 0};
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {9, 40, 1, 0};
+  d.damaged.tangent_ops = {9, 46, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {6, 34, 1, 0};
+  d.damaged.jvp_ops = {6, 39, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.damaged.form = &lps_plane_strain_damaged_form;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
-  d.intact.residual_ops = {9, 21, 1, 0};
+  d.intact.residual_ops = {9, 24, 1, 0};
   d.intact.tangent = &lps_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {9, 34, 1, 0};
+  d.intact.tangent_ops = {9, 40, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {6, 29, 1, 0};
+  d.intact.jvp_ops = {6, 34, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   d.intact.form = &lps_plane_strain_intact_form;
@@ -819,7 +838,7 @@ void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_damaged_residual: per bond 15 add, 33 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_damaged_residual: per bond 15 add, 37 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -840,10 +859,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -865,13 +885,14 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * alpha * w;
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
+    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -885,7 +906,7 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_damaged_tangent: per bond 15 add, 62 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -906,10 +927,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -935,24 +957,26 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b8 = xi_0 * xi_0;
     const double b9 = xi_1 * xi_1;
     const double b10 = xi_2 * xi_2;
     const double b11 = 1.0 / (b8 + b9 + b10);
     const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * alpha * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * alpha * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * alpha * w;
-    const double b16 = p6 * b11 * alpha * w;
+    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * sf * V * alpha * w;
+    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * sf * V * alpha * w;
+    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * sf * V * alpha * w;
+    const double b16 = p6 * b11 * sf * alpha * w;
     const double b17 = b16 * xi_1 * xi_0;
     const double b18 = b16 * xi_2;
     const double b19 = b18 * xi_0;
     const double b20 = b18 * xi_1;
-    const double b21 = p0 * V * alpha * w;
-    const double b22 = p7 * alpha * w;
+    const double b21 = p0 * sd * V * alpha * w;
+    const double b22 = p7 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
     lane1[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
@@ -981,7 +1005,7 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_damaged_jvp: per bond 13 add, 62 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -997,6 +1021,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1005,7 +1030,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1 + p0 * dY_2 * V * alpha * w * xi_2;
+    lane0[lane] += p0 * dY_0 * sd * V * alpha * w * xi_0 + p0 * dY_1 * sd * V * alpha * w * xi_1 + p0 * dY_2 * sd * V * alpha * w * xi_2;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1025,6 +1050,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -1034,11 +1060,11 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * alpha * w;
-    const double b9 = p2 * dY_1 * b7 * alpha * w;
-    const double b10 = p2 * dY_2 * b7 * alpha * w;
+    const double b8 = p2 * dY_0 * b7 * sf * alpha * w;
+    const double b9 = p2 * dY_1 * b7 * sf * alpha * w;
+    const double b10 = p2 * dY_2 * b7 * sf * alpha * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * alpha * w;
+    const double b12 = p3 * sf * alpha * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1055,7 +1081,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_damaged_energy: per bond 12 add, 19 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1096,10 +1122,11 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1107,7 +1134,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_3d_damaged_outputs: per bond 5 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_3d_damaged_outputs: per bond 5 add, 8 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1125,10 +1152,11 @@ void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1314,7 +1342,7 @@ void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_intact_residual: per bond 15 add, 29 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_intact_residual: per bond 15 add, 33 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1335,9 +1363,10 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1359,12 +1388,13 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * w;
+    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * w;
+    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -1378,7 +1408,7 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_tangent: per bond 15 add, 48 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_intact_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1399,9 +1429,10 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1427,23 +1458,25 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b8 = xi_0 * xi_0;
     const double b9 = xi_1 * xi_1;
     const double b10 = xi_2 * xi_2;
     const double b11 = 1.0 / (b8 + b9 + b10);
     const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * w;
-    const double b16 = p6 * b11 * w;
+    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * sf * V * w;
+    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * sf * V * w;
+    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * sf * V * w;
+    const double b16 = p6 * b11 * sf * w;
     const double b17 = b16 * xi_1 * xi_0;
     const double b18 = b16 * xi_2;
     const double b19 = b18 * xi_0;
     const double b20 = b18 * xi_1;
-    const double b21 = p0 * V * w;
-    const double b22 = p7 * w;
+    const double b21 = p0 * sd * V * w;
+    const double b22 = p7 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
     lane1[lane] += b13;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
@@ -1472,7 +1505,7 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_jvp: per bond 13 add, 48 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_intact_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1488,6 +1521,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1495,7 +1529,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1 + p0 * dY_2 * V * w * xi_2;
+    lane0[lane] += p0 * dY_0 * sd * V * w * xi_0 + p0 * dY_1 * sd * V * w * xi_1 + p0 * dY_2 * sd * V * w * xi_2;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1515,6 +1549,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -1523,11 +1558,11 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * w;
-    const double b9 = p2 * dY_1 * b7 * w;
-    const double b10 = p2 * dY_2 * b7 * w;
+    const double b8 = p2 * dY_0 * b7 * sf * w;
+    const double b9 = p2 * dY_1 * b7 * sf * w;
+    const double b10 = p2 * dY_2 * b7 * sf * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * w;
+    const double b12 = p3 * sf * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1544,7 +1579,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_energy: per bond 12 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_intact_energy: per bond 12 add, 17 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1584,9 +1619,10 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1594,7 +1630,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_3d_intact_outputs: per bond 5 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_3d_intact_outputs: per bond 5 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1612,9 +1648,10 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1791,26 +1828,27 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
   d.damaged.residual = &lps_3d_damaged_residual;
-  d.damaged.residual_ops = {15, 33, 1, 0};
+  d.damaged.residual_ops = {15, 37, 1, 0};
   d.damaged.tangent = &lps_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 55, 1, 0};
+  d.damaged.tangent_ops = {15, 62, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {13, 55, 1, 0};
+  d.damaged.jvp_ops = {13, 62, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.damaged.form = &lps_3d_damaged_form;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
-  d.intact.residual_ops = {15, 29, 1, 0};
+  d.intact.residual_ops = {15, 33, 1, 0};
   d.intact.tangent = &lps_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 48, 1, 0};
+  d.intact.tangent_ops = {15, 55, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {13, 48, 1, 0};
+  d.intact.jvp_ops = {13, 55, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   d.intact.form = &lps_3d_intact_form;
@@ -1874,7 +1912,7 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 32 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 35 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1913,10 +1951,11 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1935,12 +1974,13 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
+    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * alpha * w;
+    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -1951,7 +1991,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 61 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1990,10 +2030,11 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2016,18 +2057,20 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b24 = p11 * xi_0 + p14 * xi_1;
     const double b25 = xi_0 * xi_0;
     const double b26 = xi_1 * xi_1;
     const double b27 = 1.0 / (b25 + b26);
     const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * alpha * w;
+    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * sf * V * alpha * w;
     const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * alpha * w;
-    const double b32 = p22 * b27 * alpha * w;
+    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * sf * V * alpha * w;
+    const double b32 = p22 * b27 * sf * alpha * w;
     const double b33 = b32 * xi_1 * xi_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
     lane1[lane] += b29;
@@ -2037,17 +2080,17 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     factors.direct[k * 4 + 1] = b33;
     factors.direct[k * 4 + 2] = b33;
     factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 50 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2085,11 +2128,12 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * sd * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * sd * V * alpha * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2107,6 +2151,7 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -2114,10 +2159,10 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * alpha * w;
-    const double b24 = p18 * dY_1 * b22 * alpha * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
+    const double b23 = p18 * dY_0 * b22 * sf * alpha * w;
+    const double b24 = p18 * dY_1 * b22 * sf * alpha * w;
+    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * sf * alpha * w) * V;
+    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * sf * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b25;
     lane1[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
@@ -2128,7 +2173,7 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 20 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2185,10 +2230,11 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -2196,7 +2242,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 10 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 11 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
 void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2232,10 +2278,11 @@ void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2386,7 +2433,7 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_intact_residual: per bond 13 add, 29 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_residual: per bond 13 add, 32 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2425,9 +2472,10 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2446,11 +2494,12 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
+    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * w;
+    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -2461,7 +2510,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 45 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2500,9 +2549,10 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2525,17 +2575,19 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b24 = p11 * xi_0 + p14 * xi_1;
     const double b25 = xi_0 * xi_0;
     const double b26 = xi_1 * xi_1;
     const double b27 = 1.0 / (b25 + b26);
     const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * w;
+    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * sf * V * w;
     const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * w;
-    const double b32 = p22 * b27 * w;
+    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * sf * V * w;
+    const double b32 = p22 * b27 * sf * w;
     const double b33 = b32 * xi_1 * xi_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
     lane1[lane] += b29;
@@ -2545,17 +2597,17 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     factors.direct[k * 4 + 1] = b33;
     factors.direct[k * 4 + 2] = b33;
     factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * w;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * sd * V * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * sd * V * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * sf * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 38 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2593,10 +2645,11 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * sd * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * sd * V * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2614,16 +2667,17 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * w;
-    const double b24 = p18 * dY_1 * b22 * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * w) * V;
+    const double b23 = p18 * dY_0 * b22 * sf * w;
+    const double b24 = p18 * dY_1 * b22 * sf * w;
+    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * sf * w) * V;
+    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * sf * w) * V;
     df[(k + 1) * 2 + 0] = -b25;
     lane1[lane] += b25;
     df[(k + 1) * 2 + 1] = -b26;
@@ -2634,7 +2688,7 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_energy: per bond 9 add, 17 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_energy: per bond 9 add, 18 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2690,9 +2744,10 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -2700,7 +2755,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 9 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 10 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
 void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2736,9 +2791,10 @@ void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2847,26 +2903,27 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
   d.damaged.residual = &lps_corrected_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {13, 32, 1, 0};
+  d.damaged.residual_ops = {13, 35, 1, 0};
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {13, 53, 1, 0};
+  d.damaged.tangent_ops = {13, 61, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {10, 44, 1, 0};
+  d.damaged.jvp_ops = {10, 50, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
-  d.intact.residual_ops = {13, 29, 1, 0};
+  d.intact.residual_ops = {13, 32, 1, 0};
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {13, 45, 1, 0};
+  d.intact.tangent_ops = {13, 53, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {10, 38, 1, 0};
+  d.intact.jvp_ops = {10, 44, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_corrected_plane_strain_intact_form;
@@ -2960,7 +3017,7 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_damaged_residual: per bond 27 add, 51 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_residual: per bond 27 add, 55 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3027,10 +3084,11 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3052,13 +3110,14 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * alpha * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
+    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * alpha * w;
+    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * alpha * w;
+    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3072,7 +3131,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_tangent: per bond 27 add, 94 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3139,10 +3198,11 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3168,21 +3228,23 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
     const double b46 = xi_0 * xi_0;
     const double b47 = xi_1 * xi_1;
     const double b48 = xi_2 * xi_2;
     const double b49 = 1.0 / (b46 + b47 + b48);
     const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * alpha * w;
+    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * sf * V * alpha * w;
     const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * alpha * w;
+    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * sf * V * alpha * w;
     const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * alpha * w;
-    const double b56 = p43 * b49 * alpha * w;
+    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * sf * V * alpha * w;
+    const double b56 = p43 * b49 * sf * alpha * w;
     const double b57 = b56 * xi_1 * xi_0;
     const double b58 = b56 * xi_2;
     const double b59 = b58 * xi_0;
@@ -3202,12 +3264,12 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     factors.direct[k * 9 + 6] = b59;
     factors.direct[k * 9 + 7] = b60;
     factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3215,7 +3277,7 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_jvp: per bond 25 add, 86 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3280,12 +3342,13 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sd * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sd * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sd * V * alpha * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3305,6 +3368,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -3314,13 +3378,13 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * alpha * w;
-    const double b46 = p39 * dY_1 * b44 * alpha * w;
-    const double b47 = p39 * dY_2 * b44 * alpha * w;
+    const double b45 = p39 * dY_0 * b44 * sf * alpha * w;
+    const double b46 = p39 * dY_1 * b44 * sf * alpha * w;
+    const double b47 = p39 * dY_2 * b44 * sf * alpha * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * alpha * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
+    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * alpha * w) * V;
+    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * alpha * w) * V;
+    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b49;
     lane1[lane] += b49;
     df[(k + 1) * 3 + 1] = -b50;
@@ -3334,7 +3398,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_energy: per bond 18 add, 28 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
 double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3421,10 +3485,11 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3432,7 +3497,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_3d_damaged_outputs: per bond 11 add, 16 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+// lps_corrected_3d_damaged_outputs: per bond 11 add, 17 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
 void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3496,10 +3561,11 @@ void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* output
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3748,7 +3814,7 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_intact_residual: per bond 27 add, 47 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_intact_residual: per bond 27 add, 51 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3815,9 +3881,10 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3839,12 +3906,13 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
+    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * w;
+    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * w;
+    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3858,7 +3926,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_tangent: per bond 27 add, 72 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_intact_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
 void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3925,9 +3993,10 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3953,20 +4022,22 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
     const double b46 = xi_0 * xi_0;
     const double b47 = xi_1 * xi_1;
     const double b48 = xi_2 * xi_2;
     const double b49 = 1.0 / (b46 + b47 + b48);
     const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * w;
+    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * sf * V * w;
     const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * w;
+    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * sf * V * w;
     const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * w;
-    const double b56 = p43 * b49 * w;
+    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * sf * V * w;
+    const double b56 = p43 * b49 * sf * w;
     const double b57 = b56 * xi_1 * xi_0;
     const double b58 = b56 * xi_2;
     const double b59 = b58 * xi_0;
@@ -3986,12 +4057,12 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     factors.direct[k * 9 + 6] = b59;
     factors.direct[k * 9 + 7] = b60;
     factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * w;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * sd * V * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3999,7 +4070,7 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_jvp: per bond 25 add, 68 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_intact_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4064,11 +4135,12 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sd * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sd * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sd * V * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4088,6 +4160,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -4096,13 +4169,13 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * w;
-    const double b46 = p39 * dY_1 * b44 * w;
-    const double b47 = p39 * dY_2 * b44 * w;
+    const double b45 = p39 * dY_0 * b44 * sf * w;
+    const double b46 = p39 * dY_1 * b44 * sf * w;
+    const double b47 = p39 * dY_2 * b44 * sf * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
+    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * w) * V;
+    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * w) * V;
+    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * w) * V;
     df[(k + 1) * 3 + 0] = -b49;
     lane1[lane] += b49;
     df[(k + 1) * 3 + 1] = -b50;
@@ -4116,7 +4189,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_energy: per bond 18 add, 25 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_intact_energy: per bond 18 add, 26 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4202,9 +4275,10 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4212,7 +4286,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_3d_intact_outputs: per bond 11 add, 15 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+// lps_corrected_3d_intact_outputs: per bond 11 add, 16 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
 void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4276,9 +4350,10 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4455,26 +4530,27 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;
   d.damaged.residual = &lps_corrected_3d_damaged_residual;
-  d.damaged.residual_ops = {27, 51, 1, 0};
+  d.damaged.residual_ops = {27, 55, 1, 0};
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
-  d.damaged.tangent_ops = {27, 83, 1, 0};
+  d.damaged.tangent_ops = {27, 94, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {25, 77, 1, 0};
+  d.damaged.jvp_ops = {25, 86, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_corrected_3d_damaged_form;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
-  d.intact.residual_ops = {27, 47, 1, 0};
+  d.intact.residual_ops = {27, 51, 1, 0};
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
-  d.intact.tangent_ops = {27, 72, 1, 0};
+  d.intact.tangent_ops = {27, 83, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {25, 68, 1, 0};
+  d.intact.jvp_ops = {25, 77, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;
