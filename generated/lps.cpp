@@ -29,13 +29,11 @@ void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[0] = s_m;
 }
 
-// lps_plane_strain_damaged_residual: per bond 9 add, 27 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_damaged_residual: per bond 10 add, 29 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -58,8 +56,7 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 8.0 * P_mu;
+  const double p2 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -67,6 +64,8 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -75,9 +74,10 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -88,13 +88,11 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_tangent: per bond 9 add, 46 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_damaged_tangent: per bond 10 add, 50 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -118,11 +116,8 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 2.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_mu;
-  const double p6 = 8.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 2.0 * s_theta;
+  const double p4 = 8.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -130,6 +125,8 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -139,41 +136,41 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = 1.0 / (b8 + b9);
-    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * sf * V * alpha * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * sf * V * alpha * w;
-    const double b14 = p6 * b10 * sf * alpha * w;
-    const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * sd * V * alpha * w;
-    const double b17 = p7 * sf * alpha * w;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    lane1[lane] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    lane2[lane] += b13;
-    factors.direct[k * 4 + 0] = b14 * b8;
-    factors.direct[k * 4 + 1] = b15;
-    factors.direct[k * 4 + 2] = b15;
-    factors.direct[k * 4 + 3] = b14 * b9;
-    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = 1.0 / (b7 + b8);
+    const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * sf * V * alpha * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * sf * V * alpha * w;
+    const double b13 = p4 * Q_mu * b9 * sf * alpha * w;
+    const double b14 = b13 * xi_1 * xi_0;
+    const double b15 = p0 * sd * V * alpha * w;
+    const double b16 = p0 * b5 * sf * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
+    lane1[lane] += b11;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
+    lane2[lane] += b12;
+    factors.direct[k * 4 + 0] = b13 * b7;
+    factors.direct[k * 4 + 1] = b14;
+    factors.direct[k * 4 + 2] = b14;
+    factors.direct[k * 4 + 3] = b13 * b8;
+    factors.right[(k * 1 + 0) * 2 + 0] = b15 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b15 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_jvp: per bond 6 add, 39 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 7 add, 42 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -196,8 +193,8 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 8.0 * p1 * P_mu;
-  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 8.0 * p1;
+  const double p3 = 2.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -206,19 +203,21 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * sf * alpha * w;
-    const double b8 = p2 * dY_1 * b6 * sf * alpha * w;
-    const double b9 = p3 * sf * alpha * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * sf * alpha * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * sf * alpha * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * sf * alpha * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -231,7 +230,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_energy: per bond 7 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_damaged_energy: per bond 7 add, 17 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -244,6 +243,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -252,7 +252,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -276,7 +276,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -417,13 +417,11 @@ void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments
   moments[0] = s_m;
 }
 
-// lps_plane_strain_intact_residual: per bond 9 add, 24 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_intact_residual: per bond 10 add, 26 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -445,8 +443,7 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 8.0 * P_mu;
+  const double p2 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -454,6 +451,8 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -461,9 +460,10 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -474,13 +474,11 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_intact_tangent: per bond 10 add, 44 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -503,11 +501,8 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 2.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_mu;
-  const double p6 = 8.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 2.0 * s_theta;
+  const double p4 = 8.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -515,6 +510,8 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -523,41 +520,41 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = 1.0 / (b8 + b9);
-    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * sf * V * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * sf * V * w;
-    const double b14 = p6 * b10 * sf * w;
-    const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * sd * V * w;
-    const double b17 = p7 * sf * w;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    lane1[lane] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    lane2[lane] += b13;
-    factors.direct[k * 4 + 0] = b14 * b8;
-    factors.direct[k * 4 + 1] = b15;
-    factors.direct[k * 4 + 2] = b15;
-    factors.direct[k * 4 + 3] = b14 * b9;
-    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = 1.0 / (b7 + b8);
+    const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * sf * V * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * sf * V * w;
+    const double b13 = p4 * Q_mu * b9 * sf * w;
+    const double b14 = b13 * xi_1 * xi_0;
+    const double b15 = p0 * sd * V * w;
+    const double b16 = p0 * b5 * sf * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
+    lane1[lane] += b11;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
+    lane2[lane] += b12;
+    factors.direct[k * 4 + 0] = b13 * b7;
+    factors.direct[k * 4 + 1] = b14;
+    factors.direct[k * 4 + 2] = b14;
+    factors.direct[k * 4 + 3] = b13 * b8;
+    factors.right[(k * 1 + 0) * 2 + 0] = b15 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b15 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 7 add, 37 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -579,8 +576,8 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 8.0 * p1 * P_mu;
-  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 8.0 * p1;
+  const double p3 = 2.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -589,18 +586,20 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * sf * w;
-    const double b8 = p2 * dY_1 * b6 * sf * w;
-    const double b9 = p3 * sf * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * sf * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * sf * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * sf * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -613,7 +612,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_energy: per bond 7 add, 14 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_intact_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -626,6 +625,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -633,7 +633,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -656,7 +656,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -789,26 +789,27 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
   d.damaged.residual = &lps_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {9, 27, 1, 0};
+  d.damaged.residual_ops = {10, 29, 1, 0};
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {9, 46, 1, 0};
+  d.damaged.tangent_ops = {10, 50, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {6, 39, 1, 0};
+  d.damaged.jvp_ops = {7, 42, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.damaged.form = &lps_plane_strain_damaged_form;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
-  d.intact.residual_ops = {9, 24, 1, 0};
+  d.intact.residual_ops = {10, 26, 1, 0};
   d.intact.tangent = &lps_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {9, 40, 1, 0};
+  d.intact.tangent_ops = {10, 44, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {6, 34, 1, 0};
+  d.intact.jvp_ops = {7, 37, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   d.intact.form = &lps_plane_strain_intact_form;
@@ -838,13 +839,11 @@ void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_damaged_residual: per bond 15 add, 37 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_damaged_residual: per bond 16 add, 39 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -869,8 +868,7 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 15.0 * P_mu;
+  const double p2 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -879,6 +877,8 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -889,10 +889,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * sf * V * alpha * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -906,13 +907,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_tangent: per bond 15 add, 62 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_damaged_tangent: per bond 16 add, 66 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -938,11 +937,8 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 3.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 15.0 * P_mu;
-  const double p6 = 15.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 3.0 * s_theta;
+  const double p4 = 15.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -951,6 +947,8 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -962,42 +960,44 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = xi_2 * xi_2;
-    const double b11 = 1.0 / (b8 + b9 + b10);
-    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * sf * V * alpha * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * sf * V * alpha * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * sf * V * alpha * w;
-    const double b16 = p6 * b11 * sf * alpha * w;
-    const double b17 = b16 * xi_1 * xi_0;
-    const double b18 = b16 * xi_2;
-    const double b19 = b18 * xi_0;
-    const double b20 = b18 * xi_1;
-    const double b21 = p0 * sd * V * alpha * w;
-    const double b22 = p7 * sf * alpha * w;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    lane1[lane] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    lane2[lane] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    lane3[lane] += b15;
-    factors.direct[k * 9 + 0] = b16 * b8;
-    factors.direct[k * 9 + 1] = b17;
-    factors.direct[k * 9 + 2] = b19;
-    factors.direct[k * 9 + 3] = b17;
-    factors.direct[k * 9 + 4] = b16 * b9;
-    factors.direct[k * 9 + 5] = b20;
-    factors.direct[k * 9 + 6] = b19;
-    factors.direct[k * 9 + 7] = b20;
-    factors.direct[k * 9 + 8] = b16 * b10;
-    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = xi_2 * xi_2;
+    const double b10 = 1.0 / (b7 + b8 + b9);
+    const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * sf * V * alpha * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * sf * V * alpha * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * sf * V * alpha * w;
+    const double b15 = p4 * Q_mu * b10 * sf * alpha * w;
+    const double b16 = b15 * xi_1 * xi_0;
+    const double b17 = b15 * xi_2;
+    const double b18 = b17 * xi_0;
+    const double b19 = b17 * xi_1;
+    const double b20 = p0 * sd * V * alpha * w;
+    const double b21 = p0 * b5 * sf * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    factors.direct[k * 9 + 0] = b15 * b7;
+    factors.direct[k * 9 + 1] = b16;
+    factors.direct[k * 9 + 2] = b18;
+    factors.direct[k * 9 + 3] = b16;
+    factors.direct[k * 9 + 4] = b15 * b8;
+    factors.direct[k * 9 + 5] = b19;
+    factors.direct[k * 9 + 6] = b18;
+    factors.direct[k * 9 + 7] = b19;
+    factors.direct[k * 9 + 8] = b15 * b9;
+    factors.right[(k * 1 + 0) * 3 + 0] = b20 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b20 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b20 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1005,13 +1005,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_jvp: per bond 13 add, 62 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_damaged_jvp: per bond 14 add, 66 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1036,8 +1034,8 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 15.0 * p1 * P_mu;
-  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 15.0 * p1;
+  const double p3 = 3.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1047,6 +1045,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1055,16 +1054,17 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * sf * alpha * w;
-    const double b9 = p2 * dY_1 * b7 * sf * alpha * w;
-    const double b10 = p2 * dY_2 * b7 * sf * alpha * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * sf * alpha * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * sf * alpha * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * sf * alpha * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * sf * alpha * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * sf * alpha * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1081,7 +1081,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_energy: per bond 12 add, 19 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_damaged_energy: per bond 12 add, 20 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1094,6 +1094,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1104,7 +1105,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1130,7 +1131,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -1342,13 +1343,11 @@ void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_intact_residual: per bond 15 add, 33 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_intact_residual: per bond 16 add, 35 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1372,8 +1371,7 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 15.0 * P_mu;
+  const double p2 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1382,6 +1380,8 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1391,10 +1391,11 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * sf * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * sf * V * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * sf * V * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -1408,13 +1409,11 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_intact_tangent: per bond 16 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1439,11 +1438,8 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 3.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 15.0 * P_mu;
-  const double p6 = 15.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 3.0 * s_theta;
+  const double p4 = 15.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1452,6 +1448,8 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1462,42 +1460,44 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = xi_2 * xi_2;
-    const double b11 = 1.0 / (b8 + b9 + b10);
-    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * sf * V * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * sf * V * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * sf * V * w;
-    const double b16 = p6 * b11 * sf * w;
-    const double b17 = b16 * xi_1 * xi_0;
-    const double b18 = b16 * xi_2;
-    const double b19 = b18 * xi_0;
-    const double b20 = b18 * xi_1;
-    const double b21 = p0 * sd * V * w;
-    const double b22 = p7 * sf * w;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    lane1[lane] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    lane2[lane] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    lane3[lane] += b15;
-    factors.direct[k * 9 + 0] = b16 * b8;
-    factors.direct[k * 9 + 1] = b17;
-    factors.direct[k * 9 + 2] = b19;
-    factors.direct[k * 9 + 3] = b17;
-    factors.direct[k * 9 + 4] = b16 * b9;
-    factors.direct[k * 9 + 5] = b20;
-    factors.direct[k * 9 + 6] = b19;
-    factors.direct[k * 9 + 7] = b20;
-    factors.direct[k * 9 + 8] = b16 * b10;
-    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = xi_2 * xi_2;
+    const double b10 = 1.0 / (b7 + b8 + b9);
+    const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * sf * V * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * sf * V * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * sf * V * w;
+    const double b15 = p4 * Q_mu * b10 * sf * w;
+    const double b16 = b15 * xi_1 * xi_0;
+    const double b17 = b15 * xi_2;
+    const double b18 = b17 * xi_0;
+    const double b19 = b17 * xi_1;
+    const double b20 = p0 * sd * V * w;
+    const double b21 = p0 * b5 * sf * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    factors.direct[k * 9 + 0] = b15 * b7;
+    factors.direct[k * 9 + 1] = b16;
+    factors.direct[k * 9 + 2] = b18;
+    factors.direct[k * 9 + 3] = b16;
+    factors.direct[k * 9 + 4] = b15 * b8;
+    factors.direct[k * 9 + 5] = b19;
+    factors.direct[k * 9 + 6] = b18;
+    factors.direct[k * 9 + 7] = b19;
+    factors.direct[k * 9 + 8] = b15 * b9;
+    factors.right[(k * 1 + 0) * 3 + 0] = b20 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b20 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b20 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1505,13 +1505,11 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_intact_jvp: per bond 14 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1535,8 +1533,8 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 15.0 * p1 * P_mu;
-  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 15.0 * p1;
+  const double p3 = 3.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1546,6 +1544,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1553,16 +1552,17 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * sf * w;
-    const double b9 = p2 * dY_1 * b7 * sf * w;
-    const double b10 = p2 * dY_2 * b7 * sf * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * sf * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * sf * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * sf * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * sf * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * sf * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1579,7 +1579,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_energy: per bond 12 add, 17 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_intact_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1592,6 +1592,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1601,7 +1602,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1626,7 +1627,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -1829,26 +1830,27 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
   d.damaged.residual = &lps_3d_damaged_residual;
-  d.damaged.residual_ops = {15, 37, 1, 0};
+  d.damaged.residual_ops = {16, 39, 1, 0};
   d.damaged.tangent = &lps_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 62, 1, 0};
+  d.damaged.tangent_ops = {16, 66, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {13, 62, 1, 0};
+  d.damaged.jvp_ops = {14, 66, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.damaged.form = &lps_3d_damaged_form;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
-  d.intact.residual_ops = {15, 33, 1, 0};
+  d.intact.residual_ops = {16, 35, 1, 0};
   d.intact.tangent = &lps_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 55, 1, 0};
+  d.intact.tangent_ops = {16, 59, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {13, 55, 1, 0};
+  d.intact.jvp_ops = {14, 59, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   d.intact.form = &lps_3d_intact_form;
@@ -1912,7 +1914,7 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 35 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_residual: per bond 14 add, 37 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1921,8 +1923,6 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -1961,8 +1961,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
-  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p19 = 8.0 * P_mu;
+  const double p18 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -1970,6 +1969,8 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1978,9 +1979,10 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * alpha * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * alpha * w;
+    const double b19 = p18 * (Q_lambda - Q_mu);
+    const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * alpha * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -1991,7 +1993,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 61 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_tangent: per bond 14 add, 65 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2000,8 +2002,6 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2041,11 +2041,8 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
-  const double p19 = 2.0 * (P_lambda - P_mu);
-  const double p20 = p19 * s_theta;
-  const double p21 = 8.0 * P_mu;
-  const double p22 = 8.0 * p17 * P_mu;
-  const double p23 = p19 * p17;
+  const double p19 = 2.0 * s_theta;
+  const double p20 = 8.0 * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2053,6 +2050,8 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2062,35 +2061,38 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b24 = p11 * xi_0 + p14 * xi_1;
-    const double b25 = xi_0 * xi_0;
-    const double b26 = xi_1 * xi_1;
-    const double b27 = 1.0 / (b25 + b26);
-    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * sf * V * alpha * w;
-    const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * sf * V * alpha * w;
-    const double b32 = p22 * b27 * sf * alpha * w;
-    const double b33 = b32 * xi_1 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    lane1[lane] += b29;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    lane2[lane] += b31;
-    factors.direct[k * 4 + 0] = b32 * b25;
-    factors.direct[k * 4 + 1] = b33;
-    factors.direct[k * 4 + 2] = b33;
-    factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * sd * V * alpha * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * sd * V * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * sf * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * sf * alpha * w;
+    const double b21 = Q_lambda - Q_mu;
+    const double b22 = p19 * b21;
+    const double b23 = p11 * xi_0 + p14 * xi_1;
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / (b24 + b25);
+    const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * sf * V * alpha * w;
+    const double b29 = p15 * xi_0 + p16 * xi_1;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * sf * V * alpha * w;
+    const double b31 = p20 * Q_mu * b26 * sf * alpha * w;
+    const double b32 = b31 * xi_1 * xi_0;
+    const double b33 = p0 * b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b30;
+    lane2[lane] += b30;
+    factors.direct[k * 4 + 0] = b31 * b24;
+    factors.direct[k * 4 + 1] = b32;
+    factors.direct[k * 4 + 2] = b32;
+    factors.direct[k * 4 + 3] = b31 * b25;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 50 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 11 add, 53 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2099,8 +2101,6 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2139,8 +2139,8 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
-  const double p18 = 8.0 * p17 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
+  const double p18 = 8.0 * p17;
+  const double p19 = 2.0 * ds_theta * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2149,31 +2149,34 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * sf * alpha * w;
-    const double b24 = p18 * dY_1 * b22 * sf * alpha * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * sf * alpha * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * sf * alpha * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    lane1[lane] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    lane2[lane] += b26;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * sf * alpha * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * sf * alpha * w;
+    const double b25 = p19 * (Q_lambda - Q_mu);
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * sf * alpha * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * sf * alpha * w) * V;
+    df[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    df[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 20 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 21 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2190,6 +2193,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -2198,7 +2202,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2238,7 +2242,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -2433,7 +2437,7 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_intact_residual: per bond 13 add, 32 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_residual: per bond 14 add, 34 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2442,8 +2446,6 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2481,8 +2483,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
-  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p19 = 8.0 * P_mu;
+  const double p18 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2490,6 +2491,8 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2497,9 +2500,10 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * w;
+    const double b19 = p18 * (Q_lambda - Q_mu);
+    const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -2510,7 +2514,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_tangent: per bond 14 add, 57 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2519,8 +2523,6 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2559,11 +2561,8 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
-  const double p19 = 2.0 * (P_lambda - P_mu);
-  const double p20 = p19 * s_theta;
-  const double p21 = 8.0 * P_mu;
-  const double p22 = 8.0 * p17 * P_mu;
-  const double p23 = p19 * p17;
+  const double p19 = 2.0 * s_theta;
+  const double p20 = 8.0 * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2571,6 +2570,8 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2579,35 +2580,38 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b24 = p11 * xi_0 + p14 * xi_1;
-    const double b25 = xi_0 * xi_0;
-    const double b26 = xi_1 * xi_1;
-    const double b27 = 1.0 / (b25 + b26);
-    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * sf * V * w;
-    const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * sf * V * w;
-    const double b32 = p22 * b27 * sf * w;
-    const double b33 = b32 * xi_1 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    lane1[lane] += b29;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    lane2[lane] += b31;
-    factors.direct[k * 4 + 0] = b32 * b25;
-    factors.direct[k * 4 + 1] = b33;
-    factors.direct[k * 4 + 2] = b33;
-    factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * sd * V * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * sd * V * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * sf * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * sf * w;
+    const double b21 = Q_lambda - Q_mu;
+    const double b22 = p19 * b21;
+    const double b23 = p11 * xi_0 + p14 * xi_1;
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / (b24 + b25);
+    const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * sf * V * w;
+    const double b29 = p15 * xi_0 + p16 * xi_1;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * sf * V * w;
+    const double b31 = p20 * Q_mu * b26 * sf * w;
+    const double b32 = b31 * xi_1 * xi_0;
+    const double b33 = p0 * b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b30;
+    lane2[lane] += b30;
+    factors.direct[k * 4 + 0] = b31 * b24;
+    factors.direct[k * 4 + 1] = b32;
+    factors.direct[k * 4 + 2] = b32;
+    factors.direct[k * 4 + 3] = b31 * b25;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * sd * V * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * sd * V * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * sf * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 11 add, 47 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2616,8 +2620,6 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2655,8 +2657,8 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
-  const double p18 = 8.0 * p17 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
+  const double p18 = 8.0 * p17;
+  const double p19 = 2.0 * ds_theta * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2665,30 +2667,33 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * sf * w;
-    const double b24 = p18 * dY_1 * b22 * sf * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * sf * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * sf * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    lane1[lane] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    lane2[lane] += b26;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * sf * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * sf * w;
+    const double b25 = p19 * (Q_lambda - Q_mu);
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * sf * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * sf * w) * V;
+    df[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    df[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_energy: per bond 9 add, 18 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2705,6 +2710,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -2712,7 +2718,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2751,7 +2757,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -2904,26 +2910,27 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
   d.damaged.residual = &lps_corrected_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {13, 35, 1, 0};
+  d.damaged.residual_ops = {14, 37, 1, 0};
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {13, 61, 1, 0};
+  d.damaged.tangent_ops = {14, 65, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {10, 50, 1, 0};
+  d.damaged.jvp_ops = {11, 53, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
-  d.intact.residual_ops = {13, 32, 1, 0};
+  d.intact.residual_ops = {14, 34, 1, 0};
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {13, 53, 1, 0};
+  d.intact.tangent_ops = {14, 57, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {10, 44, 1, 0};
+  d.intact.jvp_ops = {11, 47, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_corrected_plane_strain_intact_form;
@@ -3017,7 +3024,7 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_damaged_residual: per bond 27 add, 55 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_residual: per bond 28 add, 57 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3031,8 +3038,6 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3094,8 +3099,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
-  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p40 = 15.0 * P_mu;
+  const double p39 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3104,6 +3108,8 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3114,10 +3120,11 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * alpha * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * alpha * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * alpha * w;
+    const double b40 = p39 * (Q_lambda - Q_mu);
+    const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * alpha * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * alpha * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3131,7 +3138,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_tangent: per bond 27 add, 94 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_tangent: per bond 28 add, 98 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3145,8 +3152,6 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3209,11 +3214,8 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
-  const double p40 = 3.0 * (P_lambda - P_mu);
-  const double p41 = p40 * s_theta;
-  const double p42 = 15.0 * P_mu;
-  const double p43 = 15.0 * p38 * P_mu;
-  const double p44 = p40 * p38;
+  const double p40 = 3.0 * s_theta;
+  const double p41 = 15.0 * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3222,6 +3224,8 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3233,43 +3237,46 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
-    const double b46 = xi_0 * xi_0;
-    const double b47 = xi_1 * xi_1;
-    const double b48 = xi_2 * xi_2;
-    const double b49 = 1.0 / (b46 + b47 + b48);
-    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * sf * V * alpha * w;
-    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * sf * V * alpha * w;
-    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * sf * V * alpha * w;
-    const double b56 = p43 * b49 * sf * alpha * w;
-    const double b57 = b56 * xi_1 * xi_0;
-    const double b58 = b56 * xi_2;
-    const double b59 = b58 * xi_0;
-    const double b60 = b58 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    lane1[lane] += b51;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    lane2[lane] += b53;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    lane3[lane] += b55;
-    factors.direct[k * 9 + 0] = b56 * b46;
-    factors.direct[k * 9 + 1] = b57;
-    factors.direct[k * 9 + 2] = b59;
-    factors.direct[k * 9 + 3] = b57;
-    factors.direct[k * 9 + 4] = b56 * b47;
-    factors.direct[k * 9 + 5] = b60;
-    factors.direct[k * 9 + 6] = b59;
-    factors.direct[k * 9 + 7] = b60;
-    factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * sd * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * sd * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * sd * V * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * sf * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * sf * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * sf * alpha * w;
+    const double b42 = Q_lambda - Q_mu;
+    const double b43 = p40 * b42;
+    const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b45 = xi_0 * xi_0;
+    const double b46 = xi_1 * xi_1;
+    const double b47 = xi_2 * xi_2;
+    const double b48 = 1.0 / (b45 + b46 + b47);
+    const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * sf * V * alpha * w;
+    const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * sf * V * alpha * w;
+    const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * sf * V * alpha * w;
+    const double b55 = p41 * Q_mu * b48 * sf * alpha * w;
+    const double b56 = b55 * xi_1 * xi_0;
+    const double b57 = b55 * xi_2;
+    const double b58 = b57 * xi_0;
+    const double b59 = b57 * xi_1;
+    const double b60 = p0 * b42;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b52;
+    lane2[lane] += b52;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b54;
+    lane3[lane] += b54;
+    factors.direct[k * 9 + 0] = b55 * b45;
+    factors.direct[k * 9 + 1] = b56;
+    factors.direct[k * 9 + 2] = b58;
+    factors.direct[k * 9 + 3] = b56;
+    factors.direct[k * 9 + 4] = b55 * b46;
+    factors.direct[k * 9 + 5] = b59;
+    factors.direct[k * 9 + 6] = b58;
+    factors.direct[k * 9 + 7] = b59;
+    factors.direct[k * 9 + 8] = b55 * b47;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3277,7 +3284,7 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_jvp: per bond 25 add, 86 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_jvp: per bond 26 add, 90 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3291,8 +3298,6 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3354,8 +3359,8 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
-  const double p39 = 15.0 * p38 * P_mu;
-  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  const double p39 = 15.0 * p38;
+  const double p40 = 3.0 * ds_theta * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3365,6 +3370,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3373,24 +3379,26 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b41 = xi_0 * xi_0;
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * sf * alpha * w;
-    const double b46 = p39 * dY_1 * b44 * sf * alpha * w;
-    const double b47 = p39 * dY_2 * b44 * sf * alpha * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * sf * alpha * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * sf * alpha * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * sf * alpha * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * alpha * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * alpha * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * alpha * w) * V;
-    df[(k + 1) * 3 + 0] = -b49;
-    lane1[lane] += b49;
-    df[(k + 1) * 3 + 1] = -b50;
-    lane2[lane] += b50;
-    df[(k + 1) * 3 + 2] = -b51;
-    lane3[lane] += b51;
+    const double b49 = p40 * (Q_lambda - Q_mu);
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * alpha * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * alpha * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * alpha * w) * V;
+    df[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    df[(k + 1) * 3 + 1] = -b51;
+    lane2[lane] += b51;
+    df[(k + 1) * 3 + 2] = -b52;
+    lane3[lane] += b52;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3398,7 +3406,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_energy: per bond 18 add, 28 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_energy: per bond 18 add, 29 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3420,6 +3428,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -3430,7 +3439,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3493,7 +3502,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -3814,7 +3823,7 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_intact_residual: per bond 27 add, 51 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_intact_residual: per bond 28 add, 53 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3828,8 +3837,6 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3890,8 +3897,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
-  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p40 = 15.0 * P_mu;
+  const double p39 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3900,6 +3906,8 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3909,10 +3917,11 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * w;
+    const double b40 = p39 * (Q_lambda - Q_mu);
+    const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3926,7 +3935,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_intact_tangent: per bond 28 add, 87 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3940,8 +3949,6 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -4003,11 +4010,8 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
-  const double p40 = 3.0 * (P_lambda - P_mu);
-  const double p41 = p40 * s_theta;
-  const double p42 = 15.0 * P_mu;
-  const double p43 = 15.0 * p38 * P_mu;
-  const double p44 = p40 * p38;
+  const double p40 = 3.0 * s_theta;
+  const double p41 = 15.0 * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -4016,6 +4020,8 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -4026,43 +4032,46 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
-    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
-    const double b46 = xi_0 * xi_0;
-    const double b47 = xi_1 * xi_1;
-    const double b48 = xi_2 * xi_2;
-    const double b49 = 1.0 / (b46 + b47 + b48);
-    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * sf * V * w;
-    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * sf * V * w;
-    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * sf * V * w;
-    const double b56 = p43 * b49 * sf * w;
-    const double b57 = b56 * xi_1 * xi_0;
-    const double b58 = b56 * xi_2;
-    const double b59 = b58 * xi_0;
-    const double b60 = b58 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    lane1[lane] += b51;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    lane2[lane] += b53;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    lane3[lane] += b55;
-    factors.direct[k * 9 + 0] = b56 * b46;
-    factors.direct[k * 9 + 1] = b57;
-    factors.direct[k * 9 + 2] = b59;
-    factors.direct[k * 9 + 3] = b57;
-    factors.direct[k * 9 + 4] = b56 * b47;
-    factors.direct[k * 9 + 5] = b60;
-    factors.direct[k * 9 + 6] = b59;
-    factors.direct[k * 9 + 7] = b60;
-    factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * sd * V * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * sd * V * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * sd * V * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * sf * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * sf * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * sf * w;
+    const double b42 = Q_lambda - Q_mu;
+    const double b43 = p40 * b42;
+    const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b45 = xi_0 * xi_0;
+    const double b46 = xi_1 * xi_1;
+    const double b47 = xi_2 * xi_2;
+    const double b48 = 1.0 / (b45 + b46 + b47);
+    const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * sf * V * w;
+    const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * sf * V * w;
+    const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * sf * V * w;
+    const double b55 = p41 * Q_mu * b48 * sf * w;
+    const double b56 = b55 * xi_1 * xi_0;
+    const double b57 = b55 * xi_2;
+    const double b58 = b57 * xi_0;
+    const double b59 = b57 * xi_1;
+    const double b60 = p0 * b42;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b52;
+    lane2[lane] += b52;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b54;
+    lane3[lane] += b54;
+    factors.direct[k * 9 + 0] = b55 * b45;
+    factors.direct[k * 9 + 1] = b56;
+    factors.direct[k * 9 + 2] = b58;
+    factors.direct[k * 9 + 3] = b56;
+    factors.direct[k * 9 + 4] = b55 * b46;
+    factors.direct[k * 9 + 5] = b59;
+    factors.direct[k * 9 + 6] = b58;
+    factors.direct[k * 9 + 7] = b59;
+    factors.direct[k * 9 + 8] = b55 * b47;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * sd * V * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4070,7 +4079,7 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_intact_jvp: per bond 26 add, 81 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4084,8 +4093,6 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -4146,8 +4153,8 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
-  const double p39 = 15.0 * p38 * P_mu;
-  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  const double p39 = 15.0 * p38;
+  const double p40 = 3.0 * ds_theta * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -4157,6 +4164,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -4164,24 +4172,26 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b41 = xi_0 * xi_0;
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * sf * w;
-    const double b46 = p39 * dY_1 * b44 * sf * w;
-    const double b47 = p39 * dY_2 * b44 * sf * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * sf * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * sf * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * sf * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * w) * V;
-    df[(k + 1) * 3 + 0] = -b49;
-    lane1[lane] += b49;
-    df[(k + 1) * 3 + 1] = -b50;
-    lane2[lane] += b50;
-    df[(k + 1) * 3 + 2] = -b51;
-    lane3[lane] += b51;
+    const double b49 = p40 * (Q_lambda - Q_mu);
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * w) * V;
+    df[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    df[(k + 1) * 3 + 1] = -b51;
+    lane2[lane] += b51;
+    df[(k + 1) * 3 + 2] = -b52;
+    lane3[lane] += b52;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4189,7 +4199,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_energy: per bond 18 add, 26 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_intact_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4211,6 +4221,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -4220,7 +4231,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4282,7 +4293,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -4531,26 +4542,27 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;
   d.damaged.residual = &lps_corrected_3d_damaged_residual;
-  d.damaged.residual_ops = {27, 55, 1, 0};
+  d.damaged.residual_ops = {28, 57, 1, 0};
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
-  d.damaged.tangent_ops = {27, 94, 1, 0};
+  d.damaged.tangent_ops = {28, 98, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {25, 86, 1, 0};
+  d.damaged.jvp_ops = {26, 90, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_corrected_3d_damaged_form;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
-  d.intact.residual_ops = {27, 51, 1, 0};
+  d.intact.residual_ops = {28, 53, 1, 0};
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
-  d.intact.tangent_ops = {27, 83, 1, 0};
+  d.intact.tangent_ops = {28, 87, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {25, 77, 1, 0};
+  d.intact.jvp_ops = {26, 81, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;

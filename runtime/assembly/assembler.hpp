@@ -66,11 +66,15 @@ class FamilyAssembler {
   void stiffness_diagonal(const double* u, double* diag) const;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
-  // With surface correction factors (Bonds::surface_force) the force is no longer the
-  // derivative of the law's energy: no energy, and a non-symmetric stiffness.
-  bool has_energy() const { return variant_.energy != nullptr && options_.collocation == nullptr && !surface_corrected(); }
-  // False under collocation assembly or surface correction: the solver needs UMFPACK or GMRES then.
-  bool symmetric() const { return options_.collocation == nullptr && !surface_corrected(); }
+  // Also false for a law with pair parameters (LawDescriptor::uses_pair_params) on a body
+  // whose particles carry different parameters, and with surface correction factors
+  // (Bonds::surface_force): the forces have no potential there.
+  bool has_energy() const {
+    return variant_.energy != nullptr && options_.collocation == nullptr && !pair_jump_ && !surface_corrected();
+  }
+  // False under collocation assembly, for pair parameters across a material jump and with
+  // surface correction: the solver needs UMFPACK or GMRES then.
+  bool symmetric() const { return options_.collocation == nullptr && !pair_jump_ && !surface_corrected(); }
   bool surface_corrected() const { return !inputs_.bonds->surface_force.empty(); }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
@@ -96,6 +100,7 @@ class FamilyAssembler {
   const abi::LawDescriptor& law_;
   const abi::KernelVariant& variant_;
   AssemblerOptions options_;
+  bool pair_jump_ = false;  // the law uses pair parameters and the particles' parameters differ
   FamilyInputs inputs_;
   FamilyColouring colouring_;
   std::unique_ptr<SparsityPattern> pattern_;
