@@ -13,7 +13,7 @@ void bond_based_constant_2d_damaged_moments(const pd::abi::Family& fam, double* 
   static_cast<void>(moments);
 }
 
-// bond_based_constant_2d_damaged_residual: per bond 4 add, 12 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_2d_damaged_residual: per bond 4 add, 13 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -33,12 +33,13 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * V * alpha;
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sf * V * alpha;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -51,7 +52,7 @@ void bond_based_constant_2d_damaged_residual(const pd::abi::Family& fam, double*
   forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_constant_2d_damaged_tangent: per bond 9 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_2d_damaged_tangent: per bond 9 add, 35 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -72,6 +73,7 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -83,14 +85,14 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b9 = b7 - b8;
     const double b10 = 1.0 / b7;
     const double b11 = 1.0 / b8;
-    const double b12 = p2 * b9 * b10 * b11 * V * alpha;
+    const double b12 = p2 * b9 * b10 * b11 * sf * V * alpha;
     const double b13 = b12 * Y_0;
     const double b14 = b12 * Y_1;
     const double b15 = p1 * b9;
-    const double b16 = b15 * b10 * b11 * alpha;
+    const double b16 = b15 * b10 * b11 * sf * alpha;
     const double b17 = 1.0 / b6;
-    const double b18 = p1 * b17 * b11 * alpha;
-    const double b19 = b15 * (b17 * b10) * b11 * alpha;
+    const double b18 = p1 * b17 * b11 * sf * alpha;
+    const double b19 = b15 * (b17 * b10) * b11 * sf * alpha;
     const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
     lane0[lane] += b13;
@@ -106,7 +108,7 @@ void bond_based_constant_2d_damaged_tangent(const pd::abi::Family& fam, double* 
   if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_constant_2d_damaged_jvp: per bond 11 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_constant_2d_damaged_jvp: per bond 11 add, 35 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -127,6 +129,7 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
@@ -139,10 +142,10 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b8 = p1 * (b6 - b7);
     const double b9 = 1.0 / b6;
     const double b10 = 1.0 / b7;
-    const double b11 = b8 * b9 * b10 * alpha;
+    const double b11 = b8 * b9 * b10 * sf * alpha;
     const double b12 = 1.0 / b5;
-    const double b13 = p1 * b12 * b10 * alpha;
-    const double b14 = b8 * (b12 * b9) * b10 * alpha;
+    const double b13 = p1 * b12 * b10 * sf * alpha;
+    const double b14 = b8 * (b12 * b9) * b10 * sf * alpha;
     const double b15 = b13 * Y_1 * Y_0 - b14 * Y_1 * Y_0;
     const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
     const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
@@ -270,7 +273,7 @@ void bond_based_constant_2d_intact_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_constant_2d_intact_residual: per bond 4 add, 11 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_2d_intact_residual: per bond 4 add, 12 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -290,11 +293,12 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * V;
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sf * V;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -307,7 +311,7 @@ void bond_based_constant_2d_intact_residual(const pd::abi::Family& fam, double* 
   forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_constant_2d_intact_tangent: per bond 9 add, 27 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_2d_intact_tangent: per bond 9 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -328,6 +332,7 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b4 = Y_0 * Y_0;
@@ -338,14 +343,14 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b9 = b7 - b8;
     const double b10 = 1.0 / b7;
     const double b11 = 1.0 / b8;
-    const double b12 = p2 * b9 * b10 * b11 * V;
+    const double b12 = p2 * b9 * b10 * b11 * sf * V;
     const double b13 = b12 * Y_0;
     const double b14 = b12 * Y_1;
     const double b15 = p1 * b9;
-    const double b16 = b15 * b10 * b11;
+    const double b16 = b15 * b10 * b11 * sf;
     const double b17 = 1.0 / b6;
-    const double b18 = p1 * b17 * b11;
-    const double b19 = b15 * (b17 * b10) * b11;
+    const double b18 = p1 * b17 * b11 * sf;
+    const double b19 = b15 * (b17 * b10) * b11 * sf;
     const double b20 = b18 * Y_1 * Y_0 - b19 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b13;
     lane0[lane] += b13;
@@ -361,7 +366,7 @@ void bond_based_constant_2d_intact_tangent(const pd::abi::Family& fam, double* f
   if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_constant_2d_intact_jvp: per bond 11 add, 29 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_constant_2d_intact_jvp: per bond 11 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -382,6 +387,7 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -393,10 +399,10 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b8 = p1 * (b6 - b7);
     const double b9 = 1.0 / b6;
     const double b10 = 1.0 / b7;
-    const double b11 = b8 * b9 * b10;
+    const double b11 = b8 * b9 * b10 * sf;
     const double b12 = 1.0 / b5;
-    const double b13 = p1 * b12 * b10;
-    const double b14 = b8 * (b12 * b9) * b10;
+    const double b13 = p1 * b12 * b10 * sf;
+    const double b14 = b8 * (b12 * b9) * b10 * sf;
     const double b15 = b13 * Y_1 * Y_0 - b14 * Y_1 * Y_0;
     const double b16 = V0 * (dY_0 * (b11 + b13 * b3 - b14 * b3) + dY_1 * b15) * V;
     const double b17 = V0 * (dY_0 * b15 + dY_1 * (b11 + b13 * b4 - b14 * b4)) * V;
@@ -538,20 +544,20 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_2d_damaged_moments;
   d.damaged.residual = &bond_based_constant_2d_damaged_residual;
-  d.damaged.residual_ops = {4, 12, 2, 2};
+  d.damaged.residual_ops = {4, 13, 2, 2};
   d.damaged.tangent = &bond_based_constant_2d_damaged_tangent;
-  d.damaged.tangent_ops = {9, 31, 3, 2};
+  d.damaged.tangent_ops = {9, 35, 3, 2};
   d.damaged.jvp = &bond_based_constant_2d_damaged_jvp;
-  d.damaged.jvp_ops = {11, 32, 3, 2};
+  d.damaged.jvp_ops = {11, 35, 3, 2};
   d.damaged.energy = &bond_based_constant_2d_damaged_energy;
   d.damaged.form = &bond_based_constant_2d_damaged_form;
   d.intact.moments = &bond_based_constant_2d_intact_moments;
   d.intact.residual = &bond_based_constant_2d_intact_residual;
-  d.intact.residual_ops = {4, 11, 2, 2};
+  d.intact.residual_ops = {4, 12, 2, 2};
   d.intact.tangent = &bond_based_constant_2d_intact_tangent;
-  d.intact.tangent_ops = {9, 27, 3, 2};
+  d.intact.tangent_ops = {9, 31, 3, 2};
   d.intact.jvp = &bond_based_constant_2d_intact_jvp;
-  d.intact.jvp_ops = {11, 29, 3, 2};
+  d.intact.jvp_ops = {11, 32, 3, 2};
   d.intact.energy = &bond_based_constant_2d_intact_energy;
   d.intact.form = &bond_based_constant_2d_intact_form;
   return d;
@@ -563,7 +569,7 @@ void bond_based_conical_2d_damaged_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_conical_2d_damaged_residual: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_2d_damaged_residual: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -583,12 +589,13 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * V * alpha;
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * sf * V * alpha;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -601,7 +608,7 @@ void bond_based_conical_2d_damaged_residual(const pd::abi::Family& fam, double* 
   forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_conical_2d_damaged_tangent: per bond 10 add, 35 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_2d_damaged_tangent: per bond 10 add, 39 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -622,6 +629,7 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -634,14 +642,14 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b10 = 1.0 - p0 * b8;
     const double b11 = 1.0 / b7;
     const double b12 = 1.0 / b8;
-    const double b13 = p2 * b9 * b10 * b11 * b12 * V * alpha;
+    const double b13 = p2 * b9 * b10 * b11 * b12 * sf * V * alpha;
     const double b14 = b13 * Y_0;
     const double b15 = b13 * Y_1;
     const double b16 = p1 * b9 * b10;
-    const double b17 = b16 * b11 * b12 * alpha;
+    const double b17 = b16 * b11 * b12 * sf * alpha;
     const double b18 = 1.0 / b6;
-    const double b19 = p1 * b10 * b18 * b12 * alpha;
-    const double b20 = b16 * (b18 * b11) * b12 * alpha;
+    const double b19 = p1 * b10 * b18 * b12 * sf * alpha;
+    const double b20 = b16 * (b18 * b11) * b12 * sf * alpha;
     const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
     lane0[lane] += b14;
@@ -657,7 +665,7 @@ void bond_based_conical_2d_damaged_tangent(const pd::abi::Family& fam, double* f
   if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_conical_2d_damaged_jvp: per bond 12 add, 35 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_conical_2d_damaged_jvp: per bond 12 add, 38 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -678,6 +686,7 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
@@ -691,10 +700,10 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b9 = p1 * (b6 - b7) * b8;
     const double b10 = 1.0 / b6;
     const double b11 = 1.0 / b7;
-    const double b12 = b9 * b10 * b11 * alpha;
+    const double b12 = b9 * b10 * b11 * sf * alpha;
     const double b13 = 1.0 / b5;
-    const double b14 = p1 * b8 * b13 * b11 * alpha;
-    const double b15 = b9 * (b13 * b10) * b11 * alpha;
+    const double b14 = p1 * b8 * b13 * b11 * sf * alpha;
+    const double b15 = b9 * (b13 * b10) * b11 * sf * alpha;
     const double b16 = b14 * Y_1 * Y_0 - b15 * Y_1 * Y_0;
     const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
     const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
@@ -822,7 +831,7 @@ void bond_based_conical_2d_intact_moments(const pd::abi::Family& fam, double* mo
   static_cast<void>(moments);
 }
 
-// bond_based_conical_2d_intact_residual: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_2d_intact_residual: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -842,11 +851,12 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b4 = std::sqrt(b2);
-    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * V;
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * sf * V;
     const double b6 = b5 * Y_0;
     const double b7 = b5 * Y_1;
     forces[(k + 1) * 2 + 0] = -b6;
@@ -859,7 +869,7 @@ void bond_based_conical_2d_intact_residual(const pd::abi::Family& fam, double* f
   forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_conical_2d_intact_tangent: per bond 10 add, 31 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_2d_intact_tangent: per bond 10 add, 35 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_kappa2 = fam.params[0];
@@ -880,6 +890,7 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b4 = Y_0 * Y_0;
@@ -891,14 +902,14 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b10 = 1.0 - p0 * b8;
     const double b11 = 1.0 / b7;
     const double b12 = 1.0 / b8;
-    const double b13 = p2 * b9 * b10 * b11 * b12 * V;
+    const double b13 = p2 * b9 * b10 * b11 * b12 * sf * V;
     const double b14 = b13 * Y_0;
     const double b15 = b13 * Y_1;
     const double b16 = p1 * b9 * b10;
-    const double b17 = b16 * b11 * b12;
+    const double b17 = b16 * b11 * b12 * sf;
     const double b18 = 1.0 / b6;
-    const double b19 = p1 * b10 * b18 * b12;
-    const double b20 = b16 * (b18 * b11) * b12;
+    const double b19 = p1 * b10 * b18 * b12 * sf;
+    const double b20 = b16 * (b18 * b11) * b12 * sf;
     const double b21 = b19 * Y_1 * Y_0 - b20 * Y_1 * Y_0;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b14;
     lane0[lane] += b14;
@@ -914,7 +925,7 @@ void bond_based_conical_2d_intact_tangent(const pd::abi::Family& fam, double* fo
   if (forces != nullptr) forces[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
-// bond_based_conical_2d_intact_jvp: per bond 12 add, 32 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_conical_2d_intact_jvp: per bond 12 add, 35 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -935,6 +946,7 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -947,10 +959,10 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b9 = p1 * (b6 - b7) * b8;
     const double b10 = 1.0 / b6;
     const double b11 = 1.0 / b7;
-    const double b12 = b9 * b10 * b11;
+    const double b12 = b9 * b10 * b11 * sf;
     const double b13 = 1.0 / b5;
-    const double b14 = p1 * b8 * b13 * b11;
-    const double b15 = b9 * (b13 * b10) * b11;
+    const double b14 = p1 * b8 * b13 * b11 * sf;
+    const double b15 = b9 * (b13 * b10) * b11 * sf;
     const double b16 = b14 * Y_1 * Y_0 - b15 * Y_1 * Y_0;
     const double b17 = V0 * (dY_0 * (b12 + b14 * b3 - b15 * b3) + dY_1 * b16) * V;
     const double b18 = V0 * (dY_0 * b16 + dY_1 * (b12 + b14 * b4 - b15 * b4)) * V;
@@ -1092,20 +1104,20 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_2d_damaged_moments;
   d.damaged.residual = &bond_based_conical_2d_damaged_residual;
-  d.damaged.residual_ops = {5, 14, 2, 2};
+  d.damaged.residual_ops = {5, 15, 2, 2};
   d.damaged.tangent = &bond_based_conical_2d_damaged_tangent;
-  d.damaged.tangent_ops = {10, 35, 3, 2};
+  d.damaged.tangent_ops = {10, 39, 3, 2};
   d.damaged.jvp = &bond_based_conical_2d_damaged_jvp;
-  d.damaged.jvp_ops = {12, 35, 3, 2};
+  d.damaged.jvp_ops = {12, 38, 3, 2};
   d.damaged.energy = &bond_based_conical_2d_damaged_energy;
   d.damaged.form = &bond_based_conical_2d_damaged_form;
   d.intact.moments = &bond_based_conical_2d_intact_moments;
   d.intact.residual = &bond_based_conical_2d_intact_residual;
-  d.intact.residual_ops = {5, 13, 2, 2};
+  d.intact.residual_ops = {5, 14, 2, 2};
   d.intact.tangent = &bond_based_conical_2d_intact_tangent;
-  d.intact.tangent_ops = {10, 31, 3, 2};
+  d.intact.tangent_ops = {10, 35, 3, 2};
   d.intact.jvp = &bond_based_conical_2d_intact_jvp;
-  d.intact.jvp_ops = {12, 32, 3, 2};
+  d.intact.jvp_ops = {12, 35, 3, 2};
   d.intact.energy = &bond_based_conical_2d_intact_energy;
   d.intact.form = &bond_based_conical_2d_intact_form;
   return d;
@@ -1117,7 +1129,7 @@ void bond_based_constant_3d_damaged_moments(const pd::abi::Family& fam, double* 
   static_cast<void>(moments);
 }
 
-// bond_based_constant_3d_damaged_residual: per bond 6 add, 15 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_3d_damaged_residual: per bond 6 add, 16 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1141,12 +1153,13 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * V * alpha;
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * sf * V * alpha;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -1163,7 +1176,7 @@ void bond_based_constant_3d_damaged_residual(const pd::abi::Family& fam, double*
   forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_constant_3d_damaged_tangent: per bond 15 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_3d_damaged_tangent: per bond 15 add, 46 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1188,6 +1201,7 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1200,15 +1214,15 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
     const double b11 = b9 - b10;
     const double b12 = 1.0 / b9;
     const double b13 = 1.0 / b10;
-    const double b14 = p3 * b11 * b12 * b13 * V * alpha;
+    const double b14 = p3 * b11 * b12 * b13 * sf * V * alpha;
     const double b15 = b14 * Y_0;
     const double b16 = b14 * Y_1;
     const double b17 = b14 * Y_2;
     const double b18 = p2 * b11;
-    const double b19 = b18 * b12 * b13 * alpha;
+    const double b19 = b18 * b12 * b13 * sf * alpha;
     const double b20 = 1.0 / b8;
-    const double b21 = p2 * b20 * b13 * alpha;
-    const double b22 = b18 * (b20 * b12) * b13 * alpha;
+    const double b21 = p2 * b20 * b13 * sf * alpha;
+    const double b22 = b18 * (b20 * b12) * b13 * sf * alpha;
     const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
     const double b24 = b21 * Y_2;
     const double b25 = b22 * Y_2;
@@ -1236,7 +1250,7 @@ void bond_based_constant_3d_damaged_tangent(const pd::abi::Family& fam, double* 
   if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_constant_3d_damaged_jvp: per bond 21 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_constant_3d_damaged_jvp: per bond 21 add, 52 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -1261,6 +1275,7 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -1275,10 +1290,10 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
     const double b10 = p2 * (b8 - b9);
     const double b11 = 1.0 / b8;
     const double b12 = 1.0 / b9;
-    const double b13 = b10 * b11 * b12 * alpha;
+    const double b13 = b10 * b11 * b12 * sf * alpha;
     const double b14 = 1.0 / b7;
-    const double b15 = p2 * b14 * b12 * alpha;
-    const double b16 = b10 * (b14 * b11) * b12 * alpha;
+    const double b15 = p2 * b14 * b12 * sf * alpha;
+    const double b16 = b10 * (b14 * b11) * b12 * sf * alpha;
     const double b17 = b15 * Y_1 * Y_0 - b16 * Y_1 * Y_0;
     const double b18 = b15 * Y_2;
     const double b19 = b16 * Y_2;
@@ -1480,7 +1495,7 @@ void bond_based_constant_3d_intact_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_constant_3d_intact_residual: per bond 6 add, 14 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_3d_intact_residual: per bond 6 add, 15 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1504,11 +1519,12 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * V;
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * sf * V;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -1525,7 +1541,7 @@ void bond_based_constant_3d_intact_residual(const pd::abi::Family& fam, double* 
   forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_constant_3d_intact_tangent: per bond 15 add, 38 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_constant_3d_intact_tangent: per bond 15 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1550,6 +1566,7 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b5 = Y_0 * Y_0;
@@ -1561,15 +1578,15 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
     const double b11 = b9 - b10;
     const double b12 = 1.0 / b9;
     const double b13 = 1.0 / b10;
-    const double b14 = p3 * b11 * b12 * b13 * V;
+    const double b14 = p3 * b11 * b12 * b13 * sf * V;
     const double b15 = b14 * Y_0;
     const double b16 = b14 * Y_1;
     const double b17 = b14 * Y_2;
     const double b18 = p2 * b11;
-    const double b19 = b18 * b12 * b13;
+    const double b19 = b18 * b12 * b13 * sf;
     const double b20 = 1.0 / b8;
-    const double b21 = p2 * b20 * b13;
-    const double b22 = b18 * (b20 * b12) * b13;
+    const double b21 = p2 * b20 * b13 * sf;
+    const double b22 = b18 * (b20 * b12) * b13 * sf;
     const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
     const double b24 = b21 * Y_2;
     const double b25 = b22 * Y_2;
@@ -1597,7 +1614,7 @@ void bond_based_constant_3d_intact_tangent(const pd::abi::Family& fam, double* f
   if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_constant_3d_intact_jvp: per bond 21 add, 46 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_constant_3d_intact_jvp: per bond 21 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -1622,6 +1639,7 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
@@ -1635,10 +1653,10 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
     const double b10 = p2 * (b8 - b9);
     const double b11 = 1.0 / b8;
     const double b12 = 1.0 / b9;
-    const double b13 = b10 * b11 * b12;
+    const double b13 = b10 * b11 * b12 * sf;
     const double b14 = 1.0 / b7;
-    const double b15 = p2 * b14 * b12;
-    const double b16 = b10 * (b14 * b11) * b12;
+    const double b15 = p2 * b14 * b12 * sf;
+    const double b16 = b10 * (b14 * b11) * b12 * sf;
     const double b17 = b15 * Y_1 * Y_0 - b16 * Y_1 * Y_0;
     const double b18 = b15 * Y_2;
     const double b19 = b16 * Y_2;
@@ -1854,20 +1872,20 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_constant_3d_damaged_moments;
   d.damaged.residual = &bond_based_constant_3d_damaged_residual;
-  d.damaged.residual_ops = {6, 15, 2, 2};
+  d.damaged.residual_ops = {6, 16, 2, 2};
   d.damaged.tangent = &bond_based_constant_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 42, 3, 2};
+  d.damaged.tangent_ops = {15, 46, 3, 2};
   d.damaged.jvp = &bond_based_constant_3d_damaged_jvp;
-  d.damaged.jvp_ops = {21, 49, 3, 2};
+  d.damaged.jvp_ops = {21, 52, 3, 2};
   d.damaged.energy = &bond_based_constant_3d_damaged_energy;
   d.damaged.form = &bond_based_constant_3d_damaged_form;
   d.intact.moments = &bond_based_constant_3d_intact_moments;
   d.intact.residual = &bond_based_constant_3d_intact_residual;
-  d.intact.residual_ops = {6, 14, 2, 2};
+  d.intact.residual_ops = {6, 15, 2, 2};
   d.intact.tangent = &bond_based_constant_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 38, 3, 2};
+  d.intact.tangent_ops = {15, 42, 3, 2};
   d.intact.jvp = &bond_based_constant_3d_intact_jvp;
-  d.intact.jvp_ops = {21, 46, 3, 2};
+  d.intact.jvp_ops = {21, 49, 3, 2};
   d.intact.energy = &bond_based_constant_3d_intact_energy;
   d.intact.form = &bond_based_constant_3d_intact_form;
   return d;
@@ -1879,7 +1897,7 @@ void bond_based_conical_3d_damaged_moments(const pd::abi::Family& fam, double* m
   static_cast<void>(moments);
 }
 
-// bond_based_conical_3d_damaged_residual: per bond 7 add, 17 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_3d_damaged_residual: per bond 7 add, 18 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1903,12 +1921,13 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * V * alpha;
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * sf * V * alpha;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -1925,7 +1944,7 @@ void bond_based_conical_3d_damaged_residual(const pd::abi::Family& fam, double* 
   forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_conical_3d_damaged_tangent: per bond 16 add, 46 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_3d_damaged_tangent: per bond 16 add, 50 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -1950,6 +1969,7 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1963,15 +1983,15 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
     const double b12 = 1.0 - p0 * b10;
     const double b13 = 1.0 / b9;
     const double b14 = 1.0 / b10;
-    const double b15 = p3 * b11 * b12 * b13 * b14 * V * alpha;
+    const double b15 = p3 * b11 * b12 * b13 * b14 * sf * V * alpha;
     const double b16 = b15 * Y_0;
     const double b17 = b15 * Y_1;
     const double b18 = b15 * Y_2;
     const double b19 = p2 * b11 * b12;
-    const double b20 = b19 * b13 * b14 * alpha;
+    const double b20 = b19 * b13 * b14 * sf * alpha;
     const double b21 = 1.0 / b8;
-    const double b22 = p2 * b12 * b21 * b14 * alpha;
-    const double b23 = b19 * (b21 * b13) * b14 * alpha;
+    const double b22 = p2 * b12 * b21 * b14 * sf * alpha;
+    const double b23 = b19 * (b21 * b13) * b14 * sf * alpha;
     const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
     const double b25 = b22 * Y_2;
     const double b26 = b23 * Y_2;
@@ -1999,7 +2019,7 @@ void bond_based_conical_3d_damaged_tangent(const pd::abi::Family& fam, double* f
   if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_conical_3d_damaged_jvp: per bond 22 add, 52 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_conical_3d_damaged_jvp: per bond 22 add, 55 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -2024,6 +2044,7 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -2039,10 +2060,10 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
     const double b11 = p2 * (b8 - b9) * b10;
     const double b12 = 1.0 / b8;
     const double b13 = 1.0 / b9;
-    const double b14 = b11 * b12 * b13 * alpha;
+    const double b14 = b11 * b12 * b13 * sf * alpha;
     const double b15 = 1.0 / b7;
-    const double b16 = p2 * b10 * b15 * b13 * alpha;
-    const double b17 = b11 * (b15 * b12) * b13 * alpha;
+    const double b16 = p2 * b10 * b15 * b13 * sf * alpha;
+    const double b17 = b11 * (b15 * b12) * b13 * sf * alpha;
     const double b18 = b16 * Y_1 * Y_0 - b17 * Y_1 * Y_0;
     const double b19 = b16 * Y_2;
     const double b20 = b17 * Y_2;
@@ -2244,7 +2265,7 @@ void bond_based_conical_3d_intact_moments(const pd::abi::Family& fam, double* mo
   static_cast<void>(moments);
 }
 
-// bond_based_conical_3d_intact_residual: per bond 7 add, 16 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_3d_intact_residual: per bond 7 add, 17 mul, 2 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -2268,11 +2289,12 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b5 = std::sqrt(b3);
-    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * V;
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * sf * V;
     const double b7 = b6 * Y_0;
     const double b8 = b6 * Y_1;
     const double b9 = b6 * Y_2;
@@ -2289,7 +2311,7 @@ void bond_based_conical_3d_intact_residual(const pd::abi::Family& fam, double* f
   forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_conical_3d_intact_tangent: per bond 16 add, 42 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
+// bond_based_conical_3d_intact_tangent: per bond 16 add, 46 mul, 3 div, 2 call; per family 0 add, 5 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double P_K = fam.params[0];
@@ -2314,6 +2336,7 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b5 = Y_0 * Y_0;
@@ -2326,15 +2349,15 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
     const double b12 = 1.0 - p0 * b10;
     const double b13 = 1.0 / b9;
     const double b14 = 1.0 / b10;
-    const double b15 = p3 * b11 * b12 * b13 * b14 * V;
+    const double b15 = p3 * b11 * b12 * b13 * b14 * sf * V;
     const double b16 = b15 * Y_0;
     const double b17 = b15 * Y_1;
     const double b18 = b15 * Y_2;
     const double b19 = p2 * b11 * b12;
-    const double b20 = b19 * b13 * b14;
+    const double b20 = b19 * b13 * b14 * sf;
     const double b21 = 1.0 / b8;
-    const double b22 = p2 * b12 * b21 * b14;
-    const double b23 = b19 * (b21 * b13) * b14;
+    const double b22 = p2 * b12 * b21 * b14 * sf;
+    const double b23 = b19 * (b21 * b13) * b14 * sf;
     const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
     const double b25 = b22 * Y_2;
     const double b26 = b23 * Y_2;
@@ -2362,7 +2385,7 @@ void bond_based_conical_3d_intact_tangent(const pd::abi::Family& fam, double* fo
   if (forces != nullptr) forces[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// bond_based_conical_3d_intact_jvp: per bond 22 add, 49 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+// bond_based_conical_3d_intact_jvp: per bond 22 add, 52 mul, 3 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -2387,6 +2410,7 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
@@ -2401,10 +2425,10 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
     const double b11 = p2 * (b8 - b9) * b10;
     const double b12 = 1.0 / b8;
     const double b13 = 1.0 / b9;
-    const double b14 = b11 * b12 * b13;
+    const double b14 = b11 * b12 * b13 * sf;
     const double b15 = 1.0 / b7;
-    const double b16 = p2 * b10 * b15 * b13;
-    const double b17 = b11 * (b15 * b12) * b13;
+    const double b16 = p2 * b10 * b15 * b13 * sf;
+    const double b17 = b11 * (b15 * b12) * b13 * sf;
     const double b18 = b16 * Y_1 * Y_0 - b17 * Y_1 * Y_0;
     const double b19 = b16 * Y_2;
     const double b20 = b17 * Y_2;
@@ -2620,20 +2644,20 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.n_states = 0;
   d.damaged.moments = &bond_based_conical_3d_damaged_moments;
   d.damaged.residual = &bond_based_conical_3d_damaged_residual;
-  d.damaged.residual_ops = {7, 17, 2, 2};
+  d.damaged.residual_ops = {7, 18, 2, 2};
   d.damaged.tangent = &bond_based_conical_3d_damaged_tangent;
-  d.damaged.tangent_ops = {16, 46, 3, 2};
+  d.damaged.tangent_ops = {16, 50, 3, 2};
   d.damaged.jvp = &bond_based_conical_3d_damaged_jvp;
-  d.damaged.jvp_ops = {22, 52, 3, 2};
+  d.damaged.jvp_ops = {22, 55, 3, 2};
   d.damaged.energy = &bond_based_conical_3d_damaged_energy;
   d.damaged.form = &bond_based_conical_3d_damaged_form;
   d.intact.moments = &bond_based_conical_3d_intact_moments;
   d.intact.residual = &bond_based_conical_3d_intact_residual;
-  d.intact.residual_ops = {7, 16, 2, 2};
+  d.intact.residual_ops = {7, 17, 2, 2};
   d.intact.tangent = &bond_based_conical_3d_intact_tangent;
-  d.intact.tangent_ops = {16, 42, 3, 2};
+  d.intact.tangent_ops = {16, 46, 3, 2};
   d.intact.jvp = &bond_based_conical_3d_intact_jvp;
-  d.intact.jvp_ops = {22, 49, 3, 2};
+  d.intact.jvp_ops = {22, 52, 3, 2};
   d.intact.energy = &bond_based_conical_3d_intact_energy;
   d.intact.form = &bond_based_conical_3d_intact_form;
   return d;

@@ -46,7 +46,7 @@ void correspondence_plane_strain_damaged_moments(const pd::abi::Family& fam, dou
   moments[3] = s_shape_1_1;
 }
 
-// correspondence_plane_strain_damaged_residual: per bond 4 add, 24 mul, 0 div, 0 call; per family 13 add, 32 mul, 1 div, 0 call
+// correspondence_plane_strain_damaged_residual: per bond 4 add, 26 mul, 0 div, 0 call; per family 13 add, 32 mul, 1 div, 0 call
 void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -111,13 +111,14 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b15 = p9 * xi_0 - p10 * xi_1;
     const double b16 = p12 * xi_1 - p13 * xi_0;
-    const double b17 = V0 * (p8 * b15 + p11 * b16) * V * alpha * w;
-    const double b18 = V0 * (p11 * b15 + p14 * b16) * V * alpha * w;
+    const double b17 = V0 * (p8 * b15 + p11 * b16) * sf * V * alpha * w;
+    const double b18 = V0 * (p11 * b15 + p14 * b16) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b17;
     lane4[lane] += b17;
     forces[(k + 1) * 2 + 1] = -b18;
@@ -128,7 +129,7 @@ void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, do
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_plane_strain_damaged_tangent: per bond 12 add, 60 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
+// correspondence_plane_strain_damaged_tangent: per bond 12 add, 70 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
 void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -207,13 +208,14 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b29 = p10 * xi_0 - p11 * xi_1;
     const double b30 = p13 * xi_1 - p14 * xi_0;
-    const double b31 = V0 * (p9 * b29 + p12 * b30) * V * alpha * w;
-    const double b32 = V0 * (p12 * b29 + p15 * b30) * V * alpha * w;
+    const double b31 = V0 * (p9 * b29 + p12 * b30) * sf * V * alpha * w;
+    const double b32 = V0 * (p12 * b29 + p15 * b30) * sf * V * alpha * w;
     const double b33 = V * alpha * w;
     const double b34 = b33 * xi_0;
     const double b35 = b33 * xi_1;
@@ -227,27 +229,27 @@ void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, dou
     factors.direct[k * 4 + 3] = 0.0;
     factors.right[(k * 4 + 0) * 2 + 0] = b34;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p18 * b29 - p19 * b30) * alpha * w;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p17 * b30 - p19 * b29) * alpha * w;
+    factors.left[(k * 4 + 0) * 2 + 0] = (p18 * b29 - p19 * b30) * sf * alpha * w;
+    factors.left[(k * 4 + 0) * 2 + 1] = (p17 * b30 - p19 * b29) * sf * alpha * w;
     factors.right[(k * 4 + 1) * 2 + 0] = b35;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p21 * b29 + p22 * b30) * alpha * w;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p22 * b29 - p20 * b30) * alpha * w;
+    factors.left[(k * 4 + 1) * 2 + 0] = (p21 * b29 + p22 * b30) * sf * alpha * w;
+    factors.left[(k * 4 + 1) * 2 + 1] = (p22 * b29 - p20 * b30) * sf * alpha * w;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b34;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p23 * b30 - p24 * b29) * alpha * w;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p23 * b29 + p25 * b30) * alpha * w;
+    factors.left[(k * 4 + 2) * 2 + 0] = (p23 * b30 - p24 * b29) * sf * alpha * w;
+    factors.left[(k * 4 + 2) * 2 + 1] = (p23 * b29 + p25 * b30) * sf * alpha * w;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b35;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * alpha * w;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * alpha * w;
+    factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * sf * alpha * w;
+    factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_plane_strain_damaged_jvp: per bond 16 add, 58 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
+// correspondence_plane_strain_damaged_jvp: per bond 16 add, 66 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
 void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -318,13 +320,14 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double V = fam.V[k];
     const double b21 = p7 * xi_0 - p8 * xi_1;
     const double b22 = p10 * xi_1 - p11 * xi_0;
-    const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * alpha * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * alpha * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * alpha * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * alpha * w) * V;
-    const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * alpha * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * alpha * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * alpha * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * alpha * w) * V;
+    const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * sf * alpha * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * sf * alpha * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * sf * alpha * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * sf * alpha * w) * V;
+    const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * sf * alpha * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * sf * alpha * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * sf * alpha * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * sf * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b23;
     lane4[lane] += b23;
     df[(k + 1) * 2 + 1] = -b24;
@@ -579,7 +582,7 @@ void correspondence_plane_strain_intact_moments(const pd::abi::Family& fam, doub
   moments[3] = s_shape_1_1;
 }
 
-// correspondence_plane_strain_intact_residual: per bond 4 add, 21 mul, 0 div, 0 call; per family 13 add, 32 mul, 1 div, 0 call
+// correspondence_plane_strain_intact_residual: per bond 4 add, 23 mul, 0 div, 0 call; per family 13 add, 32 mul, 1 div, 0 call
 void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -643,12 +646,13 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b15 = p9 * xi_0 - p10 * xi_1;
     const double b16 = p12 * xi_1 - p13 * xi_0;
-    const double b17 = V0 * (p8 * b15 + p11 * b16) * V * w;
-    const double b18 = V0 * (p11 * b15 + p14 * b16) * V * w;
+    const double b17 = V0 * (p8 * b15 + p11 * b16) * sf * V * w;
+    const double b18 = V0 * (p11 * b15 + p14 * b16) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b17;
     lane4[lane] += b17;
     forces[(k + 1) * 2 + 1] = -b18;
@@ -659,7 +663,7 @@ void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, dou
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_plane_strain_intact_tangent: per bond 12 add, 48 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
+// correspondence_plane_strain_intact_tangent: per bond 12 add, 58 mul, 0 div, 0 call; per family 19 add, 49 mul, 1 div, 0 call
 void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -737,12 +741,13 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b29 = p10 * xi_0 - p11 * xi_1;
     const double b30 = p13 * xi_1 - p14 * xi_0;
-    const double b31 = V0 * (p9 * b29 + p12 * b30) * V * w;
-    const double b32 = V0 * (p12 * b29 + p15 * b30) * V * w;
+    const double b31 = V0 * (p9 * b29 + p12 * b30) * sf * V * w;
+    const double b32 = V0 * (p12 * b29 + p15 * b30) * sf * V * w;
     const double b33 = V * w;
     const double b34 = b33 * xi_0;
     const double b35 = b33 * xi_1;
@@ -756,27 +761,27 @@ void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, doub
     factors.direct[k * 4 + 3] = 0.0;
     factors.right[(k * 4 + 0) * 2 + 0] = b34;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p18 * b29 - p19 * b30) * w;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p17 * b30 - p19 * b29) * w;
+    factors.left[(k * 4 + 0) * 2 + 0] = (p18 * b29 - p19 * b30) * sf * w;
+    factors.left[(k * 4 + 0) * 2 + 1] = (p17 * b30 - p19 * b29) * sf * w;
     factors.right[(k * 4 + 1) * 2 + 0] = b35;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p21 * b29 + p22 * b30) * w;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p22 * b29 - p20 * b30) * w;
+    factors.left[(k * 4 + 1) * 2 + 0] = (p21 * b29 + p22 * b30) * sf * w;
+    factors.left[(k * 4 + 1) * 2 + 1] = (p22 * b29 - p20 * b30) * sf * w;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b34;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p23 * b30 - p24 * b29) * w;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p23 * b29 + p25 * b30) * w;
+    factors.left[(k * 4 + 2) * 2 + 0] = (p23 * b30 - p24 * b29) * sf * w;
+    factors.left[(k * 4 + 2) * 2 + 1] = (p23 * b29 + p25 * b30) * sf * w;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b35;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * w;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * w;
+    factors.left[(k * 4 + 3) * 2 + 0] = (p26 * b29 - p27 * b30) * sf * w;
+    factors.left[(k * 4 + 3) * 2 + 1] = (p28 * b30 - p27 * b29) * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_plane_strain_intact_jvp: per bond 16 add, 48 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
+// correspondence_plane_strain_intact_jvp: per bond 16 add, 56 mul, 0 div, 0 call; per family 8 add, 25 mul, 1 div, 0 call
 void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -846,12 +851,13 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
       const int k = k_group + lane;
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double V = fam.V[k];
     const double b21 = p7 * xi_0 - p8 * xi_1;
     const double b22 = p10 * xi_1 - p11 * xi_0;
-    const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * w) * V;
-    const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * w) * V;
+    const double b23 = V0 * (ds_deformed_shape_0_0 * (p6 * b21 - p9 * b22) * sf * w + ds_deformed_shape_0_1 * (p13 * b21 + p14 * b22) * sf * w + ds_deformed_shape_1_0 * (p15 * b22 - p16 * b21) * sf * w + ds_deformed_shape_1_1 * (p17 * b21 - p18 * b22) * sf * w) * V;
+    const double b24 = V0 * (ds_deformed_shape_0_0 * (p4 * b22 - p9 * b21) * sf * w + ds_deformed_shape_0_1 * (p14 * b21 - p12 * b22) * sf * w + ds_deformed_shape_1_0 * (p15 * b21 + p19 * b22) * sf * w + ds_deformed_shape_1_1 * (p20 * b22 - p18 * b21) * sf * w) * V;
     df[(k + 1) * 2 + 0] = -b23;
     lane4[lane] += b23;
     df[(k + 1) * 2 + 1] = -b24;
@@ -1084,21 +1090,21 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.n_states = 4;
   d.damaged.moments = &correspondence_plane_strain_damaged_moments;
   d.damaged.residual = &correspondence_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {4, 24, 0, 0};
+  d.damaged.residual_ops = {4, 26, 0, 0};
   d.damaged.tangent = &correspondence_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {12, 60, 0, 0};
+  d.damaged.tangent_ops = {12, 70, 0, 0};
   d.damaged.jvp = &correspondence_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {16, 58, 0, 0};
+  d.damaged.jvp_ops = {16, 66, 0, 0};
   d.damaged.energy = &correspondence_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_plane_strain_damaged_form;
   d.intact.moments = &correspondence_plane_strain_intact_moments;
   d.intact.residual = &correspondence_plane_strain_intact_residual;
-  d.intact.residual_ops = {4, 21, 0, 0};
+  d.intact.residual_ops = {4, 23, 0, 0};
   d.intact.tangent = &correspondence_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {12, 48, 0, 0};
+  d.intact.tangent_ops = {12, 58, 0, 0};
   d.intact.jvp = &correspondence_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {16, 48, 0, 0};
+  d.intact.jvp_ops = {16, 56, 0, 0};
   d.intact.energy = &correspondence_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_plane_strain_intact_outputs;
   d.intact.form = &correspondence_plane_strain_intact_form;
@@ -1173,7 +1179,7 @@ void correspondence_3d_damaged_moments(const pd::abi::Family& fam, double* momen
   moments[8] = s_shape_2_2;
 }
 
-// correspondence_3d_damaged_residual: per bond 12 add, 44 mul, 0 div, 0 call; per family 43 add, 88 mul, 1 div, 0 call
+// correspondence_3d_damaged_residual: per bond 12 add, 47 mul, 0 div, 0 call; per family 43 add, 88 mul, 1 div, 0 call
 void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -1288,15 +1294,16 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b36 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b37 = p27 * xi_0 + p25 * xi_1 + p30 * xi_2;
     const double b38 = p28 * xi_0 + p26 * xi_1 + p31 * xi_2;
-    const double b39 = V0 * (p21 * b36 + p29 * b37 + p32 * b38) * V * alpha * w;
-    const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * V * alpha * w;
-    const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * V * alpha * w;
+    const double b39 = V0 * (p21 * b36 + p29 * b37 + p32 * b38) * sf * V * alpha * w;
+    const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * sf * V * alpha * w;
+    const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b39;
     lane9[lane] += b39;
     forces[(k + 1) * 3 + 1] = -b40;
@@ -1310,7 +1317,7 @@ void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forc
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_3d_damaged_tangent: per bond 48 add, 157 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
+// correspondence_3d_damaged_tangent: per bond 48 add, 187 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
 void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -1463,15 +1470,16 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b74 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b75 = p37 * xi_0 + p35 * xi_1 + p40 * xi_2;
     const double b76 = p38 * xi_0 + p36 * xi_1 + p41 * xi_2;
-    const double b77 = V0 * (p31 * b74 + p39 * b75 + p42 * b76) * V * alpha * w;
-    const double b78 = V0 * (p39 * b74 + p43 * b75 + p44 * b76) * V * alpha * w;
-    const double b79 = V0 * (p42 * b74 + p44 * b75 + p45 * b76) * V * alpha * w;
+    const double b77 = V0 * (p31 * b74 + p39 * b75 + p42 * b76) * sf * V * alpha * w;
+    const double b78 = V0 * (p39 * b74 + p43 * b75 + p44 * b76) * sf * V * alpha * w;
+    const double b79 = V0 * (p42 * b74 + p44 * b75 + p45 * b76) * sf * V * alpha * w;
     const double b80 = V * alpha * w;
     const double b81 = b80 * xi_0;
     const double b82 = p49 * b75;
@@ -1503,57 +1511,57 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
     factors.right[(k * 9 + 0) * 3 + 0] = b81;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p48 * b74 + b82 + b83) * alpha * w;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p49 * b74 + p47 * b75) * alpha * w;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p50 * b74 + p47 * b76) * alpha * w;
+    factors.left[(k * 9 + 0) * 3 + 0] = (p48 * b74 + b82 + b83) * sf * alpha * w;
+    factors.left[(k * 9 + 0) * 3 + 1] = (p49 * b74 + p47 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 0) * 3 + 2] = (p50 * b74 + p47 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 1) * 3 + 0] = b84;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p52 * b74 + b85 + b86) * alpha * w;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p53 * b74 + p51 * b75) * alpha * w;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p54 * b74 + p51 * b76) * alpha * w;
+    factors.left[(k * 9 + 1) * 3 + 0] = (p52 * b74 + b85 + b86) * sf * alpha * w;
+    factors.left[(k * 9 + 1) * 3 + 1] = (p53 * b74 + p51 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 1) * 3 + 2] = (p54 * b74 + p51 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 2) * 3 + 0] = b87;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p56 * b74 + b88 + b89) * alpha * w;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p57 * b74 + p55 * b75) * alpha * w;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p58 * b74 + p55 * b76) * alpha * w;
+    factors.left[(k * 9 + 2) * 3 + 0] = (p56 * b74 + b88 + b89) * sf * alpha * w;
+    factors.left[(k * 9 + 2) * 3 + 1] = (p57 * b74 + p55 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 2) * 3 + 2] = (p58 * b74 + p55 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b81;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p59 * b74 + p60 * b75) * alpha * w;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b83 + b90 + p61 * b75) * alpha * w;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p50 * b75 + p59 * b76) * alpha * w;
+    factors.left[(k * 9 + 3) * 3 + 0] = (p59 * b74 + p60 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 3) * 3 + 1] = (b83 + b90 + p61 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 3) * 3 + 2] = (p50 * b75 + p59 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b84;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p62 * b74 + p63 * b75) * alpha * w;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b86 + b91 + p64 * b75) * alpha * w;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p54 * b75 + p62 * b76) * alpha * w;
+    factors.left[(k * 9 + 4) * 3 + 0] = (p62 * b74 + p63 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 4) * 3 + 1] = (b86 + b91 + p64 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 4) * 3 + 2] = (p54 * b75 + p62 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b87;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p65 * b74 + p66 * b75) * alpha * w;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b89 + b92 + p67 * b75) * alpha * w;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p58 * b75 + p65 * b76) * alpha * w;
+    factors.left[(k * 9 + 5) * 3 + 0] = (p65 * b74 + p66 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 5) * 3 + 1] = (b89 + b92 + p67 * b75) * sf * alpha * w;
+    factors.left[(k * 9 + 5) * 3 + 2] = (p58 * b75 + p65 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b81;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p68 * b74 + p60 * b76) * alpha * w;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p68 * b75 + p49 * b76) * alpha * w;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b82 + b90 + p69 * b76) * alpha * w;
+    factors.left[(k * 9 + 6) * 3 + 0] = (p68 * b74 + p60 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 6) * 3 + 1] = (p68 * b75 + p49 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 6) * 3 + 2] = (b82 + b90 + p69 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b84;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p70 * b74 + p63 * b76) * alpha * w;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p70 * b75 + p53 * b76) * alpha * w;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b85 + b91 + p71 * b76) * alpha * w;
+    factors.left[(k * 9 + 7) * 3 + 0] = (p70 * b74 + p63 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 7) * 3 + 1] = (p70 * b75 + p53 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 7) * 3 + 2] = (b85 + b91 + p71 * b76) * sf * alpha * w;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b87;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * alpha * w;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * alpha * w;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * alpha * w;
+    factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * sf * alpha * w;
+    factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -1561,7 +1569,7 @@ void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* force
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_3d_damaged_jvp: per bond 66 add, 168 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
+// correspondence_3d_damaged_jvp: per bond 66 add, 195 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
 void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -1694,6 +1702,7 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double V = fam.V[k];
@@ -1706,12 +1715,12 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
     const double b60 = p34 * b57;
     const double b61 = p37 * b55;
     const double b62 = p38 * b57;
-    const double b63 = V0 * (ds_deformed_shape_0_0 * (p12 * b54 + b56 + b58) * alpha * w + ds_deformed_shape_0_1 * (p32 * b54 + b59 + b60) * alpha * w + ds_deformed_shape_0_2 * (p36 * b54 + b61 + b62) * alpha * w + ds_deformed_shape_1_0 * (p39 * b54 + p40 * b55) * alpha * w + ds_deformed_shape_1_1 * (p41 * b54 + p42 * b55) * alpha * w + ds_deformed_shape_1_2 * (p43 * b54 + p44 * b55) * alpha * w + ds_deformed_shape_2_0 * (p45 * b54 + p40 * b57) * alpha * w + ds_deformed_shape_2_1 * (p46 * b54 + p42 * b57) * alpha * w + ds_deformed_shape_2_2 * (p47 * b54 + p44 * b57) * alpha * w) * V;
+    const double b63 = V0 * (ds_deformed_shape_0_0 * (p12 * b54 + b56 + b58) * sf * alpha * w + ds_deformed_shape_0_1 * (p32 * b54 + b59 + b60) * sf * alpha * w + ds_deformed_shape_0_2 * (p36 * b54 + b61 + b62) * sf * alpha * w + ds_deformed_shape_1_0 * (p39 * b54 + p40 * b55) * sf * alpha * w + ds_deformed_shape_1_1 * (p41 * b54 + p42 * b55) * sf * alpha * w + ds_deformed_shape_1_2 * (p43 * b54 + p44 * b55) * sf * alpha * w + ds_deformed_shape_2_0 * (p45 * b54 + p40 * b57) * sf * alpha * w + ds_deformed_shape_2_1 * (p46 * b54 + p42 * b57) * sf * alpha * w + ds_deformed_shape_2_2 * (p47 * b54 + p44 * b57) * sf * alpha * w) * V;
     const double b64 = p40 * b54;
     const double b65 = p42 * b54;
     const double b66 = p44 * b54;
-    const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * alpha * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * alpha * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * alpha * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * alpha * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * alpha * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * alpha * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * alpha * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * alpha * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * alpha * w) * V;
-    const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * alpha * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * alpha * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * alpha * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * alpha * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * alpha * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * alpha * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * alpha * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * alpha * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * alpha * w) * V;
+    const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * sf * alpha * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * sf * alpha * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * sf * alpha * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * sf * alpha * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * sf * alpha * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * sf * alpha * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * sf * alpha * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * sf * alpha * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * sf * alpha * w) * V;
+    const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * sf * alpha * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * sf * alpha * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * sf * alpha * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * sf * alpha * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * sf * alpha * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * sf * alpha * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * sf * alpha * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * sf * alpha * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * sf * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b63;
     lane9[lane] += b63;
     df[(k + 1) * 3 + 1] = -b67;
@@ -2225,7 +2234,7 @@ void correspondence_3d_intact_moments(const pd::abi::Family& fam, double* moment
   moments[8] = s_shape_2_2;
 }
 
-// correspondence_3d_intact_residual: per bond 12 add, 40 mul, 0 div, 0 call; per family 43 add, 88 mul, 1 div, 0 call
+// correspondence_3d_intact_residual: per bond 12 add, 43 mul, 0 div, 0 call; per family 43 add, 88 mul, 1 div, 0 call
 void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -2339,14 +2348,15 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b36 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b37 = p27 * xi_0 + p25 * xi_1 + p30 * xi_2;
     const double b38 = p28 * xi_0 + p26 * xi_1 + p31 * xi_2;
-    const double b39 = V0 * (p21 * b36 + p29 * b37 + p32 * b38) * V * w;
-    const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * V * w;
-    const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * V * w;
+    const double b39 = V0 * (p21 * b36 + p29 * b37 + p32 * b38) * sf * V * w;
+    const double b40 = V0 * (p29 * b36 + p33 * b37 + p34 * b38) * sf * V * w;
+    const double b41 = V0 * (p32 * b36 + p34 * b37 + p35 * b38) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b39;
     lane9[lane] += b39;
     forces[(k + 1) * 3 + 1] = -b40;
@@ -2360,7 +2370,7 @@ void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* force
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_3d_intact_tangent: per bond 48 add, 125 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
+// correspondence_3d_intact_tangent: per bond 48 add, 155 mul, 0 div, 0 call; per family 52 add, 123 mul, 1 div, 0 call
 void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -2512,14 +2522,15 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b74 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b75 = p37 * xi_0 + p35 * xi_1 + p40 * xi_2;
     const double b76 = p38 * xi_0 + p36 * xi_1 + p41 * xi_2;
-    const double b77 = V0 * (p31 * b74 + p39 * b75 + p42 * b76) * V * w;
-    const double b78 = V0 * (p39 * b74 + p43 * b75 + p44 * b76) * V * w;
-    const double b79 = V0 * (p42 * b74 + p44 * b75 + p45 * b76) * V * w;
+    const double b77 = V0 * (p31 * b74 + p39 * b75 + p42 * b76) * sf * V * w;
+    const double b78 = V0 * (p39 * b74 + p43 * b75 + p44 * b76) * sf * V * w;
+    const double b79 = V0 * (p42 * b74 + p44 * b75 + p45 * b76) * sf * V * w;
     const double b80 = V * w;
     const double b81 = b80 * xi_0;
     const double b82 = p49 * b75;
@@ -2551,57 +2562,57 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
     factors.right[(k * 9 + 0) * 3 + 0] = b81;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p48 * b74 + b82 + b83) * w;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p49 * b74 + p47 * b75) * w;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p50 * b74 + p47 * b76) * w;
+    factors.left[(k * 9 + 0) * 3 + 0] = (p48 * b74 + b82 + b83) * sf * w;
+    factors.left[(k * 9 + 0) * 3 + 1] = (p49 * b74 + p47 * b75) * sf * w;
+    factors.left[(k * 9 + 0) * 3 + 2] = (p50 * b74 + p47 * b76) * sf * w;
     factors.right[(k * 9 + 1) * 3 + 0] = b84;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p52 * b74 + b85 + b86) * w;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p53 * b74 + p51 * b75) * w;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p54 * b74 + p51 * b76) * w;
+    factors.left[(k * 9 + 1) * 3 + 0] = (p52 * b74 + b85 + b86) * sf * w;
+    factors.left[(k * 9 + 1) * 3 + 1] = (p53 * b74 + p51 * b75) * sf * w;
+    factors.left[(k * 9 + 1) * 3 + 2] = (p54 * b74 + p51 * b76) * sf * w;
     factors.right[(k * 9 + 2) * 3 + 0] = b87;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p56 * b74 + b88 + b89) * w;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p57 * b74 + p55 * b75) * w;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p58 * b74 + p55 * b76) * w;
+    factors.left[(k * 9 + 2) * 3 + 0] = (p56 * b74 + b88 + b89) * sf * w;
+    factors.left[(k * 9 + 2) * 3 + 1] = (p57 * b74 + p55 * b75) * sf * w;
+    factors.left[(k * 9 + 2) * 3 + 2] = (p58 * b74 + p55 * b76) * sf * w;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b81;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p59 * b74 + p60 * b75) * w;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b83 + b90 + p61 * b75) * w;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p50 * b75 + p59 * b76) * w;
+    factors.left[(k * 9 + 3) * 3 + 0] = (p59 * b74 + p60 * b75) * sf * w;
+    factors.left[(k * 9 + 3) * 3 + 1] = (b83 + b90 + p61 * b75) * sf * w;
+    factors.left[(k * 9 + 3) * 3 + 2] = (p50 * b75 + p59 * b76) * sf * w;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b84;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p62 * b74 + p63 * b75) * w;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b86 + b91 + p64 * b75) * w;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p54 * b75 + p62 * b76) * w;
+    factors.left[(k * 9 + 4) * 3 + 0] = (p62 * b74 + p63 * b75) * sf * w;
+    factors.left[(k * 9 + 4) * 3 + 1] = (b86 + b91 + p64 * b75) * sf * w;
+    factors.left[(k * 9 + 4) * 3 + 2] = (p54 * b75 + p62 * b76) * sf * w;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b87;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p65 * b74 + p66 * b75) * w;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b89 + b92 + p67 * b75) * w;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p58 * b75 + p65 * b76) * w;
+    factors.left[(k * 9 + 5) * 3 + 0] = (p65 * b74 + p66 * b75) * sf * w;
+    factors.left[(k * 9 + 5) * 3 + 1] = (b89 + b92 + p67 * b75) * sf * w;
+    factors.left[(k * 9 + 5) * 3 + 2] = (p58 * b75 + p65 * b76) * sf * w;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b81;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p68 * b74 + p60 * b76) * w;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p68 * b75 + p49 * b76) * w;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b82 + b90 + p69 * b76) * w;
+    factors.left[(k * 9 + 6) * 3 + 0] = (p68 * b74 + p60 * b76) * sf * w;
+    factors.left[(k * 9 + 6) * 3 + 1] = (p68 * b75 + p49 * b76) * sf * w;
+    factors.left[(k * 9 + 6) * 3 + 2] = (b82 + b90 + p69 * b76) * sf * w;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b84;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p70 * b74 + p63 * b76) * w;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p70 * b75 + p53 * b76) * w;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b85 + b91 + p71 * b76) * w;
+    factors.left[(k * 9 + 7) * 3 + 0] = (p70 * b74 + p63 * b76) * sf * w;
+    factors.left[(k * 9 + 7) * 3 + 1] = (p70 * b75 + p53 * b76) * sf * w;
+    factors.left[(k * 9 + 7) * 3 + 2] = (b85 + b91 + p71 * b76) * sf * w;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b87;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * w;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * w;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * w;
+    factors.left[(k * 9 + 8) * 3 + 0] = (p72 * b74 + p66 * b76) * sf * w;
+    factors.left[(k * 9 + 8) * 3 + 1] = (p72 * b75 + p57 * b76) * sf * w;
+    factors.left[(k * 9 + 8) * 3 + 2] = (b88 + b92 + p73 * b76) * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -2609,7 +2620,7 @@ void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_3d_intact_jvp: per bond 66 add, 138 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
+// correspondence_3d_intact_jvp: per bond 66 add, 165 mul, 0 div, 0 call; per family 22 add, 83 mul, 1 div, 0 call
 void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -2741,6 +2752,7 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double V = fam.V[k];
     const double b54 = p13 * xi_0 + p15 * xi_1 + p17 * xi_2;
@@ -2752,12 +2764,12 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b60 = p34 * b57;
     const double b61 = p37 * b55;
     const double b62 = p38 * b57;
-    const double b63 = V0 * (ds_deformed_shape_0_0 * (p12 * b54 + b56 + b58) * w + ds_deformed_shape_0_1 * (p32 * b54 + b59 + b60) * w + ds_deformed_shape_0_2 * (p36 * b54 + b61 + b62) * w + ds_deformed_shape_1_0 * (p39 * b54 + p40 * b55) * w + ds_deformed_shape_1_1 * (p41 * b54 + p42 * b55) * w + ds_deformed_shape_1_2 * (p43 * b54 + p44 * b55) * w + ds_deformed_shape_2_0 * (p45 * b54 + p40 * b57) * w + ds_deformed_shape_2_1 * (p46 * b54 + p42 * b57) * w + ds_deformed_shape_2_2 * (p47 * b54 + p44 * b57) * w) * V;
+    const double b63 = V0 * (ds_deformed_shape_0_0 * (p12 * b54 + b56 + b58) * sf * w + ds_deformed_shape_0_1 * (p32 * b54 + b59 + b60) * sf * w + ds_deformed_shape_0_2 * (p36 * b54 + b61 + b62) * sf * w + ds_deformed_shape_1_0 * (p39 * b54 + p40 * b55) * sf * w + ds_deformed_shape_1_1 * (p41 * b54 + p42 * b55) * sf * w + ds_deformed_shape_1_2 * (p43 * b54 + p44 * b55) * sf * w + ds_deformed_shape_2_0 * (p45 * b54 + p40 * b57) * sf * w + ds_deformed_shape_2_1 * (p46 * b54 + p42 * b57) * sf * w + ds_deformed_shape_2_2 * (p47 * b54 + p44 * b57) * sf * w) * V;
     const double b64 = p40 * b54;
     const double b65 = p42 * b54;
     const double b66 = p44 * b54;
-    const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * w) * V;
-    const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * w) * V;
+    const double b67 = V0 * (ds_deformed_shape_0_0 * (p18 * b54 + p10 * b55) * sf * w + ds_deformed_shape_0_1 * (p33 * b54 + p31 * b55) * sf * w + ds_deformed_shape_0_2 * (p37 * b54 + p35 * b55) * sf * w + ds_deformed_shape_1_0 * (b58 + b64 + p48 * b55) * sf * w + ds_deformed_shape_1_1 * (b60 + b65 + p49 * b55) * sf * w + ds_deformed_shape_1_2 * (b62 + b66 + p50 * b55) * sf * w + ds_deformed_shape_2_0 * (p45 * b55 + p18 * b57) * sf * w + ds_deformed_shape_2_1 * (p46 * b55 + p33 * b57) * sf * w + ds_deformed_shape_2_2 * (p47 * b55 + p37 * b57) * sf * w) * V;
+    const double b68 = V0 * (ds_deformed_shape_0_0 * (p25 * b54 + p10 * b57) * sf * w + ds_deformed_shape_0_1 * (p34 * b54 + p31 * b57) * sf * w + ds_deformed_shape_0_2 * (p38 * b54 + p35 * b57) * sf * w + ds_deformed_shape_1_0 * (p25 * b55 + p39 * b57) * sf * w + ds_deformed_shape_1_1 * (p34 * b55 + p41 * b57) * sf * w + ds_deformed_shape_1_2 * (p38 * b55 + p43 * b57) * sf * w + ds_deformed_shape_2_0 * (b56 + b64 + p51 * b57) * sf * w + ds_deformed_shape_2_1 * (b59 + b65 + p52 * b57) * sf * w + ds_deformed_shape_2_2 * (b61 + b66 + p53 * b57) * sf * w) * V;
     df[(k + 1) * 3 + 0] = -b63;
     lane9[lane] += b63;
     df[(k + 1) * 3 + 1] = -b67;
@@ -3220,21 +3232,21 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.n_states = 9;
   d.damaged.moments = &correspondence_3d_damaged_moments;
   d.damaged.residual = &correspondence_3d_damaged_residual;
-  d.damaged.residual_ops = {12, 44, 0, 0};
+  d.damaged.residual_ops = {12, 47, 0, 0};
   d.damaged.tangent = &correspondence_3d_damaged_tangent;
-  d.damaged.tangent_ops = {48, 157, 0, 0};
+  d.damaged.tangent_ops = {48, 187, 0, 0};
   d.damaged.jvp = &correspondence_3d_damaged_jvp;
-  d.damaged.jvp_ops = {66, 168, 0, 0};
+  d.damaged.jvp_ops = {66, 195, 0, 0};
   d.damaged.energy = &correspondence_3d_damaged_energy;
   d.damaged.outputs = &correspondence_3d_damaged_outputs;
   d.damaged.form = &correspondence_3d_damaged_form;
   d.intact.moments = &correspondence_3d_intact_moments;
   d.intact.residual = &correspondence_3d_intact_residual;
-  d.intact.residual_ops = {12, 40, 0, 0};
+  d.intact.residual_ops = {12, 43, 0, 0};
   d.intact.tangent = &correspondence_3d_intact_tangent;
-  d.intact.tangent_ops = {48, 125, 0, 0};
+  d.intact.tangent_ops = {48, 155, 0, 0};
   d.intact.jvp = &correspondence_3d_intact_jvp;
-  d.intact.jvp_ops = {66, 138, 0, 0};
+  d.intact.jvp_ops = {66, 165, 0, 0};
   d.intact.energy = &correspondence_3d_intact_energy;
   d.intact.outputs = &correspondence_3d_intact_outputs;
   d.intact.form = &correspondence_3d_intact_form;
@@ -3291,7 +3303,7 @@ void correspondence_silling_plane_strain_damaged_moments(const pd::abi::Family& 
   moments[5] = s_influence_volume;
 }
 
-// correspondence_silling_plane_strain_damaged_residual: per bond 10 add, 34 mul, 0 div, 0 call; per family 18 add, 44 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_damaged_residual: per bond 10 add, 36 mul, 0 div, 0 call; per family 18 add, 44 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -3378,12 +3390,13 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double b30 = p9 * xi_0 - p10 * xi_1;
     const double b31 = p20 * xi_1 - p21 * xi_0;
-    const double b32 = V0 * ((p8 * b30 + p19 * b31) * alpha * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * alpha * w) * V;
-    const double b33 = V0 * ((p19 * b30 + p27 * b31) * alpha * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * alpha * w) * V;
+    const double b32 = V0 * ((p8 * b30 + p19 * b31) * alpha * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * alpha * w) * sf * V;
+    const double b33 = V0 * ((p19 * b30 + p27 * b31) * alpha * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * alpha * w) * sf * V;
     forces[(k + 1) * 2 + 0] = -b32;
     lane4[lane] += b32;
     forces[(k + 1) * 2 + 1] = -b33;
@@ -3394,7 +3407,7 @@ void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family&
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_silling_plane_strain_damaged_tangent: per bond 22 add, 78 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_damaged_tangent: per bond 22 add, 89 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -3495,13 +3508,14 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double b44 = p10 * xi_0 - p11 * xi_1;
     const double b45 = p21 * xi_1 - p22 * xi_0;
-    const double b46 = V0 * ((p9 * b44 + p20 * b45) * alpha * w + p25 * (Y_0 - (p26 * xi_0 + p27 * xi_1)) * alpha * w) * V;
-    const double b47 = V0 * ((p20 * b44 + p28 * b45) * alpha * w + p25 * (Y_1 - (p29 * xi_0 + p30 * xi_1)) * alpha * w) * V;
-    const double b48 = p25 * alpha * w;
+    const double b46 = V0 * ((p9 * b44 + p20 * b45) * alpha * w + p25 * (Y_0 - (p26 * xi_0 + p27 * xi_1)) * alpha * w) * sf * V;
+    const double b47 = V0 * ((p20 * b44 + p28 * b45) * alpha * w + p25 * (Y_1 - (p29 * xi_0 + p30 * xi_1)) * alpha * w) * sf * V;
+    const double b48 = p25 * sf * alpha * w;
     const double b49 = V * alpha * w;
     const double b50 = b49 * xi_0;
     const double b51 = p25 * b44 * alpha * w;
@@ -3517,27 +3531,27 @@ void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& 
     factors.direct[k * 4 + 3] = b48;
     factors.right[(k * 4 + 0) * 2 + 0] = b50;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p33 * b44 - p34 * b45) * alpha * w - b51;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p32 * b45 - p34 * b44) * alpha * w;
+    factors.left[(k * 4 + 0) * 2 + 0] = ((p33 * b44 - p34 * b45) * alpha * w - b51) * sf;
+    factors.left[(k * 4 + 0) * 2 + 1] = (p32 * b45 - p34 * b44) * sf * alpha * w;
     factors.right[(k * 4 + 1) * 2 + 0] = b52;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p36 * b44 + p37 * b45) * alpha * w - b53;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p37 * b44 - p35 * b45) * alpha * w;
+    factors.left[(k * 4 + 1) * 2 + 0] = ((p36 * b44 + p37 * b45) * alpha * w - b53) * sf;
+    factors.left[(k * 4 + 1) * 2 + 1] = (p37 * b44 - p35 * b45) * sf * alpha * w;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b50;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p38 * b45 - p39 * b44) * alpha * w;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p38 * b44 + p40 * b45) * alpha * w - b51;
+    factors.left[(k * 4 + 2) * 2 + 0] = (p38 * b45 - p39 * b44) * sf * alpha * w;
+    factors.left[(k * 4 + 2) * 2 + 1] = ((p38 * b44 + p40 * b45) * alpha * w - b51) * sf;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b52;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * alpha * w;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p43 * b45 - p42 * b44) * alpha * w - b53;
+    factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * sf * alpha * w;
+    factors.left[(k * 4 + 3) * 2 + 1] = ((p43 * b45 - p42 * b44) * alpha * w - b53) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_silling_plane_strain_damaged_jvp: per bond 22 add, 70 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_damaged_jvp: per bond 22 add, 80 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -3617,6 +3631,7 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -3624,8 +3639,8 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
     const double b25 = p10 * xi_1 - p11 * xi_0;
     const double b26 = p14 * b24 * alpha * w;
     const double b27 = p14 * b25 * alpha * w;
-    const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * alpha * w - b26) + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * alpha * w - b27) + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * alpha * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * alpha * w + p14 * dY_0 * alpha * w) * V;
-    const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * alpha * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * alpha * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * alpha * w - b26) + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * alpha * w - b27) + p14 * dY_1 * alpha * w) * V;
+    const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * alpha * w - b26) * sf + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * alpha * w - b27) * sf + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * sf * alpha * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * sf * alpha * w + p14 * dY_0 * sf * alpha * w) * V;
+    const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * sf * alpha * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * sf * alpha * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * alpha * w - b26) * sf + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * alpha * w - b27) * sf + p14 * dY_1 * sf * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b28;
     lane4[lane] += b28;
     df[(k + 1) * 2 + 1] = -b29;
@@ -3928,7 +3943,7 @@ void correspondence_silling_plane_strain_intact_moments(const pd::abi::Family& f
   moments[5] = s_influence_volume;
 }
 
-// correspondence_silling_plane_strain_intact_residual: per bond 10 add, 29 mul, 0 div, 0 call; per family 18 add, 44 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_intact_residual: per bond 10 add, 31 mul, 0 div, 0 call; per family 18 add, 44 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -4013,12 +4028,13 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double b30 = p9 * xi_0 - p10 * xi_1;
     const double b31 = p20 * xi_1 - p21 * xi_0;
-    const double b32 = V0 * ((p8 * b30 + p19 * b31) * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * w) * V;
-    const double b33 = V0 * ((p19 * b30 + p27 * b31) * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * w) * V;
+    const double b32 = V0 * ((p8 * b30 + p19 * b31) * w + p24 * (Y_0 - (p25 * xi_0 + p26 * xi_1)) * w) * sf * V;
+    const double b33 = V0 * ((p19 * b30 + p27 * b31) * w + p24 * (Y_1 - (p28 * xi_0 + p29 * xi_1)) * w) * sf * V;
     forces[(k + 1) * 2 + 0] = -b32;
     lane4[lane] += b32;
     forces[(k + 1) * 2 + 1] = -b33;
@@ -4029,7 +4045,7 @@ void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& 
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_silling_plane_strain_intact_tangent: per bond 22 add, 61 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_intact_tangent: per bond 22 add, 72 mul, 0 div, 0 call; per family 24 add, 61 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -4128,13 +4144,14 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double b44 = p10 * xi_0 - p11 * xi_1;
     const double b45 = p21 * xi_1 - p22 * xi_0;
-    const double b46 = V0 * ((p9 * b44 + p20 * b45) * w + p25 * (Y_0 - (p26 * xi_0 + p27 * xi_1)) * w) * V;
-    const double b47 = V0 * ((p20 * b44 + p28 * b45) * w + p25 * (Y_1 - (p29 * xi_0 + p30 * xi_1)) * w) * V;
-    const double b48 = p25 * w;
+    const double b46 = V0 * ((p9 * b44 + p20 * b45) * w + p25 * (Y_0 - (p26 * xi_0 + p27 * xi_1)) * w) * sf * V;
+    const double b47 = V0 * ((p20 * b44 + p28 * b45) * w + p25 * (Y_1 - (p29 * xi_0 + p30 * xi_1)) * w) * sf * V;
+    const double b48 = p25 * sf * w;
     const double b49 = V * w;
     const double b50 = b49 * xi_0;
     const double b51 = p25 * b44 * w;
@@ -4150,27 +4167,27 @@ void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& f
     factors.direct[k * 4 + 3] = b48;
     factors.right[(k * 4 + 0) * 2 + 0] = b50;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p33 * b44 - p34 * b45) * w - b51;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p32 * b45 - p34 * b44) * w;
+    factors.left[(k * 4 + 0) * 2 + 0] = ((p33 * b44 - p34 * b45) * w - b51) * sf;
+    factors.left[(k * 4 + 0) * 2 + 1] = (p32 * b45 - p34 * b44) * sf * w;
     factors.right[(k * 4 + 1) * 2 + 0] = b52;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p36 * b44 + p37 * b45) * w - b53;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p37 * b44 - p35 * b45) * w;
+    factors.left[(k * 4 + 1) * 2 + 0] = ((p36 * b44 + p37 * b45) * w - b53) * sf;
+    factors.left[(k * 4 + 1) * 2 + 1] = (p37 * b44 - p35 * b45) * sf * w;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b50;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p38 * b45 - p39 * b44) * w;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p38 * b44 + p40 * b45) * w - b51;
+    factors.left[(k * 4 + 2) * 2 + 0] = (p38 * b45 - p39 * b44) * sf * w;
+    factors.left[(k * 4 + 2) * 2 + 1] = ((p38 * b44 + p40 * b45) * w - b51) * sf;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b52;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * w;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p43 * b45 - p42 * b44) * w - b53;
+    factors.left[(k * 4 + 3) * 2 + 0] = (p41 * b44 - p42 * b45) * sf * w;
+    factors.left[(k * 4 + 3) * 2 + 1] = ((p43 * b45 - p42 * b44) * w - b53) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_silling_plane_strain_intact_jvp: per bond 22 add, 56 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
+// correspondence_silling_plane_strain_intact_jvp: per bond 22 add, 66 mul, 0 div, 0 call; per family 9 add, 33 mul, 3 div, 0 call
 void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -4248,6 +4265,7 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double V = fam.V[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -4255,8 +4273,8 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
     const double b25 = p10 * xi_1 - p11 * xi_0;
     const double b26 = p14 * b24 * w;
     const double b27 = p14 * b25 * w;
-    const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * w - b26) + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * w - b27) + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * w + p14 * dY_0 * w) * V;
-    const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * w - b26) + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * w - b27) + p14 * dY_1 * w) * V;
+    const double b28 = V0 * (ds_deformed_shape_0_0 * ((p6 * b24 - p9 * b25) * w - b26) * sf + ds_deformed_shape_0_1 * ((p16 * b24 + p17 * b25) * w - b27) * sf + ds_deformed_shape_1_0 * (p18 * b25 - p19 * b24) * sf * w + ds_deformed_shape_1_1 * (p20 * b24 - p21 * b25) * sf * w + p14 * dY_0 * sf * w) * V;
+    const double b29 = V0 * (ds_deformed_shape_0_0 * (p4 * b25 - p9 * b24) * sf * w + ds_deformed_shape_0_1 * (p17 * b24 - p15 * b25) * sf * w + ds_deformed_shape_1_0 * ((p18 * b24 + p22 * b25) * w - b26) * sf + ds_deformed_shape_1_1 * ((p23 * b25 - p21 * b24) * w - b27) * sf + p14 * dY_1 * sf * w) * V;
     df[(k + 1) * 2 + 0] = -b28;
     lane4[lane] += b28;
     df[(k + 1) * 2 + 1] = -b29;
@@ -4526,21 +4544,21 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.n_states = 4;
   d.damaged.moments = &correspondence_silling_plane_strain_damaged_moments;
   d.damaged.residual = &correspondence_silling_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {10, 34, 0, 0};
+  d.damaged.residual_ops = {10, 36, 0, 0};
   d.damaged.tangent = &correspondence_silling_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {22, 78, 0, 0};
+  d.damaged.tangent_ops = {22, 89, 0, 0};
   d.damaged.jvp = &correspondence_silling_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {22, 70, 0, 0};
+  d.damaged.jvp_ops = {22, 80, 0, 0};
   d.damaged.energy = &correspondence_silling_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_silling_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_silling_plane_strain_damaged_form;
   d.intact.moments = &correspondence_silling_plane_strain_intact_moments;
   d.intact.residual = &correspondence_silling_plane_strain_intact_residual;
-  d.intact.residual_ops = {10, 29, 0, 0};
+  d.intact.residual_ops = {10, 31, 0, 0};
   d.intact.tangent = &correspondence_silling_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {22, 61, 0, 0};
+  d.intact.tangent_ops = {22, 72, 0, 0};
   d.intact.jvp = &correspondence_silling_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {22, 56, 0, 0};
+  d.intact.jvp_ops = {22, 66, 0, 0};
   d.intact.energy = &correspondence_silling_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_silling_plane_strain_intact_outputs;
   d.intact.form = &correspondence_silling_plane_strain_intact_form;
@@ -4626,7 +4644,7 @@ void correspondence_silling_3d_damaged_moments(const pd::abi::Family& fam, doubl
   moments[10] = s_influence_volume;
 }
 
-// correspondence_silling_3d_damaged_residual: per bond 24 add, 62 mul, 0 div, 0 call; per family 55 add, 105 mul, 3 div, 0 call
+// correspondence_silling_3d_damaged_residual: per bond 24 add, 65 mul, 0 div, 0 call; per family 55 add, 105 mul, 3 div, 0 call
 void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -4769,15 +4787,16 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double b57 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b58 = p29 * xi_0 + p25 * xi_1 + p34 * xi_2;
     const double b59 = p31 * xi_0 + p26 * xi_1 + p35 * xi_2;
-    const double b60 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * alpha * w + p43 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * alpha * w) * V;
-    const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * alpha * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * alpha * w) * V;
-    const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * alpha * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * alpha * w) * V;
+    const double b60 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * alpha * w + p43 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * alpha * w) * sf * V;
+    const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * alpha * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * alpha * w) * sf * V;
+    const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * alpha * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * alpha * w) * sf * V;
     forces[(k + 1) * 3 + 0] = -b60;
     lane9[lane] += b60;
     forces[(k + 1) * 3 + 1] = -b61;
@@ -4791,7 +4810,7 @@ void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, doub
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_silling_3d_damaged_tangent: per bond 69 add, 186 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
+// correspondence_silling_3d_damaged_tangent: per bond 69 add, 217 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
 void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -4972,16 +4991,17 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double b95 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b96 = p39 * xi_0 + p35 * xi_1 + p44 * xi_2;
     const double b97 = p41 * xi_0 + p36 * xi_1 + p45 * xi_2;
-    const double b98 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * alpha * w + p53 * (Y_0 - (p54 * xi_0 + p37 * xi_1 + p46 * xi_2)) * alpha * w) * V;
-    const double b99 = V0 * ((p43 * b95 + p55 * b96 + p60 * b97) * alpha * w + p53 * (Y_1 - (p61 * xi_0 + p62 * xi_1 + p56 * xi_2)) * alpha * w) * V;
-    const double b100 = V0 * ((p50 * b95 + p60 * b96 + p63 * b97) * alpha * w + p53 * (Y_2 - (p64 * xi_0 + p65 * xi_1 + p66 * xi_2)) * alpha * w) * V;
-    const double b101 = p53 * alpha * w;
+    const double b98 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * alpha * w + p53 * (Y_0 - (p54 * xi_0 + p37 * xi_1 + p46 * xi_2)) * alpha * w) * sf * V;
+    const double b99 = V0 * ((p43 * b95 + p55 * b96 + p60 * b97) * alpha * w + p53 * (Y_1 - (p61 * xi_0 + p62 * xi_1 + p56 * xi_2)) * alpha * w) * sf * V;
+    const double b100 = V0 * ((p50 * b95 + p60 * b96 + p63 * b97) * alpha * w + p53 * (Y_2 - (p64 * xi_0 + p65 * xi_1 + p66 * xi_2)) * alpha * w) * sf * V;
+    const double b101 = p53 * sf * alpha * w;
     const double b102 = V * alpha * w;
     const double b103 = b102 * xi_0;
     const double b104 = p70 * b96;
@@ -5016,57 +5036,57 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
     factors.right[(k * 9 + 0) * 3 + 0] = b103;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p69 * b95 + b104 + b105) * alpha * w - b106;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * alpha * w;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * alpha * w;
+    factors.left[(k * 9 + 0) * 3 + 0] = ((p69 * b95 + b104 + b105) * alpha * w - b106) * sf;
+    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 1) * 3 + 0] = b107;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p73 * b95 + b108 + b109) * alpha * w - b110;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * alpha * w;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * alpha * w;
+    factors.left[(k * 9 + 1) * 3 + 0] = ((p73 * b95 + b108 + b109) * alpha * w - b110) * sf;
+    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 2) * 3 + 0] = b111;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p77 * b95 + b112 + b113) * alpha * w - b114;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * alpha * w;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * alpha * w;
+    factors.left[(k * 9 + 2) * 3 + 0] = ((p77 * b95 + b112 + b113) * alpha * w - b114) * sf;
+    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b103;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * alpha * w;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b105 + b115 + p82 * b96) * alpha * w - b106;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * alpha * w;
+    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 3) * 3 + 1] = ((b105 + b115 + p82 * b96) * alpha * w - b106) * sf;
+    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b107;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * alpha * w;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b109 + b116 + p85 * b96) * alpha * w - b110;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * alpha * w;
+    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 4) * 3 + 1] = ((b109 + b116 + p85 * b96) * alpha * w - b110) * sf;
+    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b111;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * alpha * w;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b113 + b117 + p88 * b96) * alpha * w - b114;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * alpha * w;
+    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * sf * alpha * w;
+    factors.left[(k * 9 + 5) * 3 + 1] = ((b113 + b117 + p88 * b96) * alpha * w - b114) * sf;
+    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * sf * alpha * w;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b103;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * alpha * w;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * alpha * w;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b104 + b115 + p90 * b97) * alpha * w - b106;
+    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 6) * 3 + 2] = ((b104 + b115 + p90 * b97) * alpha * w - b106) * sf;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b107;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * alpha * w;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * alpha * w;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b108 + b116 + p92 * b97) * alpha * w - b110;
+    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 7) * 3 + 2] = ((b108 + b116 + p92 * b97) * alpha * w - b110) * sf;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b111;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * alpha * w;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * alpha * w;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b112 + b117 + p94 * b97) * alpha * w - b114;
+    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * sf * alpha * w;
+    factors.left[(k * 9 + 8) * 3 + 2] = ((b112 + b117 + p94 * b97) * alpha * w - b114) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -5074,7 +5094,7 @@ void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, doubl
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_silling_3d_damaged_jvp: per bond 78 add, 186 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
+// correspondence_silling_3d_damaged_jvp: per bond 78 add, 216 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
 void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -5216,6 +5236,7 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
     const double xi_2 = fam.xi[k * 3 + 2];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -5232,12 +5253,12 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
     const double b66 = p40 * b58;
     const double b67 = p41 * b60;
     const double b68 = p33 * b60 * alpha * w;
-    const double b69 = V0 * (ds_deformed_shape_0_0 * ((p12 * b57 + b59 + b61) * alpha * w - b62) + ds_deformed_shape_0_1 * ((p35 * b57 + b63 + b64) * alpha * w - b65) + ds_deformed_shape_0_2 * ((p39 * b57 + b66 + b67) * alpha * w - b68) + ds_deformed_shape_1_0 * (p42 * b57 + p43 * b58) * alpha * w + ds_deformed_shape_1_1 * (p44 * b57 + p45 * b58) * alpha * w + ds_deformed_shape_1_2 * (p46 * b57 + p47 * b58) * alpha * w + ds_deformed_shape_2_0 * (p48 * b57 + p43 * b60) * alpha * w + ds_deformed_shape_2_1 * (p49 * b57 + p45 * b60) * alpha * w + ds_deformed_shape_2_2 * (p50 * b57 + p47 * b60) * alpha * w + p33 * dY_0 * alpha * w) * V;
+    const double b69 = V0 * (ds_deformed_shape_0_0 * ((p12 * b57 + b59 + b61) * alpha * w - b62) * sf + ds_deformed_shape_0_1 * ((p35 * b57 + b63 + b64) * alpha * w - b65) * sf + ds_deformed_shape_0_2 * ((p39 * b57 + b66 + b67) * alpha * w - b68) * sf + ds_deformed_shape_1_0 * (p42 * b57 + p43 * b58) * sf * alpha * w + ds_deformed_shape_1_1 * (p44 * b57 + p45 * b58) * sf * alpha * w + ds_deformed_shape_1_2 * (p46 * b57 + p47 * b58) * sf * alpha * w + ds_deformed_shape_2_0 * (p48 * b57 + p43 * b60) * sf * alpha * w + ds_deformed_shape_2_1 * (p49 * b57 + p45 * b60) * sf * alpha * w + ds_deformed_shape_2_2 * (p50 * b57 + p47 * b60) * sf * alpha * w + p33 * dY_0 * sf * alpha * w) * V;
     const double b70 = p43 * b57;
     const double b71 = p45 * b57;
     const double b72 = p47 * b57;
-    const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * alpha * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * alpha * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * alpha * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * alpha * w - b62) + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * alpha * w - b65) + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * alpha * w - b68) + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * alpha * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * alpha * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * alpha * w + p33 * dY_1 * alpha * w) * V;
-    const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * alpha * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * alpha * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * alpha * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * alpha * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * alpha * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * alpha * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * alpha * w - b62) + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * alpha * w - b65) + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * alpha * w - b68) + p33 * dY_2 * alpha * w) * V;
+    const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * sf * alpha * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * sf * alpha * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * sf * alpha * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * alpha * w - b62) * sf + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * alpha * w - b65) * sf + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * alpha * w - b68) * sf + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * sf * alpha * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * sf * alpha * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * sf * alpha * w + p33 * dY_1 * sf * alpha * w) * V;
+    const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * sf * alpha * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * sf * alpha * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * sf * alpha * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * sf * alpha * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * sf * alpha * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * sf * alpha * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * alpha * w - b62) * sf + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * alpha * w - b65) * sf + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * alpha * w - b68) * sf + p33 * dY_2 * sf * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b69;
     lane9[lane] += b69;
     df[(k + 1) * 3 + 1] = -b73;
@@ -5798,7 +5819,7 @@ void correspondence_silling_3d_intact_moments(const pd::abi::Family& fam, double
   moments[10] = s_influence_volume;
 }
 
-// correspondence_silling_3d_intact_residual: per bond 24 add, 55 mul, 0 div, 0 call; per family 55 add, 105 mul, 3 div, 0 call
+// correspondence_silling_3d_intact_residual: per bond 24 add, 58 mul, 0 div, 0 call; per family 55 add, 105 mul, 3 div, 0 call
 void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -5939,15 +5960,16 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
     const double xi_2 = fam.xi[k * 3 + 2];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double b57 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b58 = p29 * xi_0 + p25 * xi_1 + p34 * xi_2;
     const double b59 = p31 * xi_0 + p26 * xi_1 + p35 * xi_2;
-    const double b60 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * w + p43 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * w) * V;
-    const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * w) * V;
-    const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * w) * V;
+    const double b60 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * w + p43 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * w) * sf * V;
+    const double b61 = V0 * ((p33 * b57 + p45 * b58 + p50 * b59) * w + p43 * (Y_1 - (p51 * xi_0 + p52 * xi_1 + p46 * xi_2)) * w) * sf * V;
+    const double b62 = V0 * ((p40 * b57 + p50 * b58 + p53 * b59) * w + p43 * (Y_2 - (p54 * xi_0 + p55 * xi_1 + p56 * xi_2)) * w) * sf * V;
     forces[(k + 1) * 3 + 0] = -b60;
     lane9[lane] += b60;
     forces[(k + 1) * 3 + 1] = -b61;
@@ -5961,7 +5983,7 @@ void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, doubl
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_silling_3d_intact_tangent: per bond 69 add, 147 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
+// correspondence_silling_3d_intact_tangent: per bond 69 add, 178 mul, 0 div, 0 call; per family 64 add, 140 mul, 3 div, 0 call
 void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -6140,16 +6162,17 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
     const double xi_2 = fam.xi[k * 3 + 2];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double b95 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b96 = p39 * xi_0 + p35 * xi_1 + p44 * xi_2;
     const double b97 = p41 * xi_0 + p36 * xi_1 + p45 * xi_2;
-    const double b98 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * w + p53 * (Y_0 - (p54 * xi_0 + p37 * xi_1 + p46 * xi_2)) * w) * V;
-    const double b99 = V0 * ((p43 * b95 + p55 * b96 + p60 * b97) * w + p53 * (Y_1 - (p61 * xi_0 + p62 * xi_1 + p56 * xi_2)) * w) * V;
-    const double b100 = V0 * ((p50 * b95 + p60 * b96 + p63 * b97) * w + p53 * (Y_2 - (p64 * xi_0 + p65 * xi_1 + p66 * xi_2)) * w) * V;
-    const double b101 = p53 * w;
+    const double b98 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * w + p53 * (Y_0 - (p54 * xi_0 + p37 * xi_1 + p46 * xi_2)) * w) * sf * V;
+    const double b99 = V0 * ((p43 * b95 + p55 * b96 + p60 * b97) * w + p53 * (Y_1 - (p61 * xi_0 + p62 * xi_1 + p56 * xi_2)) * w) * sf * V;
+    const double b100 = V0 * ((p50 * b95 + p60 * b96 + p63 * b97) * w + p53 * (Y_2 - (p64 * xi_0 + p65 * xi_1 + p66 * xi_2)) * w) * sf * V;
+    const double b101 = p53 * sf * w;
     const double b102 = V * w;
     const double b103 = b102 * xi_0;
     const double b104 = p70 * b96;
@@ -6184,57 +6207,57 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
     factors.right[(k * 9 + 0) * 3 + 0] = b103;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p69 * b95 + b104 + b105) * w - b106;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * w;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * w;
+    factors.left[(k * 9 + 0) * 3 + 0] = ((p69 * b95 + b104 + b105) * w - b106) * sf;
+    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * sf * w;
+    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * sf * w;
     factors.right[(k * 9 + 1) * 3 + 0] = b107;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p73 * b95 + b108 + b109) * w - b110;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * w;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * w;
+    factors.left[(k * 9 + 1) * 3 + 0] = ((p73 * b95 + b108 + b109) * w - b110) * sf;
+    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * sf * w;
+    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * sf * w;
     factors.right[(k * 9 + 2) * 3 + 0] = b111;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p77 * b95 + b112 + b113) * w - b114;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * w;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * w;
+    factors.left[(k * 9 + 2) * 3 + 0] = ((p77 * b95 + b112 + b113) * w - b114) * sf;
+    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * sf * w;
+    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * sf * w;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b103;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * w;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b105 + b115 + p82 * b96) * w - b106;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * w;
+    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * sf * w;
+    factors.left[(k * 9 + 3) * 3 + 1] = ((b105 + b115 + p82 * b96) * w - b106) * sf;
+    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * sf * w;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b107;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * w;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b109 + b116 + p85 * b96) * w - b110;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * w;
+    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * sf * w;
+    factors.left[(k * 9 + 4) * 3 + 1] = ((b109 + b116 + p85 * b96) * w - b110) * sf;
+    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * sf * w;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b111;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * w;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b113 + b117 + p88 * b96) * w - b114;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * w;
+    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * sf * w;
+    factors.left[(k * 9 + 5) * 3 + 1] = ((b113 + b117 + p88 * b96) * w - b114) * sf;
+    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * sf * w;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b103;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * w;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * w;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b104 + b115 + p90 * b97) * w - b106;
+    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * sf * w;
+    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * sf * w;
+    factors.left[(k * 9 + 6) * 3 + 2] = ((b104 + b115 + p90 * b97) * w - b106) * sf;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b107;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * w;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * w;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b108 + b116 + p92 * b97) * w - b110;
+    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * sf * w;
+    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * sf * w;
+    factors.left[(k * 9 + 7) * 3 + 2] = ((b108 + b116 + p92 * b97) * w - b110) * sf;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b111;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * w;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * w;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b112 + b117 + p94 * b97) * w - b114;
+    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * sf * w;
+    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * sf * w;
+    factors.left[(k * 9 + 8) * 3 + 2] = ((b112 + b117 + p94 * b97) * w - b114) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -6242,7 +6265,7 @@ void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_silling_3d_intact_jvp: per bond 78 add, 150 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
+// correspondence_silling_3d_intact_jvp: per bond 78 add, 180 mul, 0 div, 0 call; per family 22 add, 91 mul, 3 div, 0 call
 void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -6382,6 +6405,7 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
     const double V = fam.V[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -6398,12 +6422,12 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
     const double b66 = p40 * b58;
     const double b67 = p41 * b60;
     const double b68 = p33 * b60 * w;
-    const double b69 = V0 * (ds_deformed_shape_0_0 * ((p12 * b57 + b59 + b61) * w - b62) + ds_deformed_shape_0_1 * ((p35 * b57 + b63 + b64) * w - b65) + ds_deformed_shape_0_2 * ((p39 * b57 + b66 + b67) * w - b68) + ds_deformed_shape_1_0 * (p42 * b57 + p43 * b58) * w + ds_deformed_shape_1_1 * (p44 * b57 + p45 * b58) * w + ds_deformed_shape_1_2 * (p46 * b57 + p47 * b58) * w + ds_deformed_shape_2_0 * (p48 * b57 + p43 * b60) * w + ds_deformed_shape_2_1 * (p49 * b57 + p45 * b60) * w + ds_deformed_shape_2_2 * (p50 * b57 + p47 * b60) * w + p33 * dY_0 * w) * V;
+    const double b69 = V0 * (ds_deformed_shape_0_0 * ((p12 * b57 + b59 + b61) * w - b62) * sf + ds_deformed_shape_0_1 * ((p35 * b57 + b63 + b64) * w - b65) * sf + ds_deformed_shape_0_2 * ((p39 * b57 + b66 + b67) * w - b68) * sf + ds_deformed_shape_1_0 * (p42 * b57 + p43 * b58) * sf * w + ds_deformed_shape_1_1 * (p44 * b57 + p45 * b58) * sf * w + ds_deformed_shape_1_2 * (p46 * b57 + p47 * b58) * sf * w + ds_deformed_shape_2_0 * (p48 * b57 + p43 * b60) * sf * w + ds_deformed_shape_2_1 * (p49 * b57 + p45 * b60) * sf * w + ds_deformed_shape_2_2 * (p50 * b57 + p47 * b60) * sf * w + p33 * dY_0 * sf * w) * V;
     const double b70 = p43 * b57;
     const double b71 = p45 * b57;
     const double b72 = p47 * b57;
-    const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * w - b62) + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * w - b65) + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * w - b68) + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * w + p33 * dY_1 * w) * V;
-    const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * w - b62) + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * w - b65) + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * w - b68) + p33 * dY_2 * w) * V;
+    const double b73 = V0 * (ds_deformed_shape_0_0 * (p18 * b57 + p10 * b58) * sf * w + ds_deformed_shape_0_1 * (p36 * b57 + p34 * b58) * sf * w + ds_deformed_shape_0_2 * (p40 * b57 + p38 * b58) * sf * w + ds_deformed_shape_1_0 * ((b61 + b70 + p51 * b58) * w - b62) * sf + ds_deformed_shape_1_1 * ((b64 + b71 + p52 * b58) * w - b65) * sf + ds_deformed_shape_1_2 * ((b67 + b72 + p53 * b58) * w - b68) * sf + ds_deformed_shape_2_0 * (p48 * b58 + p18 * b60) * sf * w + ds_deformed_shape_2_1 * (p49 * b58 + p36 * b60) * sf * w + ds_deformed_shape_2_2 * (p50 * b58 + p40 * b60) * sf * w + p33 * dY_1 * sf * w) * V;
+    const double b74 = V0 * (ds_deformed_shape_0_0 * (p25 * b57 + p10 * b60) * sf * w + ds_deformed_shape_0_1 * (p37 * b57 + p34 * b60) * sf * w + ds_deformed_shape_0_2 * (p41 * b57 + p38 * b60) * sf * w + ds_deformed_shape_1_0 * (p25 * b58 + p42 * b60) * sf * w + ds_deformed_shape_1_1 * (p37 * b58 + p44 * b60) * sf * w + ds_deformed_shape_1_2 * (p41 * b58 + p46 * b60) * sf * w + ds_deformed_shape_2_0 * ((b59 + b70 + p54 * b60) * w - b62) * sf + ds_deformed_shape_2_1 * ((b63 + b71 + p55 * b60) * w - b65) * sf + ds_deformed_shape_2_2 * ((b66 + b72 + p56 * b60) * w - b68) * sf + p33 * dY_2 * sf * w) * V;
     df[(k + 1) * 3 + 0] = -b69;
     lane9[lane] += b69;
     df[(k + 1) * 3 + 1] = -b73;
@@ -6902,21 +6926,21 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.n_states = 9;
   d.damaged.moments = &correspondence_silling_3d_damaged_moments;
   d.damaged.residual = &correspondence_silling_3d_damaged_residual;
-  d.damaged.residual_ops = {24, 62, 0, 0};
+  d.damaged.residual_ops = {24, 65, 0, 0};
   d.damaged.tangent = &correspondence_silling_3d_damaged_tangent;
-  d.damaged.tangent_ops = {69, 186, 0, 0};
+  d.damaged.tangent_ops = {69, 217, 0, 0};
   d.damaged.jvp = &correspondence_silling_3d_damaged_jvp;
-  d.damaged.jvp_ops = {78, 186, 0, 0};
+  d.damaged.jvp_ops = {78, 216, 0, 0};
   d.damaged.energy = &correspondence_silling_3d_damaged_energy;
   d.damaged.outputs = &correspondence_silling_3d_damaged_outputs;
   d.damaged.form = &correspondence_silling_3d_damaged_form;
   d.intact.moments = &correspondence_silling_3d_intact_moments;
   d.intact.residual = &correspondence_silling_3d_intact_residual;
-  d.intact.residual_ops = {24, 55, 0, 0};
+  d.intact.residual_ops = {24, 58, 0, 0};
   d.intact.tangent = &correspondence_silling_3d_intact_tangent;
-  d.intact.tangent_ops = {69, 147, 0, 0};
+  d.intact.tangent_ops = {69, 178, 0, 0};
   d.intact.jvp = &correspondence_silling_3d_intact_jvp;
-  d.intact.jvp_ops = {78, 150, 0, 0};
+  d.intact.jvp_ops = {78, 180, 0, 0};
   d.intact.energy = &correspondence_silling_3d_intact_energy;
   d.intact.outputs = &correspondence_silling_3d_intact_outputs;
   d.intact.form = &correspondence_silling_3d_intact_form;
@@ -6962,7 +6986,7 @@ void correspondence_littlewood_plane_strain_damaged_moments(const pd::abi::Famil
   moments[3] = s_shape_1_1;
 }
 
-// correspondence_littlewood_plane_strain_damaged_residual: per bond 14 add, 44 mul, 2 div, 2 call; per family 18 add, 42 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_damaged_residual: per bond 14 add, 46 mul, 2 div, 2 call; per family 18 add, 42 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7047,6 +7071,7 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b29 = p9 * xi_0 - p10 * xi_1;
     const double b30 = p20 * xi_1 - p21 * xi_0;
@@ -7055,8 +7080,8 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
     const double b33 = 1.0 / b32;
     const double b34 = std::sqrt(b31);
     const double b35 = p23 * (b33 * (Y_0 - (p24 * xi_0 + p25 * xi_1)) * Y_0 + b33 * (Y_1 - (p26 * xi_0 + p27 * xi_1)) * Y_1) * b33 * (1.0 / b34) * alpha * w;
-    const double b36 = V0 * ((p8 * b29 + p19 * b30) * alpha * w + b35 * Y_0) * V;
-    const double b37 = V0 * ((p19 * b29 + p28 * b30) * alpha * w + b35 * Y_1) * V;
+    const double b36 = V0 * ((p8 * b29 + p19 * b30) * alpha * w + b35 * Y_0) * sf * V;
+    const double b37 = V0 * ((p19 * b29 + p28 * b30) * alpha * w + b35 * Y_1) * sf * V;
     forces[(k + 1) * 2 + 0] = -b36;
     lane4[lane] += b36;
     forces[(k + 1) * 2 + 1] = -b37;
@@ -7067,7 +7092,7 @@ void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Fami
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_littlewood_plane_strain_damaged_tangent: per bond 42 add, 129 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_damaged_tangent: per bond 42 add, 143 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7166,6 +7191,7 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b43 = p10 * xi_0 - p11 * xi_1;
     const double b44 = p21 * xi_1 - p22 * xi_0;
@@ -7183,8 +7209,8 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     const double b56 = std::sqrt(b45);
     const double b57 = 1.0 / b56;
     const double b58 = b55 * b50 * b57 * alpha * w;
-    const double b59 = V0 * ((p9 * b43 + p20 * b44) * alpha * w + b58 * Y_0) * V;
-    const double b60 = V0 * ((p20 * b43 + p29 * b44) * alpha * w + b58 * Y_1) * V;
+    const double b59 = V0 * ((p9 * b43 + p20 * b44) * alpha * w + b58 * Y_0) * sf * V;
+    const double b60 = V0 * ((p20 * b43 + p29 * b44) * alpha * w + b58 * Y_1) * sf * V;
     const double b61 = 1.0 / b48;
     const double b62 = b61 * b50;
     const double b63 = b62 * b51;
@@ -7205,33 +7231,33 @@ void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Famil
     lane4[lane] += b59;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b60;
     lane5[lane] += b60;
-    factors.direct[k * 4 + 0] = b58 + b65 * Y_0 - b66 * b46;
-    factors.direct[k * 4 + 1] = b67 * Y_0 - b68;
-    factors.direct[k * 4 + 2] = b65 * Y_1 - b68;
-    factors.direct[k * 4 + 3] = b58 + b67 * Y_1 - b66 * b47;
+    factors.direct[k * 4 + 0] = (b58 + b65 * Y_0 - b66 * b46) * sf;
+    factors.direct[k * 4 + 1] = (b67 * Y_0 - b68) * sf;
+    factors.direct[k * 4 + 2] = (b65 * Y_1 - b68) * sf;
+    factors.direct[k * 4 + 3] = (b58 + b67 * Y_1 - b66 * b47) * sf;
     factors.right[(k * 4 + 0) * 2 + 0] = b70;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p32 * b43 - p33 * b44) * alpha * w - b72 * b46;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p31 * b44 - p33 * b43) * alpha * w - b73;
+    factors.left[(k * 4 + 0) * 2 + 0] = ((p32 * b43 - p33 * b44) * alpha * w - b72 * b46) * sf;
+    factors.left[(k * 4 + 0) * 2 + 1] = ((p31 * b44 - p33 * b43) * alpha * w - b73) * sf;
     factors.right[(k * 4 + 1) * 2 + 0] = b74;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p35 * b43 + p36 * b44) * alpha * w - b75 * b46;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p36 * b43 - p34 * b44) * alpha * w - b76;
+    factors.left[(k * 4 + 1) * 2 + 0] = ((p35 * b43 + p36 * b44) * alpha * w - b75 * b46) * sf;
+    factors.left[(k * 4 + 1) * 2 + 1] = ((p36 * b43 - p34 * b44) * alpha * w - b76) * sf;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b70;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p37 * b44 - p38 * b43) * alpha * w - b73;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p37 * b43 + p39 * b44) * alpha * w - b72 * b47;
+    factors.left[(k * 4 + 2) * 2 + 0] = ((p37 * b44 - p38 * b43) * alpha * w - b73) * sf;
+    factors.left[(k * 4 + 2) * 2 + 1] = ((p37 * b43 + p39 * b44) * alpha * w - b72 * b47) * sf;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b74;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p40 * b43 - p41 * b44) * alpha * w - b76;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p42 * b44 - p41 * b43) * alpha * w - b75 * b47;
+    factors.left[(k * 4 + 3) * 2 + 0] = ((p40 * b43 - p41 * b44) * alpha * w - b76) * sf;
+    factors.left[(k * 4 + 3) * 2 + 1] = ((p42 * b44 - p41 * b43) * alpha * w - b75 * b47) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_littlewood_plane_strain_damaged_jvp: per bond 48 add, 137 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_damaged_jvp: per bond 48 add, 149 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7340,6 +7366,7 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
     const double Y_1 = fam.Y[k * 2 + 1];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b34 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -7371,8 +7398,8 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
     const double b60 = b58 * b57 * alpha * w;
     const double b61 = b59 * Y_1 * Y_0;
     const double b62 = b60 * Y_1 * Y_0;
-    const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) + dY_1 * (b54 * Y_0 - b55) + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * alpha * w - b59 * b35) + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * alpha * w - b60 * b35) + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * alpha * w - b61) + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * alpha * w - b62)) * V;
-    const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) + dY_1 * (b47 + b54 * Y_1 - b53 * b36) + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * alpha * w - b61) + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * alpha * w - b62) + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * alpha * w - b59 * b36) + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * alpha * w - b60 * b36)) * V;
+    const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) * sf + dY_1 * (b54 * Y_0 - b55) * sf + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * alpha * w - b59 * b35) * sf + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * alpha * w - b60 * b35) * sf + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * alpha * w - b61) * sf + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * alpha * w - b62) * sf) * V;
+    const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) * sf + dY_1 * (b47 + b54 * Y_1 - b53 * b36) * sf + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * alpha * w - b61) * sf + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * alpha * w - b62) * sf + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * alpha * w - b59 * b36) * sf + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * alpha * w - b60 * b36) * sf) * V;
     df[(k + 1) * 2 + 0] = -b63;
     lane8[lane] += b63;
     df[(k + 1) * 2 + 1] = -b64;
@@ -7579,7 +7606,7 @@ void correspondence_littlewood_plane_strain_intact_moments(const pd::abi::Family
   moments[3] = s_shape_1_1;
 }
 
-// correspondence_littlewood_plane_strain_intact_residual: per bond 14 add, 40 mul, 2 div, 2 call; per family 18 add, 42 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_intact_residual: per bond 14 add, 42 mul, 2 div, 2 call; per family 18 add, 42 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7662,6 +7689,7 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b29 = p9 * xi_0 - p10 * xi_1;
     const double b30 = p20 * xi_1 - p21 * xi_0;
@@ -7670,8 +7698,8 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
     const double b33 = 1.0 / b32;
     const double b34 = std::sqrt(b31);
     const double b35 = p23 * (b33 * (Y_0 - (p24 * xi_0 + p25 * xi_1)) * Y_0 + b33 * (Y_1 - (p26 * xi_0 + p27 * xi_1)) * Y_1) * b33 * (1.0 / b34) * w;
-    const double b36 = V0 * ((p8 * b29 + p19 * b30) * w + b35 * Y_0) * V;
-    const double b37 = V0 * ((p19 * b29 + p28 * b30) * w + b35 * Y_1) * V;
+    const double b36 = V0 * ((p8 * b29 + p19 * b30) * w + b35 * Y_0) * sf * V;
+    const double b37 = V0 * ((p19 * b29 + p28 * b30) * w + b35 * Y_1) * sf * V;
     forces[(k + 1) * 2 + 0] = -b36;
     lane4[lane] += b36;
     forces[(k + 1) * 2 + 1] = -b37;
@@ -7682,7 +7710,7 @@ void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Famil
   forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_littlewood_plane_strain_intact_tangent: per bond 42 add, 111 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_intact_tangent: per bond 42 add, 125 mul, 3 div, 2 call; per family 24 add, 59 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7779,6 +7807,7 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b43 = p10 * xi_0 - p11 * xi_1;
     const double b44 = p21 * xi_1 - p22 * xi_0;
@@ -7796,8 +7825,8 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     const double b56 = std::sqrt(b45);
     const double b57 = 1.0 / b56;
     const double b58 = b55 * b50 * b57 * w;
-    const double b59 = V0 * ((p9 * b43 + p20 * b44) * w + b58 * Y_0) * V;
-    const double b60 = V0 * ((p20 * b43 + p29 * b44) * w + b58 * Y_1) * V;
+    const double b59 = V0 * ((p9 * b43 + p20 * b44) * w + b58 * Y_0) * sf * V;
+    const double b60 = V0 * ((p20 * b43 + p29 * b44) * w + b58 * Y_1) * sf * V;
     const double b61 = 1.0 / b48;
     const double b62 = b61 * b50;
     const double b63 = b62 * b51;
@@ -7818,33 +7847,33 @@ void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family
     lane4[lane] += b59;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b60;
     lane5[lane] += b60;
-    factors.direct[k * 4 + 0] = b58 + b65 * Y_0 - b66 * b46;
-    factors.direct[k * 4 + 1] = b67 * Y_0 - b68;
-    factors.direct[k * 4 + 2] = b65 * Y_1 - b68;
-    factors.direct[k * 4 + 3] = b58 + b67 * Y_1 - b66 * b47;
+    factors.direct[k * 4 + 0] = (b58 + b65 * Y_0 - b66 * b46) * sf;
+    factors.direct[k * 4 + 1] = (b67 * Y_0 - b68) * sf;
+    factors.direct[k * 4 + 2] = (b65 * Y_1 - b68) * sf;
+    factors.direct[k * 4 + 3] = (b58 + b67 * Y_1 - b66 * b47) * sf;
     factors.right[(k * 4 + 0) * 2 + 0] = b70;
     factors.right[(k * 4 + 0) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 0) * 2 + 0] = (p32 * b43 - p33 * b44) * w - b72 * b46;
-    factors.left[(k * 4 + 0) * 2 + 1] = (p31 * b44 - p33 * b43) * w - b73;
+    factors.left[(k * 4 + 0) * 2 + 0] = ((p32 * b43 - p33 * b44) * w - b72 * b46) * sf;
+    factors.left[(k * 4 + 0) * 2 + 1] = ((p31 * b44 - p33 * b43) * w - b73) * sf;
     factors.right[(k * 4 + 1) * 2 + 0] = b74;
     factors.right[(k * 4 + 1) * 2 + 1] = 0.0;
-    factors.left[(k * 4 + 1) * 2 + 0] = (p35 * b43 + p36 * b44) * w - b75 * b46;
-    factors.left[(k * 4 + 1) * 2 + 1] = (p36 * b43 - p34 * b44) * w - b76;
+    factors.left[(k * 4 + 1) * 2 + 0] = ((p35 * b43 + p36 * b44) * w - b75 * b46) * sf;
+    factors.left[(k * 4 + 1) * 2 + 1] = ((p36 * b43 - p34 * b44) * w - b76) * sf;
     factors.right[(k * 4 + 2) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 2) * 2 + 1] = b70;
-    factors.left[(k * 4 + 2) * 2 + 0] = (p37 * b44 - p38 * b43) * w - b73;
-    factors.left[(k * 4 + 2) * 2 + 1] = (p37 * b43 + p39 * b44) * w - b72 * b47;
+    factors.left[(k * 4 + 2) * 2 + 0] = ((p37 * b44 - p38 * b43) * w - b73) * sf;
+    factors.left[(k * 4 + 2) * 2 + 1] = ((p37 * b43 + p39 * b44) * w - b72 * b47) * sf;
     factors.right[(k * 4 + 3) * 2 + 0] = 0.0;
     factors.right[(k * 4 + 3) * 2 + 1] = b74;
-    factors.left[(k * 4 + 3) * 2 + 0] = (p40 * b43 - p41 * b44) * w - b76;
-    factors.left[(k * 4 + 3) * 2 + 1] = (p42 * b44 - p41 * b43) * w - b75 * b47;
+    factors.left[(k * 4 + 3) * 2 + 0] = ((p40 * b43 - p41 * b44) * w - b76) * sf;
+    factors.left[(k * 4 + 3) * 2 + 1] = ((p42 * b44 - p41 * b43) * w - b75 * b47) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   if (forces != nullptr) forces[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// correspondence_littlewood_plane_strain_intact_jvp: per bond 48 add, 120 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
+// correspondence_littlewood_plane_strain_intact_jvp: per bond 48 add, 132 mul, 3 div, 2 call; per family 13 add, 43 mul, 2 div, 0 call
 void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -7951,6 +7980,7 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
     const double b34 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -7982,8 +8012,8 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
     const double b60 = b58 * b57 * w;
     const double b61 = b59 * Y_1 * Y_0;
     const double b62 = b60 * Y_1 * Y_0;
-    const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) + dY_1 * (b54 * Y_0 - b55) + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * w - b59 * b35) + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * w - b60 * b35) + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * w - b61) + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * w - b62)) * V;
-    const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) + dY_1 * (b47 + b54 * Y_1 - b53 * b36) + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * w - b61) + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * w - b62) + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * w - b59 * b36) + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * w - b60 * b36)) * V;
+    const double b63 = V0 * (dY_0 * (b47 + b52 * Y_0 - b53 * b35) * sf + dY_1 * (b54 * Y_0 - b55) * sf + ds_deformed_shape_0_0 * ((p19 * b56 - p22 * b57) * w - b59 * b35) * sf + ds_deformed_shape_0_1 * ((p26 * b56 + p27 * b57) * w - b60 * b35) * sf + ds_deformed_shape_1_0 * ((p28 * b57 - p29 * b56) * w - b61) * sf + ds_deformed_shape_1_1 * ((p30 * b56 - p31 * b57) * w - b62) * sf) * V;
+    const double b64 = V0 * (dY_0 * (b52 * Y_1 - b55) * sf + dY_1 * (b47 + b54 * Y_1 - b53 * b36) * sf + ds_deformed_shape_0_0 * ((p17 * b57 - p22 * b56) * w - b61) * sf + ds_deformed_shape_0_1 * ((p27 * b56 - p25 * b57) * w - b62) * sf + ds_deformed_shape_1_0 * ((p28 * b56 + p32 * b57) * w - b59 * b36) * sf + ds_deformed_shape_1_1 * ((p33 * b57 - p31 * b56) * w - b60 * b36) * sf) * V;
     df[(k + 1) * 2 + 0] = -b63;
     lane8[lane] += b63;
     df[(k + 1) * 2 + 1] = -b64;
@@ -8169,20 +8199,20 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.n_states = 4;
   d.damaged.moments = &correspondence_littlewood_plane_strain_damaged_moments;
   d.damaged.residual = &correspondence_littlewood_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {14, 44, 2, 2};
+  d.damaged.residual_ops = {14, 46, 2, 2};
   d.damaged.tangent = &correspondence_littlewood_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {42, 129, 3, 2};
+  d.damaged.tangent_ops = {42, 143, 3, 2};
   d.damaged.jvp = &correspondence_littlewood_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {48, 137, 3, 2};
+  d.damaged.jvp_ops = {48, 149, 3, 2};
   d.damaged.outputs = &correspondence_littlewood_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_littlewood_plane_strain_damaged_form;
   d.intact.moments = &correspondence_littlewood_plane_strain_intact_moments;
   d.intact.residual = &correspondence_littlewood_plane_strain_intact_residual;
-  d.intact.residual_ops = {14, 40, 2, 2};
+  d.intact.residual_ops = {14, 42, 2, 2};
   d.intact.tangent = &correspondence_littlewood_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {42, 111, 3, 2};
+  d.intact.tangent_ops = {42, 125, 3, 2};
   d.intact.jvp = &correspondence_littlewood_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {48, 120, 3, 2};
+  d.intact.jvp_ops = {48, 132, 3, 2};
   d.intact.outputs = &correspondence_littlewood_plane_strain_intact_outputs;
   d.intact.form = &correspondence_littlewood_plane_strain_intact_form;
   return d;
@@ -8256,7 +8286,7 @@ void correspondence_littlewood_3d_damaged_moments(const pd::abi::Family& fam, do
   moments[8] = s_shape_2_2;
 }
 
-// correspondence_littlewood_3d_damaged_residual: per bond 31 add, 74 mul, 2 div, 2 call; per family 55 add, 102 mul, 2 div, 0 call
+// correspondence_littlewood_3d_damaged_residual: per bond 31 add, 77 mul, 2 div, 2 call; per family 55 add, 102 mul, 2 div, 0 call
 void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -8399,6 +8429,7 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b57 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b58 = p29 * xi_0 + p25 * xi_1 + p34 * xi_2;
@@ -8408,9 +8439,9 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
     const double b62 = 1.0 / b61;
     const double b63 = std::sqrt(b60);
     const double b64 = p43 * (b62 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * Y_0 + b62 * (Y_1 - (p45 * xi_0 + p46 * xi_1 + p47 * xi_2)) * Y_1 + b62 * (Y_2 - (p48 * xi_0 + p52 * xi_1 + p53 * xi_2)) * Y_2) * b62 * (1.0 / b63) * alpha * w;
-    const double b65 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * alpha * w + b64 * Y_0) * V;
-    const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * alpha * w + b64 * Y_1) * V;
-    const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * alpha * w + b64 * Y_2) * V;
+    const double b65 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * alpha * w + b64 * Y_0) * sf * V;
+    const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * alpha * w + b64 * Y_1) * sf * V;
+    const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * alpha * w + b64 * Y_2) * sf * V;
     forces[(k + 1) * 3 + 0] = -b65;
     lane9[lane] += b65;
     forces[(k + 1) * 3 + 1] = -b66;
@@ -8424,7 +8455,7 @@ void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, d
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_littlewood_3d_damaged_tangent: per bond 118 add, 279 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
+// correspondence_littlewood_3d_damaged_tangent: per bond 118 add, 318 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
 void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -8605,6 +8636,7 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b95 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b96 = p39 * xi_0 + p35 * xi_1 + p44 * xi_2;
@@ -8626,9 +8658,9 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     const double b112 = std::sqrt(b98);
     const double b113 = 1.0 / b112;
     const double b114 = b111 * b104 * b113 * alpha * w;
-    const double b115 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * alpha * w + b114 * Y_0) * V;
-    const double b116 = V0 * ((p43 * b95 + p64 * b96 + p65 * b97) * alpha * w + b114 * Y_1) * V;
-    const double b117 = V0 * ((p50 * b95 + p65 * b96 + p66 * b97) * alpha * w + b114 * Y_2) * V;
+    const double b115 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * alpha * w + b114 * Y_0) * sf * V;
+    const double b116 = V0 * ((p43 * b95 + p64 * b96 + p65 * b97) * alpha * w + b114 * Y_1) * sf * V;
+    const double b117 = V0 * ((p50 * b95 + p65 * b96 + p66 * b97) * alpha * w + b114 * Y_2) * sf * V;
     const double b118 = 1.0 / b102;
     const double b119 = b118 * b104;
     const double b120 = b119 * b105;
@@ -8678,69 +8710,69 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
     lane10[lane] += b116;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b117;
     lane11[lane] += b117;
-    factors.direct[k * 9 + 0] = b114 + b124 * Y_0 - b125 * b99;
-    factors.direct[k * 9 + 1] = b126 * Y_0 - b127;
-    factors.direct[k * 9 + 2] = b128 * Y_0 - b130;
-    factors.direct[k * 9 + 3] = b124 * Y_1 - b127;
-    factors.direct[k * 9 + 4] = b114 + b126 * Y_1 - b125 * b100;
-    factors.direct[k * 9 + 5] = b128 * Y_1 - b131;
-    factors.direct[k * 9 + 6] = b124 * Y_2 - b130;
-    factors.direct[k * 9 + 7] = b126 * Y_2 - b131;
-    factors.direct[k * 9 + 8] = b114 + b128 * Y_2 - b125 * b101;
+    factors.direct[k * 9 + 0] = (b114 + b124 * Y_0 - b125 * b99) * sf;
+    factors.direct[k * 9 + 1] = (b126 * Y_0 - b127) * sf;
+    factors.direct[k * 9 + 2] = (b128 * Y_0 - b130) * sf;
+    factors.direct[k * 9 + 3] = (b124 * Y_1 - b127) * sf;
+    factors.direct[k * 9 + 4] = (b114 + b126 * Y_1 - b125 * b100) * sf;
+    factors.direct[k * 9 + 5] = (b128 * Y_1 - b131) * sf;
+    factors.direct[k * 9 + 6] = (b124 * Y_2 - b130) * sf;
+    factors.direct[k * 9 + 7] = (b126 * Y_2 - b131) * sf;
+    factors.direct[k * 9 + 8] = (b114 + b128 * Y_2 - b125 * b101) * sf;
     factors.right[(k * 9 + 0) * 3 + 0] = b133;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p69 * b95 + b134 + b135) * alpha * w - b137 * b99;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * alpha * w - b138;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * alpha * w - b140;
+    factors.left[(k * 9 + 0) * 3 + 0] = ((p69 * b95 + b134 + b135) * alpha * w - b137 * b99) * sf;
+    factors.left[(k * 9 + 0) * 3 + 1] = ((p70 * b95 + p68 * b96) * alpha * w - b138) * sf;
+    factors.left[(k * 9 + 0) * 3 + 2] = ((p71 * b95 + p68 * b97) * alpha * w - b140) * sf;
     factors.right[(k * 9 + 1) * 3 + 0] = b141;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p73 * b95 + b142 + b143) * alpha * w - b144 * b99;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * alpha * w - b145;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * alpha * w - b147;
+    factors.left[(k * 9 + 1) * 3 + 0] = ((p73 * b95 + b142 + b143) * alpha * w - b144 * b99) * sf;
+    factors.left[(k * 9 + 1) * 3 + 1] = ((p74 * b95 + p72 * b96) * alpha * w - b145) * sf;
+    factors.left[(k * 9 + 1) * 3 + 2] = ((p75 * b95 + p72 * b97) * alpha * w - b147) * sf;
     factors.right[(k * 9 + 2) * 3 + 0] = b148;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p77 * b95 + b149 + b150) * alpha * w - b151 * b99;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * alpha * w - b152;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * alpha * w - b154;
+    factors.left[(k * 9 + 2) * 3 + 0] = ((p77 * b95 + b149 + b150) * alpha * w - b151 * b99) * sf;
+    factors.left[(k * 9 + 2) * 3 + 1] = ((p78 * b95 + p76 * b96) * alpha * w - b152) * sf;
+    factors.left[(k * 9 + 2) * 3 + 2] = ((p79 * b95 + p76 * b97) * alpha * w - b154) * sf;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b133;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * alpha * w - b138;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b135 + b155 + p82 * b96) * alpha * w - b137 * b100;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * alpha * w - b156;
+    factors.left[(k * 9 + 3) * 3 + 0] = ((p80 * b95 + p81 * b96) * alpha * w - b138) * sf;
+    factors.left[(k * 9 + 3) * 3 + 1] = ((b135 + b155 + p82 * b96) * alpha * w - b137 * b100) * sf;
+    factors.left[(k * 9 + 3) * 3 + 2] = ((p71 * b96 + p80 * b97) * alpha * w - b156) * sf;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b141;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * alpha * w - b145;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b143 + b157 + p85 * b96) * alpha * w - b144 * b100;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * alpha * w - b158;
+    factors.left[(k * 9 + 4) * 3 + 0] = ((p83 * b95 + p84 * b96) * alpha * w - b145) * sf;
+    factors.left[(k * 9 + 4) * 3 + 1] = ((b143 + b157 + p85 * b96) * alpha * w - b144 * b100) * sf;
+    factors.left[(k * 9 + 4) * 3 + 2] = ((p75 * b96 + p83 * b97) * alpha * w - b158) * sf;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b148;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * alpha * w - b152;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b150 + b159 + p88 * b96) * alpha * w - b151 * b100;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * alpha * w - b160;
+    factors.left[(k * 9 + 5) * 3 + 0] = ((p86 * b95 + p87 * b96) * alpha * w - b152) * sf;
+    factors.left[(k * 9 + 5) * 3 + 1] = ((b150 + b159 + p88 * b96) * alpha * w - b151 * b100) * sf;
+    factors.left[(k * 9 + 5) * 3 + 2] = ((p79 * b96 + p86 * b97) * alpha * w - b160) * sf;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b133;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * alpha * w - b140;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * alpha * w - b156;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b134 + b155 + p90 * b97) * alpha * w - b137 * b101;
+    factors.left[(k * 9 + 6) * 3 + 0] = ((p89 * b95 + p81 * b97) * alpha * w - b140) * sf;
+    factors.left[(k * 9 + 6) * 3 + 1] = ((p89 * b96 + p70 * b97) * alpha * w - b156) * sf;
+    factors.left[(k * 9 + 6) * 3 + 2] = ((b134 + b155 + p90 * b97) * alpha * w - b137 * b101) * sf;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b141;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * alpha * w - b147;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * alpha * w - b158;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b142 + b157 + p92 * b97) * alpha * w - b144 * b101;
+    factors.left[(k * 9 + 7) * 3 + 0] = ((p91 * b95 + p84 * b97) * alpha * w - b147) * sf;
+    factors.left[(k * 9 + 7) * 3 + 1] = ((p91 * b96 + p74 * b97) * alpha * w - b158) * sf;
+    factors.left[(k * 9 + 7) * 3 + 2] = ((b142 + b157 + p92 * b97) * alpha * w - b144 * b101) * sf;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b148;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * alpha * w - b154;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * alpha * w - b160;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b149 + b159 + p94 * b97) * alpha * w - b151 * b101;
+    factors.left[(k * 9 + 8) * 3 + 0] = ((p93 * b95 + p87 * b97) * alpha * w - b154) * sf;
+    factors.left[(k * 9 + 8) * 3 + 1] = ((p93 * b96 + p78 * b97) * alpha * w - b160) * sf;
+    factors.left[(k * 9 + 8) * 3 + 2] = ((b149 + b159 + p94 * b97) * alpha * w - b151 * b101) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -8748,7 +8780,7 @@ void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, do
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_littlewood_3d_damaged_jvp: per bond 142 add, 310 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
+// correspondence_littlewood_3d_damaged_jvp: per bond 142 add, 346 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
 void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -8944,6 +8976,7 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
     const double Y_2 = fam.Y[k * 3 + 2];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
@@ -8999,7 +9032,7 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
     const double b119 = b118 * Y_0;
     const double b120 = b112 * Y_2;
     const double b121 = b120 * Y_0;
-    const double b122 = V0 * (dY_0 * (b86 + b93 * Y_0 - b94 * b71) + dY_1 * (b95 * Y_0 - b96) + dY_2 * (b97 * Y_0 - b99) + ds_deformed_shape_0_0 * ((p44 * b100 + b102 + b104) * alpha * w - b106 * b71) + ds_deformed_shape_0_1 * ((p48 * b100 + b107 + b108) * alpha * w - b109 * b71) + ds_deformed_shape_0_2 * ((p52 * b100 + b110 + b111) * alpha * w - b112 * b71) + ds_deformed_shape_1_0 * ((p55 * b100 + p56 * b101) * alpha * w - b113) + ds_deformed_shape_1_1 * ((p57 * b100 + p58 * b101) * alpha * w - b114) + ds_deformed_shape_1_2 * ((p59 * b100 + p60 * b101) * alpha * w - b115) + ds_deformed_shape_2_0 * ((p61 * b100 + p56 * b103) * alpha * w - b117) + ds_deformed_shape_2_1 * ((p62 * b100 + p58 * b103) * alpha * w - b119) + ds_deformed_shape_2_2 * ((p63 * b100 + p60 * b103) * alpha * w - b121)) * V;
+    const double b122 = V0 * (dY_0 * (b86 + b93 * Y_0 - b94 * b71) * sf + dY_1 * (b95 * Y_0 - b96) * sf + dY_2 * (b97 * Y_0 - b99) * sf + ds_deformed_shape_0_0 * ((p44 * b100 + b102 + b104) * alpha * w - b106 * b71) * sf + ds_deformed_shape_0_1 * ((p48 * b100 + b107 + b108) * alpha * w - b109 * b71) * sf + ds_deformed_shape_0_2 * ((p52 * b100 + b110 + b111) * alpha * w - b112 * b71) * sf + ds_deformed_shape_1_0 * ((p55 * b100 + p56 * b101) * alpha * w - b113) * sf + ds_deformed_shape_1_1 * ((p57 * b100 + p58 * b101) * alpha * w - b114) * sf + ds_deformed_shape_1_2 * ((p59 * b100 + p60 * b101) * alpha * w - b115) * sf + ds_deformed_shape_2_0 * ((p61 * b100 + p56 * b103) * alpha * w - b117) * sf + ds_deformed_shape_2_1 * ((p62 * b100 + p58 * b103) * alpha * w - b119) * sf + ds_deformed_shape_2_2 * ((p63 * b100 + p60 * b103) * alpha * w - b121) * sf) * V;
     const double b123 = b98 * Y_1;
     const double b124 = p56 * b100;
     const double b125 = p58 * b100;
@@ -9007,8 +9040,8 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
     const double b127 = b116 * Y_1;
     const double b128 = b118 * Y_1;
     const double b129 = b120 * Y_1;
-    const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) + dY_1 * (b86 + b95 * Y_1 - b94 * b72) + dY_2 * (b97 * Y_1 - b123) + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * alpha * w - b113) + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * alpha * w - b114) + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * alpha * w - b115) + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * alpha * w - b106 * b72) + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * alpha * w - b109 * b72) + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * alpha * w - b112 * b72) + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * alpha * w - b127) + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * alpha * w - b128) + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * alpha * w - b129)) * V;
-    const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) + dY_1 * (b95 * Y_2 - b123) + dY_2 * (b86 + b97 * Y_2 - b94 * b73) + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * alpha * w - b117) + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * alpha * w - b119) + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * alpha * w - b121) + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * alpha * w - b127) + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * alpha * w - b128) + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * alpha * w - b129) + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * alpha * w - b106 * b73) + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * alpha * w - b109 * b73) + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * alpha * w - b112 * b73)) * V;
+    const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) * sf + dY_1 * (b86 + b95 * Y_1 - b94 * b72) * sf + dY_2 * (b97 * Y_1 - b123) * sf + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * alpha * w - b113) * sf + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * alpha * w - b114) * sf + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * alpha * w - b115) * sf + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * alpha * w - b106 * b72) * sf + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * alpha * w - b109 * b72) * sf + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * alpha * w - b112 * b72) * sf + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * alpha * w - b127) * sf + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * alpha * w - b128) * sf + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * alpha * w - b129) * sf) * V;
+    const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) * sf + dY_1 * (b95 * Y_2 - b123) * sf + dY_2 * (b86 + b97 * Y_2 - b94 * b73) * sf + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * alpha * w - b117) * sf + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * alpha * w - b119) * sf + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * alpha * w - b121) * sf + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * alpha * w - b127) * sf + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * alpha * w - b128) * sf + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * alpha * w - b129) * sf + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * alpha * w - b106 * b73) * sf + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * alpha * w - b109 * b73) * sf + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * alpha * w - b112 * b73) * sf) * V;
     df[(k + 1) * 3 + 0] = -b122;
     lane18[lane] += b122;
     df[(k + 1) * 3 + 1] = -b130;
@@ -9428,7 +9461,7 @@ void correspondence_littlewood_3d_intact_moments(const pd::abi::Family& fam, dou
   moments[8] = s_shape_2_2;
 }
 
-// correspondence_littlewood_3d_intact_residual: per bond 31 add, 69 mul, 2 div, 2 call; per family 55 add, 102 mul, 2 div, 0 call
+// correspondence_littlewood_3d_intact_residual: per bond 31 add, 72 mul, 2 div, 2 call; per family 55 add, 102 mul, 2 div, 0 call
 void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -9569,6 +9602,7 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b57 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
     const double b58 = p29 * xi_0 + p25 * xi_1 + p34 * xi_2;
@@ -9578,9 +9612,9 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
     const double b62 = 1.0 / b61;
     const double b63 = std::sqrt(b60);
     const double b64 = p43 * (b62 * (Y_0 - (p44 * xi_0 + p27 * xi_1 + p36 * xi_2)) * Y_0 + b62 * (Y_1 - (p45 * xi_0 + p46 * xi_1 + p47 * xi_2)) * Y_1 + b62 * (Y_2 - (p48 * xi_0 + p52 * xi_1 + p53 * xi_2)) * Y_2) * b62 * (1.0 / b63) * w;
-    const double b65 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * w + b64 * Y_0) * V;
-    const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * w + b64 * Y_1) * V;
-    const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * w + b64 * Y_2) * V;
+    const double b65 = V0 * ((p21 * b57 + p33 * b58 + p40 * b59) * w + b64 * Y_0) * sf * V;
+    const double b66 = V0 * ((p33 * b57 + p54 * b58 + p55 * b59) * w + b64 * Y_1) * sf * V;
+    const double b67 = V0 * ((p40 * b57 + p55 * b58 + p56 * b59) * w + b64 * Y_2) * sf * V;
     forces[(k + 1) * 3 + 0] = -b65;
     lane9[lane] += b65;
     forces[(k + 1) * 3 + 1] = -b66;
@@ -9594,7 +9628,7 @@ void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, do
   forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_littlewood_3d_intact_tangent: per bond 118 add, 239 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
+// correspondence_littlewood_3d_intact_tangent: per bond 118 add, 278 mul, 3 div, 2 call; per family 64 add, 137 mul, 2 div, 0 call
 void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -9773,6 +9807,7 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double b95 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
     const double b96 = p39 * xi_0 + p35 * xi_1 + p44 * xi_2;
@@ -9794,9 +9829,9 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     const double b112 = std::sqrt(b98);
     const double b113 = 1.0 / b112;
     const double b114 = b111 * b104 * b113 * w;
-    const double b115 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * w + b114 * Y_0) * V;
-    const double b116 = V0 * ((p43 * b95 + p64 * b96 + p65 * b97) * w + b114 * Y_1) * V;
-    const double b117 = V0 * ((p50 * b95 + p65 * b96 + p66 * b97) * w + b114 * Y_2) * V;
+    const double b115 = V0 * ((p31 * b95 + p43 * b96 + p50 * b97) * w + b114 * Y_0) * sf * V;
+    const double b116 = V0 * ((p43 * b95 + p64 * b96 + p65 * b97) * w + b114 * Y_1) * sf * V;
+    const double b117 = V0 * ((p50 * b95 + p65 * b96 + p66 * b97) * w + b114 * Y_2) * sf * V;
     const double b118 = 1.0 / b102;
     const double b119 = b118 * b104;
     const double b120 = b119 * b105;
@@ -9846,69 +9881,69 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
     lane10[lane] += b116;
     if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b117;
     lane11[lane] += b117;
-    factors.direct[k * 9 + 0] = b114 + b124 * Y_0 - b125 * b99;
-    factors.direct[k * 9 + 1] = b126 * Y_0 - b127;
-    factors.direct[k * 9 + 2] = b128 * Y_0 - b130;
-    factors.direct[k * 9 + 3] = b124 * Y_1 - b127;
-    factors.direct[k * 9 + 4] = b114 + b126 * Y_1 - b125 * b100;
-    factors.direct[k * 9 + 5] = b128 * Y_1 - b131;
-    factors.direct[k * 9 + 6] = b124 * Y_2 - b130;
-    factors.direct[k * 9 + 7] = b126 * Y_2 - b131;
-    factors.direct[k * 9 + 8] = b114 + b128 * Y_2 - b125 * b101;
+    factors.direct[k * 9 + 0] = (b114 + b124 * Y_0 - b125 * b99) * sf;
+    factors.direct[k * 9 + 1] = (b126 * Y_0 - b127) * sf;
+    factors.direct[k * 9 + 2] = (b128 * Y_0 - b130) * sf;
+    factors.direct[k * 9 + 3] = (b124 * Y_1 - b127) * sf;
+    factors.direct[k * 9 + 4] = (b114 + b126 * Y_1 - b125 * b100) * sf;
+    factors.direct[k * 9 + 5] = (b128 * Y_1 - b131) * sf;
+    factors.direct[k * 9 + 6] = (b124 * Y_2 - b130) * sf;
+    factors.direct[k * 9 + 7] = (b126 * Y_2 - b131) * sf;
+    factors.direct[k * 9 + 8] = (b114 + b128 * Y_2 - b125 * b101) * sf;
     factors.right[(k * 9 + 0) * 3 + 0] = b133;
     factors.right[(k * 9 + 0) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 0) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 0) * 3 + 0] = (p69 * b95 + b134 + b135) * w - b137 * b99;
-    factors.left[(k * 9 + 0) * 3 + 1] = (p70 * b95 + p68 * b96) * w - b138;
-    factors.left[(k * 9 + 0) * 3 + 2] = (p71 * b95 + p68 * b97) * w - b140;
+    factors.left[(k * 9 + 0) * 3 + 0] = ((p69 * b95 + b134 + b135) * w - b137 * b99) * sf;
+    factors.left[(k * 9 + 0) * 3 + 1] = ((p70 * b95 + p68 * b96) * w - b138) * sf;
+    factors.left[(k * 9 + 0) * 3 + 2] = ((p71 * b95 + p68 * b97) * w - b140) * sf;
     factors.right[(k * 9 + 1) * 3 + 0] = b141;
     factors.right[(k * 9 + 1) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 1) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 1) * 3 + 0] = (p73 * b95 + b142 + b143) * w - b144 * b99;
-    factors.left[(k * 9 + 1) * 3 + 1] = (p74 * b95 + p72 * b96) * w - b145;
-    factors.left[(k * 9 + 1) * 3 + 2] = (p75 * b95 + p72 * b97) * w - b147;
+    factors.left[(k * 9 + 1) * 3 + 0] = ((p73 * b95 + b142 + b143) * w - b144 * b99) * sf;
+    factors.left[(k * 9 + 1) * 3 + 1] = ((p74 * b95 + p72 * b96) * w - b145) * sf;
+    factors.left[(k * 9 + 1) * 3 + 2] = ((p75 * b95 + p72 * b97) * w - b147) * sf;
     factors.right[(k * 9 + 2) * 3 + 0] = b148;
     factors.right[(k * 9 + 2) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 2) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 2) * 3 + 0] = (p77 * b95 + b149 + b150) * w - b151 * b99;
-    factors.left[(k * 9 + 2) * 3 + 1] = (p78 * b95 + p76 * b96) * w - b152;
-    factors.left[(k * 9 + 2) * 3 + 2] = (p79 * b95 + p76 * b97) * w - b154;
+    factors.left[(k * 9 + 2) * 3 + 0] = ((p77 * b95 + b149 + b150) * w - b151 * b99) * sf;
+    factors.left[(k * 9 + 2) * 3 + 1] = ((p78 * b95 + p76 * b96) * w - b152) * sf;
+    factors.left[(k * 9 + 2) * 3 + 2] = ((p79 * b95 + p76 * b97) * w - b154) * sf;
     factors.right[(k * 9 + 3) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 3) * 3 + 1] = b133;
     factors.right[(k * 9 + 3) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 3) * 3 + 0] = (p80 * b95 + p81 * b96) * w - b138;
-    factors.left[(k * 9 + 3) * 3 + 1] = (b135 + b155 + p82 * b96) * w - b137 * b100;
-    factors.left[(k * 9 + 3) * 3 + 2] = (p71 * b96 + p80 * b97) * w - b156;
+    factors.left[(k * 9 + 3) * 3 + 0] = ((p80 * b95 + p81 * b96) * w - b138) * sf;
+    factors.left[(k * 9 + 3) * 3 + 1] = ((b135 + b155 + p82 * b96) * w - b137 * b100) * sf;
+    factors.left[(k * 9 + 3) * 3 + 2] = ((p71 * b96 + p80 * b97) * w - b156) * sf;
     factors.right[(k * 9 + 4) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 4) * 3 + 1] = b141;
     factors.right[(k * 9 + 4) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 4) * 3 + 0] = (p83 * b95 + p84 * b96) * w - b145;
-    factors.left[(k * 9 + 4) * 3 + 1] = (b143 + b157 + p85 * b96) * w - b144 * b100;
-    factors.left[(k * 9 + 4) * 3 + 2] = (p75 * b96 + p83 * b97) * w - b158;
+    factors.left[(k * 9 + 4) * 3 + 0] = ((p83 * b95 + p84 * b96) * w - b145) * sf;
+    factors.left[(k * 9 + 4) * 3 + 1] = ((b143 + b157 + p85 * b96) * w - b144 * b100) * sf;
+    factors.left[(k * 9 + 4) * 3 + 2] = ((p75 * b96 + p83 * b97) * w - b158) * sf;
     factors.right[(k * 9 + 5) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 5) * 3 + 1] = b148;
     factors.right[(k * 9 + 5) * 3 + 2] = 0.0;
-    factors.left[(k * 9 + 5) * 3 + 0] = (p86 * b95 + p87 * b96) * w - b152;
-    factors.left[(k * 9 + 5) * 3 + 1] = (b150 + b159 + p88 * b96) * w - b151 * b100;
-    factors.left[(k * 9 + 5) * 3 + 2] = (p79 * b96 + p86 * b97) * w - b160;
+    factors.left[(k * 9 + 5) * 3 + 0] = ((p86 * b95 + p87 * b96) * w - b152) * sf;
+    factors.left[(k * 9 + 5) * 3 + 1] = ((b150 + b159 + p88 * b96) * w - b151 * b100) * sf;
+    factors.left[(k * 9 + 5) * 3 + 2] = ((p79 * b96 + p86 * b97) * w - b160) * sf;
     factors.right[(k * 9 + 6) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 6) * 3 + 2] = b133;
-    factors.left[(k * 9 + 6) * 3 + 0] = (p89 * b95 + p81 * b97) * w - b140;
-    factors.left[(k * 9 + 6) * 3 + 1] = (p89 * b96 + p70 * b97) * w - b156;
-    factors.left[(k * 9 + 6) * 3 + 2] = (b134 + b155 + p90 * b97) * w - b137 * b101;
+    factors.left[(k * 9 + 6) * 3 + 0] = ((p89 * b95 + p81 * b97) * w - b140) * sf;
+    factors.left[(k * 9 + 6) * 3 + 1] = ((p89 * b96 + p70 * b97) * w - b156) * sf;
+    factors.left[(k * 9 + 6) * 3 + 2] = ((b134 + b155 + p90 * b97) * w - b137 * b101) * sf;
     factors.right[(k * 9 + 7) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 7) * 3 + 2] = b141;
-    factors.left[(k * 9 + 7) * 3 + 0] = (p91 * b95 + p84 * b97) * w - b147;
-    factors.left[(k * 9 + 7) * 3 + 1] = (p91 * b96 + p74 * b97) * w - b158;
-    factors.left[(k * 9 + 7) * 3 + 2] = (b142 + b157 + p92 * b97) * w - b144 * b101;
+    factors.left[(k * 9 + 7) * 3 + 0] = ((p91 * b95 + p84 * b97) * w - b147) * sf;
+    factors.left[(k * 9 + 7) * 3 + 1] = ((p91 * b96 + p74 * b97) * w - b158) * sf;
+    factors.left[(k * 9 + 7) * 3 + 2] = ((b142 + b157 + p92 * b97) * w - b144 * b101) * sf;
     factors.right[(k * 9 + 8) * 3 + 0] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 1] = 0.0;
     factors.right[(k * 9 + 8) * 3 + 2] = b148;
-    factors.left[(k * 9 + 8) * 3 + 0] = (p93 * b95 + p87 * b97) * w - b154;
-    factors.left[(k * 9 + 8) * 3 + 1] = (p93 * b96 + p78 * b97) * w - b160;
-    factors.left[(k * 9 + 8) * 3 + 2] = (b149 + b159 + p94 * b97) * w - b151 * b101;
+    factors.left[(k * 9 + 8) * 3 + 0] = ((p93 * b95 + p87 * b97) * w - b154) * sf;
+    factors.left[(k * 9 + 8) * 3 + 1] = ((p93 * b96 + p78 * b97) * w - b160) * sf;
+    factors.left[(k * 9 + 8) * 3 + 2] = ((b149 + b159 + p94 * b97) * w - b151 * b101) * sf;
     }
   }
   if (forces != nullptr) forces[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
@@ -9916,7 +9951,7 @@ void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, dou
   if (forces != nullptr) forces[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
-// correspondence_littlewood_3d_intact_jvp: per bond 142 add, 271 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
+// correspondence_littlewood_3d_intact_jvp: per bond 142 add, 307 mul, 3 div, 2 call; per family 40 add, 115 mul, 2 div, 0 call
 void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double V0 = fam.V0;
@@ -10110,6 +10145,7 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double w = fam.w[k];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double V = fam.V[k];
@@ -10165,7 +10201,7 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
     const double b119 = b118 * Y_0;
     const double b120 = b112 * Y_2;
     const double b121 = b120 * Y_0;
-    const double b122 = V0 * (dY_0 * (b86 + b93 * Y_0 - b94 * b71) + dY_1 * (b95 * Y_0 - b96) + dY_2 * (b97 * Y_0 - b99) + ds_deformed_shape_0_0 * ((p44 * b100 + b102 + b104) * w - b106 * b71) + ds_deformed_shape_0_1 * ((p48 * b100 + b107 + b108) * w - b109 * b71) + ds_deformed_shape_0_2 * ((p52 * b100 + b110 + b111) * w - b112 * b71) + ds_deformed_shape_1_0 * ((p55 * b100 + p56 * b101) * w - b113) + ds_deformed_shape_1_1 * ((p57 * b100 + p58 * b101) * w - b114) + ds_deformed_shape_1_2 * ((p59 * b100 + p60 * b101) * w - b115) + ds_deformed_shape_2_0 * ((p61 * b100 + p56 * b103) * w - b117) + ds_deformed_shape_2_1 * ((p62 * b100 + p58 * b103) * w - b119) + ds_deformed_shape_2_2 * ((p63 * b100 + p60 * b103) * w - b121)) * V;
+    const double b122 = V0 * (dY_0 * (b86 + b93 * Y_0 - b94 * b71) * sf + dY_1 * (b95 * Y_0 - b96) * sf + dY_2 * (b97 * Y_0 - b99) * sf + ds_deformed_shape_0_0 * ((p44 * b100 + b102 + b104) * w - b106 * b71) * sf + ds_deformed_shape_0_1 * ((p48 * b100 + b107 + b108) * w - b109 * b71) * sf + ds_deformed_shape_0_2 * ((p52 * b100 + b110 + b111) * w - b112 * b71) * sf + ds_deformed_shape_1_0 * ((p55 * b100 + p56 * b101) * w - b113) * sf + ds_deformed_shape_1_1 * ((p57 * b100 + p58 * b101) * w - b114) * sf + ds_deformed_shape_1_2 * ((p59 * b100 + p60 * b101) * w - b115) * sf + ds_deformed_shape_2_0 * ((p61 * b100 + p56 * b103) * w - b117) * sf + ds_deformed_shape_2_1 * ((p62 * b100 + p58 * b103) * w - b119) * sf + ds_deformed_shape_2_2 * ((p63 * b100 + p60 * b103) * w - b121) * sf) * V;
     const double b123 = b98 * Y_1;
     const double b124 = p56 * b100;
     const double b125 = p58 * b100;
@@ -10173,8 +10209,8 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
     const double b127 = b116 * Y_1;
     const double b128 = b118 * Y_1;
     const double b129 = b120 * Y_1;
-    const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) + dY_1 * (b86 + b95 * Y_1 - b94 * b72) + dY_2 * (b97 * Y_1 - b123) + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * w - b113) + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * w - b114) + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * w - b115) + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * w - b106 * b72) + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * w - b109 * b72) + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * w - b112 * b72) + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * w - b127) + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * w - b128) + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * w - b129)) * V;
-    const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) + dY_1 * (b95 * Y_2 - b123) + dY_2 * (b86 + b97 * Y_2 - b94 * b73) + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * w - b117) + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * w - b119) + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * w - b121) + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * w - b127) + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * w - b128) + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * w - b129) + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * w - b106 * b73) + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * w - b109 * b73) + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * w - b112 * b73)) * V;
+    const double b130 = V0 * (dY_0 * (b93 * Y_1 - b96) * sf + dY_1 * (b86 + b95 * Y_1 - b94 * b72) * sf + dY_2 * (b97 * Y_1 - b123) * sf + ds_deformed_shape_0_0 * ((p45 * b100 + p42 * b101) * w - b113) * sf + ds_deformed_shape_0_1 * ((p49 * b100 + p47 * b101) * w - b114) * sf + ds_deformed_shape_0_2 * ((p53 * b100 + p51 * b101) * w - b115) * sf + ds_deformed_shape_1_0 * ((b104 + b124 + p64 * b101) * w - b106 * b72) * sf + ds_deformed_shape_1_1 * ((b108 + b125 + p65 * b101) * w - b109 * b72) * sf + ds_deformed_shape_1_2 * ((b111 + b126 + p66 * b101) * w - b112 * b72) * sf + ds_deformed_shape_2_0 * ((p61 * b101 + p45 * b103) * w - b127) * sf + ds_deformed_shape_2_1 * ((p62 * b101 + p49 * b103) * w - b128) * sf + ds_deformed_shape_2_2 * ((p63 * b101 + p53 * b103) * w - b129) * sf) * V;
+    const double b131 = V0 * (dY_0 * (b93 * Y_2 - b99) * sf + dY_1 * (b95 * Y_2 - b123) * sf + dY_2 * (b86 + b97 * Y_2 - b94 * b73) * sf + ds_deformed_shape_0_0 * ((p46 * b100 + p42 * b103) * w - b117) * sf + ds_deformed_shape_0_1 * ((p50 * b100 + p47 * b103) * w - b119) * sf + ds_deformed_shape_0_2 * ((p54 * b100 + p51 * b103) * w - b121) * sf + ds_deformed_shape_1_0 * ((p46 * b101 + p55 * b103) * w - b127) * sf + ds_deformed_shape_1_1 * ((p50 * b101 + p57 * b103) * w - b128) * sf + ds_deformed_shape_1_2 * ((p54 * b101 + p59 * b103) * w - b129) * sf + ds_deformed_shape_2_0 * ((b102 + b124 + p67 * b103) * w - b106 * b73) * sf + ds_deformed_shape_2_1 * ((b107 + b125 + p68 * b103) * w - b109 * b73) * sf + ds_deformed_shape_2_2 * ((b110 + b126 + p69 * b103) * w - b112 * b73) * sf) * V;
     df[(k + 1) * 3 + 0] = -b122;
     lane18[lane] += b122;
     df[(k + 1) * 3 + 1] = -b130;
@@ -10544,20 +10580,20 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.n_states = 9;
   d.damaged.moments = &correspondence_littlewood_3d_damaged_moments;
   d.damaged.residual = &correspondence_littlewood_3d_damaged_residual;
-  d.damaged.residual_ops = {31, 74, 2, 2};
+  d.damaged.residual_ops = {31, 77, 2, 2};
   d.damaged.tangent = &correspondence_littlewood_3d_damaged_tangent;
-  d.damaged.tangent_ops = {118, 279, 3, 2};
+  d.damaged.tangent_ops = {118, 318, 3, 2};
   d.damaged.jvp = &correspondence_littlewood_3d_damaged_jvp;
-  d.damaged.jvp_ops = {142, 310, 3, 2};
+  d.damaged.jvp_ops = {142, 346, 3, 2};
   d.damaged.outputs = &correspondence_littlewood_3d_damaged_outputs;
   d.damaged.form = &correspondence_littlewood_3d_damaged_form;
   d.intact.moments = &correspondence_littlewood_3d_intact_moments;
   d.intact.residual = &correspondence_littlewood_3d_intact_residual;
-  d.intact.residual_ops = {31, 69, 2, 2};
+  d.intact.residual_ops = {31, 72, 2, 2};
   d.intact.tangent = &correspondence_littlewood_3d_intact_tangent;
-  d.intact.tangent_ops = {118, 239, 3, 2};
+  d.intact.tangent_ops = {118, 278, 3, 2};
   d.intact.jvp = &correspondence_littlewood_3d_intact_jvp;
-  d.intact.jvp_ops = {142, 271, 3, 2};
+  d.intact.jvp_ops = {142, 307, 3, 2};
   d.intact.outputs = &correspondence_littlewood_3d_intact_outputs;
   d.intact.form = &correspondence_littlewood_3d_intact_form;
   return d;

@@ -29,7 +29,7 @@ void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[0] = s_m;
 }
 
-// lps_plane_strain_damaged_residual: per bond 10 add, 26 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
+// lps_plane_strain_damaged_residual: per bond 10 add, 29 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -46,10 +46,11 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -69,13 +70,14 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b3 = p2 * (Q_lambda - Q_mu);
     const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * alpha * w;
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -86,7 +88,7 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_tangent: per bond 10 add, 44 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_plane_strain_damaged_tangent: per bond 10 add, 50 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -103,10 +105,11 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -128,21 +131,23 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b5 = Q_lambda - Q_mu;
     const double b6 = p3 * b5;
     const double b7 = xi_0 * xi_0;
     const double b8 = xi_1 * xi_1;
     const double b9 = 1.0 / (b7 + b8);
     const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
-    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * V * alpha * w;
-    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * V * alpha * w;
-    const double b13 = p4 * Q_mu * b9 * alpha * w;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * sf * V * alpha * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * sf * V * alpha * w;
+    const double b13 = p4 * Q_mu * b9 * sf * alpha * w;
     const double b14 = b13 * xi_1 * xi_0;
-    const double b15 = p0 * V * alpha * w;
-    const double b16 = p0 * b5 * alpha * w;
+    const double b15 = p0 * sd * V * alpha * w;
+    const double b16 = p0 * b5 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
     lane1[lane] += b11;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
@@ -161,7 +166,7 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_jvp: per bond 7 add, 37 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 7 add, 42 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -175,13 +180,14 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1;
+    lane0[lane] += p0 * dY_0 * sd * V * alpha * w * xi_0 + p0 * dY_1 * sd * V * alpha * w * xi_1;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -200,6 +206,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -208,9 +215,9 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * Q_mu * b6 * alpha * w;
-    const double b8 = p2 * dY_1 * Q_mu * b6 * alpha * w;
-    const double b9 = p3 * (Q_lambda - Q_mu) * alpha * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * sf * alpha * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * sf * alpha * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * sf * alpha * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -223,7 +230,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_energy: per bond 7 add, 16 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_damaged_energy: per bond 7 add, 17 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -261,10 +268,11 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -272,7 +280,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_plane_strain_damaged_outputs: per bond 3 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_plane_strain_damaged_outputs: per bond 3 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -288,10 +296,11 @@ void lps_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* output
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -408,7 +417,7 @@ void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments
   moments[0] = s_m;
 }
 
-// lps_plane_strain_intact_residual: per bond 10 add, 23 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
+// lps_plane_strain_intact_residual: per bond 10 add, 26 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -425,9 +434,10 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -447,12 +457,13 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b3 = p2 * (Q_lambda - Q_mu);
     const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * w;
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -463,7 +474,7 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_tangent: per bond 10 add, 38 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_plane_strain_intact_tangent: per bond 10 add, 44 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -480,9 +491,10 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -504,20 +516,22 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b5 = Q_lambda - Q_mu;
     const double b6 = p3 * b5;
     const double b7 = xi_0 * xi_0;
     const double b8 = xi_1 * xi_1;
     const double b9 = 1.0 / (b7 + b8);
     const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
-    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * V * w;
-    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * V * w;
-    const double b13 = p4 * Q_mu * b9 * w;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * sf * V * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * sf * V * w;
+    const double b13 = p4 * Q_mu * b9 * sf * w;
     const double b14 = b13 * xi_1 * xi_0;
-    const double b15 = p0 * V * w;
-    const double b16 = p0 * b5 * w;
+    const double b15 = p0 * sd * V * w;
+    const double b16 = p0 * b5 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
     lane1[lane] += b11;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
@@ -536,7 +550,7 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_jvp: per bond 7 add, 32 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 7 add, 37 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -550,12 +564,13 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double xi_1 = fam.xi[k * 2 + 1];
-    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1;
+    lane0[lane] += p0 * dY_0 * sd * V * w * xi_0 + p0 * dY_1 * sd * V * w * xi_1;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -574,6 +589,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
@@ -581,9 +597,9 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * Q_mu * b6 * w;
-    const double b8 = p2 * dY_1 * Q_mu * b6 * w;
-    const double b9 = p3 * (Q_lambda - Q_mu) * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * sf * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * sf * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * sf * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -596,7 +612,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_energy: per bond 7 add, 14 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_intact_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -633,9 +649,10 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -643,7 +660,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_plane_strain_intact_outputs: per bond 3 add, 5 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_plane_strain_intact_outputs: per bond 3 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -659,9 +676,10 @@ void lps_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -770,27 +788,28 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
   d.damaged.residual = &lps_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {10, 26, 1, 0};
+  d.damaged.residual_ops = {10, 29, 1, 0};
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {10, 44, 1, 0};
+  d.damaged.tangent_ops = {10, 50, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {7, 37, 1, 0};
+  d.damaged.jvp_ops = {7, 42, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.damaged.form = &lps_plane_strain_damaged_form;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
-  d.intact.residual_ops = {10, 23, 1, 0};
+  d.intact.residual_ops = {10, 26, 1, 0};
   d.intact.tangent = &lps_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {10, 38, 1, 0};
+  d.intact.tangent_ops = {10, 44, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {7, 32, 1, 0};
+  d.intact.jvp_ops = {7, 37, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   d.intact.form = &lps_plane_strain_intact_form;
@@ -820,7 +839,7 @@ void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_damaged_residual: per bond 16 add, 35 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
+// lps_3d_damaged_residual: per bond 16 add, 39 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -839,10 +858,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -865,14 +885,15 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b3 = p2 * (Q_lambda - Q_mu);
     const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * alpha * w;
-    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * V * alpha * w;
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * alpha * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -886,7 +907,7 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_tangent: per bond 16 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_3d_damaged_tangent: per bond 16 add, 66 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -905,10 +926,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -933,9 +955,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b5 = Q_lambda - Q_mu;
     const double b6 = p3 * b5;
     const double b7 = xi_0 * xi_0;
@@ -943,16 +967,16 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double b9 = xi_2 * xi_2;
     const double b10 = 1.0 / (b7 + b8 + b9);
     const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
-    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * V * alpha * w;
-    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * V * alpha * w;
-    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * V * alpha * w;
-    const double b15 = p4 * Q_mu * b10 * alpha * w;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * sf * V * alpha * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * sf * V * alpha * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * sf * V * alpha * w;
+    const double b15 = p4 * Q_mu * b10 * sf * alpha * w;
     const double b16 = b15 * xi_1 * xi_0;
     const double b17 = b15 * xi_2;
     const double b18 = b17 * xi_0;
     const double b19 = b17 * xi_1;
-    const double b20 = p0 * V * alpha * w;
-    const double b21 = p0 * b5 * alpha * w;
+    const double b20 = p0 * sd * V * alpha * w;
+    const double b21 = p0 * b5 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
     lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
@@ -981,7 +1005,7 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_jvp: per bond 14 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_3d_damaged_jvp: per bond 14 add, 66 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -995,6 +1019,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1003,7 +1028,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    lane0[lane] += p0 * dY_0 * V * alpha * w * xi_0 + p0 * dY_1 * V * alpha * w * xi_1 + p0 * dY_2 * V * alpha * w * xi_2;
+    lane0[lane] += p0 * dY_0 * sd * V * alpha * w * xi_0 + p0 * dY_1 * sd * V * alpha * w * xi_1 + p0 * dY_2 * sd * V * alpha * w * xi_2;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1024,6 +1049,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -1034,11 +1060,11 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * Q_mu * b7 * alpha * w;
-    const double b9 = p2 * dY_1 * Q_mu * b7 * alpha * w;
-    const double b10 = p2 * dY_2 * Q_mu * b7 * alpha * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * sf * alpha * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * sf * alpha * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * sf * alpha * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * (Q_lambda - Q_mu) * alpha * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * sf * alpha * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1055,7 +1081,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_energy: per bond 12 add, 19 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
+// lps_3d_damaged_energy: per bond 12 add, 20 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1097,10 +1123,11 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1108,7 +1135,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_3d_damaged_outputs: per bond 5 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_3d_damaged_outputs: per bond 5 add, 8 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1126,10 +1153,11 @@ void lps_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1315,7 +1343,7 @@ void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_intact_residual: per bond 16 add, 31 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
+// lps_3d_intact_residual: per bond 16 add, 35 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1334,9 +1362,10 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1359,13 +1388,14 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b3 = p2 * (Q_lambda - Q_mu);
     const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * w;
-    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * V * w;
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * sf * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * sf * V * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -1379,7 +1409,7 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_tangent: per bond 16 add, 52 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_3d_intact_tangent: per bond 16 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1398,9 +1428,10 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1425,8 +1456,10 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b5 = Q_lambda - Q_mu;
     const double b6 = p3 * b5;
     const double b7 = xi_0 * xi_0;
@@ -1434,16 +1467,16 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double b9 = xi_2 * xi_2;
     const double b10 = 1.0 / (b7 + b8 + b9);
     const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
-    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * V * w;
-    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * V * w;
-    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * V * w;
-    const double b15 = p4 * Q_mu * b10 * w;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * sf * V * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * sf * V * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * sf * V * w;
+    const double b15 = p4 * Q_mu * b10 * sf * w;
     const double b16 = b15 * xi_1 * xi_0;
     const double b17 = b15 * xi_2;
     const double b18 = b17 * xi_0;
     const double b19 = b17 * xi_1;
-    const double b20 = p0 * V * w;
-    const double b21 = p0 * b5 * w;
+    const double b20 = p0 * sd * V * w;
+    const double b21 = p0 * b5 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
     lane1[lane] += b12;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
@@ -1472,7 +1505,7 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_jvp: per bond 14 add, 52 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
+// lps_3d_intact_jvp: per bond 14 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1486,6 +1519,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1493,7 +1527,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_1 = fam.xi[k * 3 + 1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
     const double xi_2 = fam.xi[k * 3 + 2];
-    lane0[lane] += p0 * dY_0 * V * w * xi_0 + p0 * dY_1 * V * w * xi_1 + p0 * dY_2 * V * w * xi_2;
+    lane0[lane] += p0 * dY_0 * sd * V * w * xi_0 + p0 * dY_1 * sd * V * w * xi_1 + p0 * dY_2 * sd * V * w * xi_2;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1514,6 +1548,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -1523,11 +1558,11 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * Q_mu * b7 * w;
-    const double b9 = p2 * dY_1 * Q_mu * b7 * w;
-    const double b10 = p2 * dY_2 * Q_mu * b7 * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * sf * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * sf * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * sf * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * (Q_lambda - Q_mu) * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * sf * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1544,7 +1579,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_energy: per bond 12 add, 17 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
+// lps_3d_intact_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1585,9 +1620,10 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane1[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1595,7 +1631,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_3d_intact_outputs: per bond 5 add, 6 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
+// lps_3d_intact_outputs: per bond 5 add, 7 mul, 0 div, 0 call; per family 0 add, 1 mul, 1 div, 0 call
 void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1613,9 +1649,10 @@ void lps_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * V * w;
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1792,27 +1829,28 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
   d.damaged.residual = &lps_3d_damaged_residual;
-  d.damaged.residual_ops = {16, 35, 1, 0};
+  d.damaged.residual_ops = {16, 39, 1, 0};
   d.damaged.tangent = &lps_3d_damaged_tangent;
-  d.damaged.tangent_ops = {16, 59, 1, 0};
+  d.damaged.tangent_ops = {16, 66, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {14, 59, 1, 0};
+  d.damaged.jvp_ops = {14, 66, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.damaged.form = &lps_3d_damaged_form;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
-  d.intact.residual_ops = {16, 31, 1, 0};
+  d.intact.residual_ops = {16, 35, 1, 0};
   d.intact.tangent = &lps_3d_intact_tangent;
-  d.intact.tangent_ops = {16, 52, 1, 0};
+  d.intact.tangent_ops = {16, 59, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {14, 52, 1, 0};
+  d.intact.jvp_ops = {14, 59, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   d.intact.form = &lps_3d_intact_form;
@@ -1876,7 +1914,7 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_damaged_residual: per bond 14 add, 34 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_residual: per bond 14 add, 37 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1913,10 +1951,11 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1936,13 +1975,14 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b19 = p18 * (Q_lambda - Q_mu);
     const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
-    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * alpha * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -1953,7 +1993,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_tangent: per bond 14 add, 57 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_tangent: per bond 14 add, 65 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1990,10 +2030,11 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2015,9 +2056,11 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b21 = Q_lambda - Q_mu;
     const double b22 = p19 * b21;
     const double b23 = p11 * xi_0 + p14 * xi_1;
@@ -2025,10 +2068,10 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double b25 = xi_1 * xi_1;
     const double b26 = 1.0 / (b24 + b25);
     const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
-    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * V * alpha * w;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * sf * V * alpha * w;
     const double b29 = p15 * xi_0 + p16 * xi_1;
-    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * V * alpha * w;
-    const double b31 = p20 * Q_mu * b26 * alpha * w;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * sf * V * alpha * w;
+    const double b31 = p20 * Q_mu * b26 * sf * alpha * w;
     const double b32 = b31 * xi_1 * xi_0;
     const double b33 = p0 * b21;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
@@ -2039,17 +2082,17 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     factors.direct[k * 4 + 1] = b32;
     factors.direct[k * 4 + 2] = b32;
     factors.direct[k * 4 + 3] = b31 * b25;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 11 add, 47 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 11 add, 53 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2085,11 +2128,12 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * sd * V * alpha * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * sd * V * alpha * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2108,6 +2152,7 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -2116,11 +2161,11 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * Q_mu * b22 * alpha * w;
-    const double b24 = p18 * dY_1 * Q_mu * b22 * alpha * w;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * sf * alpha * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * sf * alpha * w;
     const double b25 = p19 * (Q_lambda - Q_mu);
-    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
-    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * sf * alpha * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * sf * alpha * w) * V;
     df[(k + 1) * 2 + 0] = -b26;
     lane1[lane] += b26;
     df[(k + 1) * 2 + 1] = -b27;
@@ -2131,7 +2176,7 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 20 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 21 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2189,10 +2234,11 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -2200,7 +2246,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 10 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+// lps_corrected_plane_strain_damaged_outputs: per bond 5 add, 11 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
 void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2236,10 +2282,11 @@ void lps_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * alpha * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2390,7 +2437,7 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_intact_residual: per bond 14 add, 31 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_residual: per bond 14 add, 34 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2427,9 +2474,10 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2449,12 +2497,13 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b19 = p18 * (Q_lambda - Q_mu);
     const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
-    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * sf * V * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * sf * V * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -2465,7 +2514,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_tangent: per bond 14 add, 49 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_tangent: per bond 14 add, 57 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2502,9 +2551,10 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2526,8 +2576,10 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b21 = Q_lambda - Q_mu;
     const double b22 = p19 * b21;
     const double b23 = p11 * xi_0 + p14 * xi_1;
@@ -2535,10 +2587,10 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     const double b25 = xi_1 * xi_1;
     const double b26 = 1.0 / (b24 + b25);
     const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
-    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * V * w;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * sf * V * w;
     const double b29 = p15 * xi_0 + p16 * xi_1;
-    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * V * w;
-    const double b31 = p20 * Q_mu * b26 * w;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * sf * V * w;
+    const double b31 = p20 * Q_mu * b26 * sf * w;
     const double b32 = b31 * xi_1 * xi_0;
     const double b33 = p0 * b21;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
@@ -2549,17 +2601,17 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
     factors.direct[k * 4 + 1] = b32;
     factors.direct[k * 4 + 2] = b32;
     factors.direct[k * 4 + 3] = b31 * b25;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * V * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * V * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * w;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * sd * V * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * sd * V * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * sf * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 11 add, 41 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 11 add, 47 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2595,10 +2647,11 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
-    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * V * w;
+    lane0[lane] += p0 * dY_0 * (p11 * xi_0 + p14 * xi_1) * sd * V * w + p0 * dY_1 * (p15 * xi_0 + p16 * xi_1) * sd * V * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2617,6 +2670,7 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
@@ -2624,11 +2678,11 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * Q_mu * b22 * w;
-    const double b24 = p18 * dY_1 * Q_mu * b22 * w;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * sf * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * sf * w;
     const double b25 = p19 * (Q_lambda - Q_mu);
-    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * w) * V;
-    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * w) * V;
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * sf * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * sf * w) * V;
     df[(k + 1) * 2 + 0] = -b26;
     lane1[lane] += b26;
     df[(k + 1) * 2 + 1] = -b27;
@@ -2639,7 +2693,7 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_energy: per bond 9 add, 18 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2696,9 +2750,10 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane1[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -2706,7 +2761,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 9 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
+// lps_corrected_plane_strain_intact_outputs: per bond 5 add, 10 mul, 0 div, 0 call; per family 12 add, 24 mul, 2 div, 0 call
 void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2742,9 +2797,10 @@ void lps_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, doubl
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * V * w;
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2853,27 +2909,28 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
   d.damaged.residual = &lps_corrected_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {14, 34, 1, 0};
+  d.damaged.residual_ops = {14, 37, 1, 0};
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {14, 57, 1, 0};
+  d.damaged.tangent_ops = {14, 65, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {11, 47, 1, 0};
+  d.damaged.jvp_ops = {11, 53, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
-  d.intact.residual_ops = {14, 31, 1, 0};
+  d.intact.residual_ops = {14, 34, 1, 0};
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {14, 49, 1, 0};
+  d.intact.tangent_ops = {14, 57, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {11, 41, 1, 0};
+  d.intact.jvp_ops = {11, 47, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_corrected_plane_strain_intact_form;
@@ -2967,7 +3024,7 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_damaged_residual: per bond 28 add, 53 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_residual: per bond 28 add, 57 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3032,10 +3089,11 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3058,14 +3116,15 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b40 = p39 * (Q_lambda - Q_mu);
     const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * alpha * w;
-    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
-    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * alpha * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * alpha * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3079,7 +3138,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_tangent: per bond 28 add, 87 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_tangent: per bond 28 add, 98 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3144,10 +3203,11 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3172,9 +3232,11 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b42 = Q_lambda - Q_mu;
     const double b43 = p40 * b42;
     const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
@@ -3183,12 +3245,12 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double b47 = xi_2 * xi_2;
     const double b48 = 1.0 / (b45 + b46 + b47);
     const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
-    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * V * alpha * w;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * sf * V * alpha * w;
     const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * V * alpha * w;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * sf * V * alpha * w;
     const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * V * alpha * w;
-    const double b55 = p41 * Q_mu * b48 * alpha * w;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * sf * V * alpha * w;
+    const double b55 = p41 * Q_mu * b48 * sf * alpha * w;
     const double b56 = b55 * xi_1 * xi_0;
     const double b57 = b55 * xi_2;
     const double b58 = b57 * xi_0;
@@ -3209,12 +3271,12 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     factors.direct[k * 9 + 6] = b58;
     factors.direct[k * 9 + 7] = b59;
     factors.direct[k * 9 + 8] = b55 * b47;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * sd * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * sd * V * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * sf * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * sf * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3222,7 +3284,7 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_jvp: per bond 26 add, 81 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_jvp: per bond 26 add, 90 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3285,12 +3347,13 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * alpha * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sd * V * alpha * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sd * V * alpha * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sd * V * alpha * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3311,6 +3374,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -3321,14 +3385,14 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * Q_mu * b44 * alpha * w;
-    const double b46 = p39 * dY_1 * Q_mu * b44 * alpha * w;
-    const double b47 = p39 * dY_2 * Q_mu * b44 * alpha * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * sf * alpha * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * sf * alpha * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * sf * alpha * w;
     const double b48 = b47 * xi_2;
     const double b49 = p40 * (Q_lambda - Q_mu);
-    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * alpha * w) * V;
-    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
-    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * alpha * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * alpha * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * alpha * w) * V;
     df[(k + 1) * 3 + 0] = -b50;
     lane1[lane] += b50;
     df[(k + 1) * 3 + 1] = -b51;
@@ -3342,7 +3406,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_energy: per bond 18 add, 28 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_energy: per bond 18 add, 29 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3430,10 +3494,11 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3441,7 +3506,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_3d_damaged_outputs: per bond 11 add, 16 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+// lps_corrected_3d_damaged_outputs: per bond 11 add, 17 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
 void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3505,10 +3570,11 @@ void lps_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* output
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * alpha * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3757,7 +3823,7 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_intact_residual: per bond 28 add, 49 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
+// lps_corrected_3d_intact_residual: per bond 28 add, 53 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3822,9 +3888,10 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3847,13 +3914,14 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b40 = p39 * (Q_lambda - Q_mu);
     const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * w;
-    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
-    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * sf * V * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * sf * V * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * sf * V * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3867,7 +3935,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_tangent: per bond 28 add, 76 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
+// lps_corrected_3d_intact_tangent: per bond 28 add, 87 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3932,9 +4000,10 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3959,8 +4028,10 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b42 = Q_lambda - Q_mu;
     const double b43 = p40 * b42;
     const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
@@ -3969,12 +4040,12 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double b47 = xi_2 * xi_2;
     const double b48 = 1.0 / (b45 + b46 + b47);
     const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
-    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * V * w;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * sf * V * w;
     const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * V * w;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * sf * V * w;
     const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * V * w;
-    const double b55 = p41 * Q_mu * b48 * w;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * sf * V * w;
+    const double b55 = p41 * Q_mu * b48 * sf * w;
     const double b56 = b55 * xi_1 * xi_0;
     const double b57 = b55 * xi_2;
     const double b58 = b57 * xi_0;
@@ -3995,12 +4066,12 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     factors.direct[k * 9 + 6] = b58;
     factors.direct[k * 9 + 7] = b59;
     factors.direct[k * 9 + 8] = b55 * b47;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * V * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * w;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * sd * V * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * sd * V * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * sf * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * sf * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4008,7 +4079,7 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_jvp: per bond 26 add, 72 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
+// lps_corrected_3d_intact_jvp: per bond 26 add, 81 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4071,11 +4142,12 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
-    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * V * w;
+    lane0[lane] += p0 * dY_0 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sd * V * w + p0 * dY_1 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sd * V * w + p0 * dY_2 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sd * V * w;
     }
   }
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4096,6 +4168,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -4105,14 +4178,14 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * Q_mu * b44 * w;
-    const double b46 = p39 * dY_1 * Q_mu * b44 * w;
-    const double b47 = p39 * dY_2 * Q_mu * b44 * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * sf * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * sf * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * sf * w;
     const double b48 = b47 * xi_2;
     const double b49 = p40 * (Q_lambda - Q_mu);
-    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * w) * V;
-    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
-    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * sf * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * sf * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * sf * w) * V;
     df[(k + 1) * 3 + 0] = -b50;
     lane1[lane] += b50;
     df[(k + 1) * 3 + 1] = -b51;
@@ -4126,7 +4199,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_energy: per bond 18 add, 26 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_intact_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4213,9 +4286,10 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane1[lane] += p1 * ((p24 * xi_0 + p28 * xi_1 + p32 * xi_2) * (Y_0 - xi_0) + (p33 * xi_0 + p34 * xi_1 + p35 * xi_2) * (Y_1 - xi_1) + (p36 * xi_0 + p37 * xi_1 + p38 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4223,7 +4297,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// lps_corrected_3d_intact_outputs: per bond 11 add, 15 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
+// lps_corrected_3d_intact_outputs: per bond 11 add, 16 mul, 0 div, 0 call; per family 53 add, 84 mul, 2 div, 0 call
 void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4287,9 +4361,10 @@ void lps_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
-    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * V * w;
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4466,27 +4541,28 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.has_dilatation_sum = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;
   d.damaged.residual = &lps_corrected_3d_damaged_residual;
-  d.damaged.residual_ops = {28, 53, 1, 0};
+  d.damaged.residual_ops = {28, 57, 1, 0};
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
-  d.damaged.tangent_ops = {28, 87, 1, 0};
+  d.damaged.tangent_ops = {28, 98, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {26, 81, 1, 0};
+  d.damaged.jvp_ops = {26, 90, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_corrected_3d_damaged_form;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
-  d.intact.residual_ops = {28, 49, 1, 0};
+  d.intact.residual_ops = {28, 53, 1, 0};
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
-  d.intact.tangent_ops = {28, 76, 1, 0};
+  d.intact.tangent_ops = {28, 87, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {26, 72, 1, 0};
+  d.intact.jvp_ops = {26, 81, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;

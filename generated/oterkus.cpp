@@ -43,7 +43,7 @@ void oterkus_plane_strain_damaged_moments(const pd::abi::Family& fam, double* mo
   moments[2] = s_mx;
 }
 
-// oterkus_plane_strain_damaged_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_plane_strain_damaged_residual: per bond 8 add, 29 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -65,6 +65,7 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -73,7 +74,7 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -95,11 +96,12 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * alpha * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
@@ -112,7 +114,7 @@ void oterkus_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_plane_strain_damaged_tangent: per bond 25 add, 108 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -134,6 +136,7 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -142,7 +145,7 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -167,20 +170,22 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b19 = p4 * b18 * b15 * sf * V * alpha * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = 2.0 * b18;
-    const double b23 = b22 * b15 * alpha * w;
+    const double b23 = b22 * b15 * sf * alpha * w;
     const double b24 = p8 * b15 * b16;
     const double b25 = p9 * b15;
     const double b26 = Y_0 * Y_0;
@@ -188,15 +193,15 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
     const double b29 = b28 * b15;
     const double b30 = b14 * b29 * b16;
-    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * alpha * w;
-    const double b32 = b22 * b29 * alpha * w;
-    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * alpha * w;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * sf * alpha * w;
+    const double b32 = b22 * b29 * sf * alpha * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * sf * alpha * w;
     const double b34 = b32 * Y_1 * Y_0;
     const double b35 = p0 * b13;
-    const double b36 = b35 * b28 * b16 * V * alpha * w;
-    const double b37 = p0 * b17 * b15 * b16 * V * alpha * w;
-    const double b38 = b35 * b17 * b29 * b16 * V * alpha * w;
-    const double b39 = p10 * b13 * b28 * b16 * alpha * w;
+    const double b36 = b35 * b28 * b16 * sd * V * alpha * w;
+    const double b37 = p0 * b17 * b15 * b16 * sd * V * alpha * w;
+    const double b38 = b35 * b17 * b29 * b16 * sd * V * alpha * w;
+    const double b39 = p10 * b13 * b28 * b16 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
@@ -215,7 +220,7 @@ void oterkus_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_plane_strain_damaged_jvp: per bond 30 add, 109 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -239,6 +244,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -256,10 +262,10 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * alpha * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    const double b11 = b1 * b10 * b9 * sd * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * alpha * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * alpha * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
     }
   }
@@ -286,6 +292,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -295,7 +302,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * alpha * w;
+    const double b27 = b26 * b24 * sf * alpha * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -303,11 +310,11 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
     const double b33 = b32 * b24;
     const double b34 = b23 * b33 * b25;
-    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * alpha * w;
-    const double b36 = b26 * b33 * alpha * w;
-    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * alpha * w;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * sf * alpha * w;
+    const double b36 = b26 * b33 * sf * alpha * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * sf * alpha * w;
     const double b38 = b36 * Y_1 * Y_0;
-    const double b39 = p19 * b22 * b32 * b25 * alpha * w;
+    const double b39 = p19 * b22 * b32 * b25 * sf * alpha * w;
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
@@ -320,7 +327,7 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_plane_strain_damaged_outputs: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -336,13 +343,14 @@ void oterkus_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -473,7 +481,7 @@ void oterkus_plane_strain_intact_moments(const pd::abi::Family& fam, double* mom
   moments[2] = s_mx;
 }
 
-// oterkus_plane_strain_intact_residual: per bond 8 add, 25 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_plane_strain_intact_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -495,6 +503,7 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -502,7 +511,7 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -524,10 +533,11 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
@@ -540,7 +550,7 @@ void oterkus_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_plane_strain_intact_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -562,6 +572,7 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -569,7 +580,7 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -594,19 +605,21 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * w;
+    const double b19 = p4 * b18 * b15 * sf * V * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = 2.0 * b18;
-    const double b23 = b22 * b15 * w;
+    const double b23 = b22 * b15 * sf * w;
     const double b24 = p8 * b15 * b16;
     const double b25 = p9 * b15;
     const double b26 = Y_0 * Y_0;
@@ -614,15 +627,15 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
     const double b29 = b28 * b15;
     const double b30 = b14 * b29 * b16;
-    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * w;
-    const double b32 = b22 * b29 * w;
-    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * w;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * sf * w;
+    const double b32 = b22 * b29 * sf * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * sf * w;
     const double b34 = b32 * Y_1 * Y_0;
     const double b35 = p0 * b13;
-    const double b36 = b35 * b28 * b16 * V * w;
-    const double b37 = p0 * b17 * b15 * b16 * V * w;
-    const double b38 = b35 * b17 * b29 * b16 * V * w;
-    const double b39 = p10 * b13 * b28 * b16 * w;
+    const double b36 = b35 * b28 * b16 * sd * V * w;
+    const double b37 = p0 * b17 * b15 * b16 * sd * V * w;
+    const double b38 = b35 * b17 * b29 * b16 * sd * V * w;
+    const double b39 = p10 * b13 * b28 * b16 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
@@ -641,7 +654,7 @@ void oterkus_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_plane_strain_intact_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -665,6 +678,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -681,10 +695,10 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    lane0[lane] += b7 * b8 * b9 * V * w;
+    const double b11 = b1 * b10 * b9 * sd * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
     }
   }
@@ -711,6 +725,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
@@ -719,7 +734,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * w;
+    const double b27 = b26 * b24 * sf * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -727,11 +742,11 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
     const double b33 = b32 * b24;
     const double b34 = b23 * b33 * b25;
-    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * w;
-    const double b36 = b26 * b33 * w;
-    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * w;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * sf * w;
+    const double b36 = b26 * b33 * sf * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * sf * w;
     const double b38 = b36 * Y_1 * Y_0;
-    const double b39 = p19 * b22 * b32 * b25 * w;
+    const double b39 = p19 * b22 * b32 * b25 * sf * w;
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
@@ -744,7 +759,7 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_plane_strain_intact_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -760,12 +775,13 @@ void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -875,25 +891,26 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
   d.damaged.moments = &oterkus_plane_strain_damaged_moments;
   d.damaged.residual = &oterkus_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {8, 27, 4, 2};
+  d.damaged.residual_ops = {8, 29, 4, 2};
   d.damaged.tangent = &oterkus_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {25, 98, 5, 2};
+  d.damaged.tangent_ops = {25, 108, 5, 2};
   d.damaged.jvp = &oterkus_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {30, 100, 6, 2};
+  d.damaged.jvp_ops = {30, 109, 6, 2};
   d.damaged.outputs = &oterkus_plane_strain_damaged_outputs;
   d.damaged.form = &oterkus_plane_strain_damaged_form;
   d.intact.moments = &oterkus_plane_strain_intact_moments;
   d.intact.residual = &oterkus_plane_strain_intact_residual;
-  d.intact.residual_ops = {8, 25, 4, 2};
+  d.intact.residual_ops = {8, 27, 4, 2};
   d.intact.tangent = &oterkus_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {25, 88, 5, 2};
+  d.intact.tangent_ops = {25, 98, 5, 2};
   d.intact.jvp = &oterkus_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {30, 91, 6, 2};
+  d.intact.jvp_ops = {30, 100, 6, 2};
   d.intact.outputs = &oterkus_plane_strain_intact_outputs;
   d.intact.form = &oterkus_plane_strain_intact_form;
   return d;
@@ -936,7 +953,7 @@ void oterkus_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[2] = s_mx;
 }
 
-// oterkus_3d_damaged_residual: per bond 12 add, 32 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_3d_damaged_residual: per bond 12 add, 34 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -960,6 +977,7 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -968,7 +986,7 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -993,11 +1011,12 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * alpha * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     const double b14 = b11 * Y_2;
@@ -1014,7 +1033,7 @@ void oterkus_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_3d_damaged_tangent: per bond 41 add, 125 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+// oterkus_3d_damaged_tangent: per bond 41 add, 136 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
 void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1038,6 +1057,7 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1046,7 +1066,7 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1074,21 +1094,23 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b19 = p4 * b18 * b15 * sf * V * alpha * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = b19 * Y_2;
     const double b23 = 2.0 * b18;
-    const double b24 = b23 * b15 * alpha * w;
+    const double b24 = b23 * b15 * sf * alpha * w;
     const double b25 = p8 * b15 * b16;
     const double b26 = p9 * b15;
     const double b27 = Y_0 * Y_0;
@@ -1097,19 +1119,19 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
     const double b31 = b30 * b15;
     const double b32 = b14 * b31 * b16;
-    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * alpha * w;
-    const double b34 = b23 * b31 * alpha * w;
-    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * alpha * w;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * sf * alpha * w;
+    const double b34 = b23 * b31 * sf * alpha * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * sf * alpha * w;
     const double b36 = b34 * Y_1 * Y_0;
-    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * alpha * w;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * sf * alpha * w;
     const double b38 = b34 * Y_2;
     const double b39 = b38 * Y_0;
     const double b40 = b38 * Y_1;
     const double b41 = p0 * b13;
-    const double b42 = b41 * b30 * b16 * V * alpha * w;
-    const double b43 = p0 * b17 * b15 * b16 * V * alpha * w;
-    const double b44 = b41 * b17 * b31 * b16 * V * alpha * w;
-    const double b45 = p10 * b13 * b30 * b16 * alpha * w;
+    const double b42 = b41 * b30 * b16 * sd * V * alpha * w;
+    const double b43 = p0 * b17 * b15 * b16 * sd * V * alpha * w;
+    const double b44 = b41 * b17 * b31 * b16 * sd * V * alpha * w;
+    const double b45 = p10 * b13 * b30 * b16 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
@@ -1138,7 +1160,7 @@ void oterkus_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_3d_damaged_jvp: per bond 52 add, 134 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+// oterkus_3d_damaged_jvp: per bond 52 add, 144 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
 void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1164,6 +1186,7 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1182,10 +1205,10 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * alpha * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    const double b11 = b1 * b10 * b9 * sd * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * alpha * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * alpha * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
     }
   }
@@ -1215,6 +1238,7 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
@@ -1225,7 +1249,7 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * alpha * w;
+    const double b27 = b26 * b24 * sf * alpha * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -1234,14 +1258,14 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
     const double b34 = b33 * b24;
     const double b35 = b23 * b34 * b25;
-    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * alpha * w;
-    const double b37 = b26 * b34 * alpha * w;
-    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * alpha * w;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * sf * alpha * w;
+    const double b37 = b26 * b34 * sf * alpha * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * sf * alpha * w;
     const double b39 = b37 * Y_1 * Y_0;
-    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * alpha * w;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * sf * alpha * w;
     const double b41 = b37 * Y_2;
     const double b42 = b41 * Y_0;
-    const double b43 = p19 * b22 * b33 * b25 * alpha * w;
+    const double b43 = p19 * b22 * b33 * b25 * sf * alpha * w;
     const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
     const double b45 = b41 * Y_1;
     const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
@@ -1259,7 +1283,7 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// oterkus_3d_damaged_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_3d_damaged_outputs: per bond 8 add, 18 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1277,13 +1301,14 @@ void oterkus_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1483,7 +1508,7 @@ void oterkus_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[2] = s_mx;
 }
 
-// oterkus_3d_intact_residual: per bond 12 add, 30 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_3d_intact_residual: per bond 12 add, 32 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1507,6 +1532,7 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1514,7 +1540,7 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1539,10 +1565,11 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     const double b14 = b11 * Y_2;
@@ -1559,7 +1586,7 @@ void oterkus_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_3d_intact_tangent: per bond 41 add, 114 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+// oterkus_3d_intact_tangent: per bond 41 add, 125 mul, 5 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
 void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1583,6 +1610,7 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1590,7 +1618,7 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1618,20 +1646,22 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * w;
+    const double b19 = p4 * b18 * b15 * sf * V * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = b19 * Y_2;
     const double b23 = 2.0 * b18;
-    const double b24 = b23 * b15 * w;
+    const double b24 = b23 * b15 * sf * w;
     const double b25 = p8 * b15 * b16;
     const double b26 = p9 * b15;
     const double b27 = Y_0 * Y_0;
@@ -1640,19 +1670,19 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double b30 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b27 + b28 + b29);
     const double b31 = b30 * b15;
     const double b32 = b14 * b31 * b16;
-    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * w;
-    const double b34 = b23 * b31 * w;
-    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * w;
+    const double b33 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b32 * Y_0) * b15 * sf * w;
+    const double b34 = b23 * b31 * sf * w;
+    const double b35 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b32 * Y_1) * b15 * sf * w;
     const double b36 = b34 * Y_1 * Y_0;
-    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * w;
+    const double b37 = 2.0 * (b25 * xi_2 + b26 * Y_2 - b32 * Y_2) * b15 * sf * w;
     const double b38 = b34 * Y_2;
     const double b39 = b38 * Y_0;
     const double b40 = b38 * Y_1;
     const double b41 = p0 * b13;
-    const double b42 = b41 * b30 * b16 * V * w;
-    const double b43 = p0 * b17 * b15 * b16 * V * w;
-    const double b44 = b41 * b17 * b31 * b16 * V * w;
-    const double b45 = p10 * b13 * b30 * b16 * w;
+    const double b42 = b41 * b30 * b16 * sd * V * w;
+    const double b43 = p0 * b17 * b15 * b16 * sd * V * w;
+    const double b44 = b41 * b17 * b31 * b16 * sd * V * w;
+    const double b45 = p10 * b13 * b30 * b16 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b21;
@@ -1681,7 +1711,7 @@ void oterkus_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_3d_intact_jvp: per bond 52 add, 124 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
+// oterkus_3d_intact_jvp: per bond 52 add, 134 mul, 6 div, 2 call; per family 1 add, 12 mul, 3 div, 0 call
 void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1707,6 +1737,7 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -1724,10 +1755,10 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    lane0[lane] += b7 * b8 * b9 * V * w;
+    const double b11 = b1 * b10 * b9 * sd * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1) + dY_2 * (b11 * Y_2 + b12 * xi_2 - b13 * Y_2);
     }
   }
@@ -1757,6 +1788,7 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
@@ -1766,7 +1798,7 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * w;
+    const double b27 = b26 * b24 * sf * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -1775,14 +1807,14 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b30 + b31 + b32);
     const double b34 = b33 * b24;
     const double b35 = b23 * b34 * b25;
-    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * w;
-    const double b37 = b26 * b34 * w;
-    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * w;
+    const double b36 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b35 * Y_0) * b24 * sf * w;
+    const double b37 = b26 * b34 * sf * w;
+    const double b38 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b35 * Y_1) * b24 * sf * w;
     const double b39 = b37 * Y_1 * Y_0;
-    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * w;
+    const double b40 = 2.0 * (b28 * xi_2 + b29 * Y_2 - b35 * Y_2) * b24 * sf * w;
     const double b41 = b37 * Y_2;
     const double b42 = b41 * Y_0;
-    const double b43 = p19 * b22 * b33 * b25 * w;
+    const double b43 = p19 * b22 * b33 * b25 * sf * w;
     const double b44 = V0 * (dY_0 * (b27 + b36 * Y_0 - b37 * b30) + dY_1 * (b38 * Y_0 - b39) + dY_2 * (b40 * Y_0 - b42) + b43 * Y_0) * V;
     const double b45 = b41 * Y_1;
     const double b46 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b27 + b38 * Y_1 - b37 * b31) + dY_2 * (b40 * Y_1 - b45) + b43 * Y_1) * V;
@@ -1800,7 +1832,7 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// oterkus_3d_intact_outputs: per bond 8 add, 16 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_3d_intact_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m1 = fam.moments[0];
@@ -1818,12 +1850,13 @@ void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double xi_1 = fam.xi[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2001,25 +2034,26 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
   d.damaged.moments = &oterkus_3d_damaged_moments;
   d.damaged.residual = &oterkus_3d_damaged_residual;
-  d.damaged.residual_ops = {12, 32, 4, 2};
+  d.damaged.residual_ops = {12, 34, 4, 2};
   d.damaged.tangent = &oterkus_3d_damaged_tangent;
-  d.damaged.tangent_ops = {41, 125, 5, 2};
+  d.damaged.tangent_ops = {41, 136, 5, 2};
   d.damaged.jvp = &oterkus_3d_damaged_jvp;
-  d.damaged.jvp_ops = {52, 134, 6, 2};
+  d.damaged.jvp_ops = {52, 144, 6, 2};
   d.damaged.outputs = &oterkus_3d_damaged_outputs;
   d.damaged.form = &oterkus_3d_damaged_form;
   d.intact.moments = &oterkus_3d_intact_moments;
   d.intact.residual = &oterkus_3d_intact_residual;
-  d.intact.residual_ops = {12, 30, 4, 2};
+  d.intact.residual_ops = {12, 32, 4, 2};
   d.intact.tangent = &oterkus_3d_intact_tangent;
-  d.intact.tangent_ops = {41, 114, 5, 2};
+  d.intact.tangent_ops = {41, 125, 5, 2};
   d.intact.jvp = &oterkus_3d_intact_jvp;
-  d.intact.jvp_ops = {52, 124, 6, 2};
+  d.intact.jvp_ops = {52, 134, 6, 2};
   d.intact.outputs = &oterkus_3d_intact_outputs;
   d.intact.form = &oterkus_3d_intact_form;
   return d;
@@ -2055,7 +2089,7 @@ void oterkus_paper_d_plane_strain_damaged_moments(const pd::abi::Family& fam, do
   moments[1] = s_mx;
 }
 
-// oterkus_paper_d_plane_strain_damaged_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_residual: per bond 8 add, 29 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2076,6 +2110,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2084,7 +2119,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2106,11 +2141,12 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * alpha * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * alpha * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
@@ -2123,7 +2159,7 @@ void oterkus_paper_d_plane_strain_damaged_residual(const pd::abi::Family& fam, d
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_paper_d_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_tangent: per bond 25 add, 108 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2144,6 +2180,7 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2152,7 +2189,7 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2177,20 +2214,22 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * alpha * w;
+    const double b19 = p4 * b18 * b15 * sf * V * alpha * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = 2.0 * b18;
-    const double b23 = b22 * b15 * alpha * w;
+    const double b23 = b22 * b15 * sf * alpha * w;
     const double b24 = p8 * b15 * b16;
     const double b25 = p9 * b15;
     const double b26 = Y_0 * Y_0;
@@ -2198,15 +2237,15 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
     const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
     const double b29 = b28 * b15;
     const double b30 = b14 * b29 * b16;
-    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * alpha * w;
-    const double b32 = b22 * b29 * alpha * w;
-    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * alpha * w;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * sf * alpha * w;
+    const double b32 = b22 * b29 * sf * alpha * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * sf * alpha * w;
     const double b34 = b32 * Y_1 * Y_0;
     const double b35 = p0 * b13;
-    const double b36 = b35 * b28 * b16 * V * alpha * w;
-    const double b37 = p0 * b17 * b15 * b16 * V * alpha * w;
-    const double b38 = b35 * b17 * b29 * b16 * V * alpha * w;
-    const double b39 = p10 * b13 * b28 * b16 * alpha * w;
+    const double b36 = b35 * b28 * b16 * sd * V * alpha * w;
+    const double b37 = p0 * b17 * b15 * b16 * sd * V * alpha * w;
+    const double b38 = b35 * b17 * b29 * b16 * sd * V * alpha * w;
+    const double b39 = p10 * b13 * b28 * b16 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
@@ -2225,7 +2264,7 @@ void oterkus_paper_d_plane_strain_damaged_tangent(const pd::abi::Family& fam, do
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_paper_d_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_jvp: per bond 30 add, 109 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2248,6 +2287,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -2265,10 +2305,10 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * alpha * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * alpha * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * alpha * w;
-    lane0[lane] += b7 * b8 * b9 * V * alpha * w;
+    const double b11 = b1 * b10 * b9 * sd * V * alpha * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * alpha * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * alpha * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * alpha * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
     }
   }
@@ -2295,6 +2335,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
@@ -2304,7 +2345,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * alpha * w;
+    const double b27 = b26 * b24 * sf * alpha * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -2312,11 +2353,11 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
     const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
     const double b33 = b32 * b24;
     const double b34 = b23 * b33 * b25;
-    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * alpha * w;
-    const double b36 = b26 * b33 * alpha * w;
-    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * alpha * w;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * sf * alpha * w;
+    const double b36 = b26 * b33 * sf * alpha * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * sf * alpha * w;
     const double b38 = b36 * Y_1 * Y_0;
-    const double b39 = p19 * b22 * b32 * b25 * alpha * w;
+    const double b39 = p19 * b22 * b32 * b25 * sf * alpha * w;
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
@@ -2329,7 +2370,7 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2345,13 +2386,14 @@ void oterkus_paper_d_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * alpha * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2476,7 +2518,7 @@ void oterkus_paper_d_plane_strain_intact_moments(const pd::abi::Family& fam, dou
   moments[1] = s_mx;
 }
 
-// oterkus_paper_d_plane_strain_intact_residual: per bond 8 add, 25 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_intact_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 10 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2497,6 +2539,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -2504,7 +2547,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2526,10 +2569,11 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b10 = 1.0 / b9;
-    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * V * w;
+    const double b11 = p4 * (p6 * (Y_0 * xi_0 + Y_1 * xi_1) * b10 * (1.0 / b8) + p7 * (b9 - b8)) * b10 * sf * V * w;
     const double b12 = b11 * Y_0;
     const double b13 = b11 * Y_1;
     forces[(k + 1) * 2 + 0] = -b12;
@@ -2542,7 +2586,7 @@ void oterkus_paper_d_plane_strain_intact_residual(const pd::abi::Family& fam, do
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_paper_d_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_intact_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2563,6 +2607,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -2570,7 +2615,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2595,19 +2640,21 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b13 = Y_0 * xi_0 + Y_1 * xi_1;
     const double b14 = p8 * b13;
     const double b15 = 1.0 / b12;
     const double b16 = 1.0 / b11;
     const double b17 = b12 - b11;
     const double b18 = b14 * b15 * b16 + p9 * b17;
-    const double b19 = p4 * b18 * b15 * V * w;
+    const double b19 = p4 * b18 * b15 * sf * V * w;
     const double b20 = b19 * Y_0;
     const double b21 = b19 * Y_1;
     const double b22 = 2.0 * b18;
-    const double b23 = b22 * b15 * w;
+    const double b23 = b22 * b15 * sf * w;
     const double b24 = p8 * b15 * b16;
     const double b25 = p9 * b15;
     const double b26 = Y_0 * Y_0;
@@ -2615,15 +2662,15 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
     const double b28 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b26 + b27);
     const double b29 = b28 * b15;
     const double b30 = b14 * b29 * b16;
-    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * w;
-    const double b32 = b22 * b29 * w;
-    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * w;
+    const double b31 = 2.0 * (b24 * xi_0 + b25 * Y_0 - b30 * Y_0) * b15 * sf * w;
+    const double b32 = b22 * b29 * sf * w;
+    const double b33 = 2.0 * (b24 * xi_1 + b25 * Y_1 - b30 * Y_1) * b15 * sf * w;
     const double b34 = b32 * Y_1 * Y_0;
     const double b35 = p0 * b13;
-    const double b36 = b35 * b28 * b16 * V * w;
-    const double b37 = p0 * b17 * b15 * b16 * V * w;
-    const double b38 = b35 * b17 * b29 * b16 * V * w;
-    const double b39 = p10 * b13 * b28 * b16 * w;
+    const double b36 = b35 * b28 * b16 * sd * V * w;
+    const double b37 = p0 * b17 * b15 * b16 * sd * V * w;
+    const double b38 = b35 * b17 * b29 * b16 * sd * V * w;
+    const double b39 = p10 * b13 * b28 * b16 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b20;
     lane1[lane] += b20;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b21;
@@ -2642,7 +2689,7 @@ void oterkus_paper_d_plane_strain_intact_tangent(const pd::abi::Family& fam, dou
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// oterkus_paper_d_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
+// oterkus_paper_d_plane_strain_intact_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 11 mul, 3 div, 0 call
 void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2665,6 +2712,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -2681,10 +2729,10 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double b8 = 1.0 / b4;
     const double b9 = 1.0 / b5;
     const double b10 = 1.0 / b3;
-    const double b11 = b1 * b10 * b9 * V * w;
-    const double b12 = p0 * b6 * b8 * b9 * V * w;
-    const double b13 = b7 * (b10 * b8) * b9 * V * w;
-    lane0[lane] += b7 * b8 * b9 * V * w;
+    const double b11 = b1 * b10 * b9 * sd * V * w;
+    const double b12 = p0 * b6 * b8 * b9 * sd * V * w;
+    const double b13 = b7 * (b10 * b8) * b9 * sd * V * w;
+    lane0[lane] += b7 * b8 * b9 * sd * V * w;
     lane1[lane] += dY_0 * (b11 * Y_0 + b12 * xi_0 - b13 * Y_0) + dY_1 * (b11 * Y_1 + b12 * xi_1 - b13 * Y_1);
     }
   }
@@ -2711,6 +2759,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
     const double V = fam.V[k];
@@ -2719,7 +2768,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double b24 = 1.0 / b21;
     const double b25 = 1.0 / b20;
     const double b26 = 2.0 * (b23 * b24 * b25 + p18 * (b21 - b20));
-    const double b27 = b26 * b24 * w;
+    const double b27 = b26 * b24 * sf * w;
     const double b28 = p17 * b24 * b25;
     const double b29 = p18 * b24;
     const double b30 = Y_0 * Y_0;
@@ -2727,11 +2776,11 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
     const double b32 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b30 + b31);
     const double b33 = b32 * b24;
     const double b34 = b23 * b33 * b25;
-    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * w;
-    const double b36 = b26 * b33 * w;
-    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * w;
+    const double b35 = 2.0 * (b28 * xi_0 + b29 * Y_0 - b34 * Y_0) * b24 * sf * w;
+    const double b36 = b26 * b33 * sf * w;
+    const double b37 = 2.0 * (b28 * xi_1 + b29 * Y_1 - b34 * Y_1) * b24 * sf * w;
     const double b38 = b36 * Y_1 * Y_0;
-    const double b39 = p19 * b22 * b32 * b25 * w;
+    const double b39 = p19 * b22 * b32 * b25 * sf * w;
     const double b40 = V0 * (dY_0 * (b27 + b35 * Y_0 - b36 * b30) + dY_1 * (b37 * Y_0 - b38) + b39 * Y_0) * V;
     const double b41 = V0 * (dY_0 * (b35 * Y_1 - b38) + dY_1 * (b27 + b37 * Y_1 - b36 * b31) + b39 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b40;
@@ -2744,7 +2793,7 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m2 = fam.moments[0];
@@ -2760,12 +2809,13 @@ void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * V * w;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2875,25 +2925,26 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 2;
   d.n_moments = 2;
   d.n_states = 1;
   d.damaged.moments = &oterkus_paper_d_plane_strain_damaged_moments;
   d.damaged.residual = &oterkus_paper_d_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {8, 27, 4, 2};
+  d.damaged.residual_ops = {8, 29, 4, 2};
   d.damaged.tangent = &oterkus_paper_d_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {25, 98, 5, 2};
+  d.damaged.tangent_ops = {25, 108, 5, 2};
   d.damaged.jvp = &oterkus_paper_d_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {30, 100, 6, 2};
+  d.damaged.jvp_ops = {30, 109, 6, 2};
   d.damaged.outputs = &oterkus_paper_d_plane_strain_damaged_outputs;
   d.damaged.form = &oterkus_paper_d_plane_strain_damaged_form;
   d.intact.moments = &oterkus_paper_d_plane_strain_intact_moments;
   d.intact.residual = &oterkus_paper_d_plane_strain_intact_residual;
-  d.intact.residual_ops = {8, 25, 4, 2};
+  d.intact.residual_ops = {8, 27, 4, 2};
   d.intact.tangent = &oterkus_paper_d_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {25, 88, 5, 2};
+  d.intact.tangent_ops = {25, 98, 5, 2};
   d.intact.jvp = &oterkus_paper_d_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {30, 91, 6, 2};
+  d.intact.jvp_ops = {30, 100, 6, 2};
   d.intact.outputs = &oterkus_paper_d_plane_strain_intact_outputs;
   d.intact.form = &oterkus_paper_d_plane_strain_intact_form;
   return d;

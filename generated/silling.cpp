@@ -29,7 +29,7 @@ void silling_plane_strain_damaged_moments(const pd::abi::Family& fam, double* mo
   moments[0] = s_m;
 }
 
-// silling_plane_strain_damaged_residual: per bond 7 add, 20 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// silling_plane_strain_damaged_residual: per bond 7 add, 22 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
 void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -49,6 +49,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -57,7 +58,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -75,12 +76,13 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
       const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
-    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * alpha * w;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * sf * V * alpha * w;
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     forces[(k + 1) * 2 + 0] = -b11;
@@ -93,7 +95,7 @@ void silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* f
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// silling_plane_strain_damaged_tangent: per bond 16 add, 59 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
+// silling_plane_strain_damaged_tangent: per bond 16 add, 66 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -113,6 +115,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -121,7 +124,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -143,6 +146,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
       const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -150,21 +154,22 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b14 = p7 * b12 + p8 * (b13 - b12 - p9 * b12);
     const double b15 = 1.0 / b13;
-    const double b16 = p5 * b14 * b15 * V * alpha * w;
+    const double b16 = p5 * b14 * b15 * sf * V * alpha * w;
     const double b17 = b16 * Y_0;
     const double b18 = b16 * Y_1;
     const double b19 = p4 * b14;
-    const double b20 = b19 * b15 * alpha * w;
+    const double b20 = b19 * b15 * sf * alpha * w;
     const double b21 = Y_0 * Y_0;
     const double b22 = Y_1 * Y_1;
     const double b23 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22);
-    const double b24 = p10 * b23 * alpha * w;
-    const double b25 = b19 * (b23 * b15) * alpha * w;
+    const double b24 = p10 * b23 * sf * alpha * w;
+    const double b25 = b19 * (b23 * b15) * sf * alpha * w;
     const double b26 = b24 * Y_1 * Y_0 - b25 * Y_1 * Y_0;
-    const double b27 = p0 * b15 * b12 * V * alpha * w;
-    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * alpha * w;
+    const double b27 = p0 * b15 * b12 * sd * V * alpha * w;
+    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
     lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
@@ -183,7 +188,7 @@ void silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* fo
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// silling_plane_strain_damaged_jvp: per bond 21 add, 67 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
+// silling_plane_strain_damaged_jvp: per bond 21 add, 74 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -205,6 +210,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -216,8 +222,8 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
-    lane1[lane] += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * sd * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * sd * V * alpha * w * Y_1;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -241,6 +247,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
@@ -251,14 +258,14 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
     const double V = fam.V[k];
     const double b15 = p5 * (p7 * b13 + p8 * (b14 - b13 - p9 * b13));
     const double b16 = 1.0 / b14;
-    const double b17 = b15 * b16 * alpha * w;
+    const double b17 = b15 * b16 * sf * alpha * w;
     const double b18 = Y_0 * Y_0;
     const double b19 = Y_1 * Y_1;
     const double b20 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b18 + b19);
-    const double b21 = p10 * b20 * alpha * w;
-    const double b22 = b15 * (b20 * b16) * alpha * w;
+    const double b21 = p10 * b20 * sf * alpha * w;
+    const double b22 = b15 * (b20 * b16) * sf * alpha * w;
     const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
-    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * alpha * w;
+    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * sf * alpha * w;
     const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
     const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
@@ -271,7 +278,7 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_plane_strain_damaged_energy: per bond 6 add, 15 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
+// silling_plane_strain_damaged_energy: per bond 6 add, 16 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -290,6 +297,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -298,7 +306,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -324,7 +332,7 @@ double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// silling_plane_strain_damaged_outputs: per bond 4 add, 10 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// silling_plane_strain_damaged_outputs: per bond 4 add, 11 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -340,13 +348,14 @@ void silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* ou
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -463,7 +472,7 @@ void silling_plane_strain_intact_moments(const pd::abi::Family& fam, double* mom
   moments[0] = s_m;
 }
 
-// silling_plane_strain_intact_residual: per bond 7 add, 18 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
+// silling_plane_strain_intact_residual: per bond 7 add, 20 mul, 1 div, 2 call; per family 1 add, 7 mul, 2 div, 0 call
 void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -483,6 +492,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -490,7 +500,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -508,11 +518,12 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
       const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
-    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * w;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * sf * V * w;
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     forces[(k + 1) * 2 + 0] = -b11;
@@ -525,7 +536,7 @@ void silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* fo
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// silling_plane_strain_intact_tangent: per bond 16 add, 52 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
+// silling_plane_strain_intact_tangent: per bond 16 add, 59 mul, 2 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -545,6 +556,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -552,7 +564,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -574,27 +586,29 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
       const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b14 = p7 * b12 + p8 * (b13 - b12 - p9 * b12);
     const double b15 = 1.0 / b13;
-    const double b16 = p5 * b14 * b15 * V * w;
+    const double b16 = p5 * b14 * b15 * sf * V * w;
     const double b17 = b16 * Y_0;
     const double b18 = b16 * Y_1;
     const double b19 = p4 * b14;
-    const double b20 = b19 * b15 * w;
+    const double b20 = b19 * b15 * sf * w;
     const double b21 = Y_0 * Y_0;
     const double b22 = Y_1 * Y_1;
     const double b23 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b21 + b22);
-    const double b24 = p10 * b23 * w;
-    const double b25 = b19 * (b23 * b15) * w;
+    const double b24 = p10 * b23 * sf * w;
+    const double b25 = b19 * (b23 * b15) * sf * w;
     const double b26 = b24 * Y_1 * Y_0 - b25 * Y_1 * Y_0;
-    const double b27 = p0 * b15 * b12 * V * w;
-    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * w;
+    const double b27 = p0 * b15 * b12 * sd * V * w;
+    const double b28 = p4 * (p6 * b12 - p11 * b12) * b15 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b17;
     lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b18;
@@ -613,7 +627,7 @@ void silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* for
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// silling_plane_strain_intact_jvp: per bond 21 add, 60 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
+// silling_plane_strain_intact_jvp: per bond 21 add, 67 mul, 3 div, 2 call; per family 1 add, 10 mul, 2 div, 0 call
 void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -635,6 +649,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
@@ -645,8 +660,8 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
-    lane1[lane] += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * sd * V * w * Y_0 + p0 * dY_1 * b4 * b3 * sd * V * w * Y_1;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -670,6 +685,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
@@ -679,14 +695,14 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
     const double V = fam.V[k];
     const double b15 = p5 * (p7 * b13 + p8 * (b14 - b13 - p9 * b13));
     const double b16 = 1.0 / b14;
-    const double b17 = b15 * b16 * w;
+    const double b17 = b15 * b16 * sf * w;
     const double b18 = Y_0 * Y_0;
     const double b19 = Y_1 * Y_1;
     const double b20 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b18 + b19);
-    const double b21 = p10 * b20 * w;
-    const double b22 = b15 * (b20 * b16) * w;
+    const double b21 = p10 * b20 * sf * w;
+    const double b22 = b15 * (b20 * b16) * sf * w;
     const double b23 = b21 * Y_1 * Y_0 - b22 * Y_1 * Y_0;
-    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * w;
+    const double b24 = p11 * (p6 * b13 - p12 * b13) * b16 * sf * w;
     const double b25 = V0 * (dY_0 * (b17 + b21 * b18 - b22 * b18) + dY_1 * b23 + b24 * Y_0) * V;
     const double b26 = V0 * (dY_0 * b23 + dY_1 * (b17 + b21 * b19 - b22 * b19) + b24 * Y_1) * V;
     df[(k + 1) * 2 + 0] = -b25;
@@ -699,7 +715,7 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_plane_strain_intact_energy: per bond 6 add, 13 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
+// silling_plane_strain_intact_energy: per bond 6 add, 14 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -718,6 +734,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
@@ -725,7 +742,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -750,7 +767,7 @@ double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// silling_plane_strain_intact_outputs: per bond 4 add, 9 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// silling_plane_strain_intact_outputs: per bond 4 add, 10 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -766,12 +783,13 @@ void silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* out
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -881,26 +899,27 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_plane_strain_damaged_moments;
   d.damaged.residual = &silling_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {7, 20, 1, 2};
+  d.damaged.residual_ops = {7, 22, 1, 2};
   d.damaged.tangent = &silling_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {16, 59, 2, 2};
+  d.damaged.tangent_ops = {16, 66, 2, 2};
   d.damaged.jvp = &silling_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {21, 67, 3, 2};
+  d.damaged.jvp_ops = {21, 74, 3, 2};
   d.damaged.energy = &silling_plane_strain_damaged_energy;
   d.damaged.outputs = &silling_plane_strain_damaged_outputs;
   d.damaged.form = &silling_plane_strain_damaged_form;
   d.intact.moments = &silling_plane_strain_intact_moments;
   d.intact.residual = &silling_plane_strain_intact_residual;
-  d.intact.residual_ops = {7, 18, 1, 2};
+  d.intact.residual_ops = {7, 20, 1, 2};
   d.intact.tangent = &silling_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {16, 52, 2, 2};
+  d.intact.tangent_ops = {16, 59, 2, 2};
   d.intact.jvp = &silling_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {21, 60, 3, 2};
+  d.intact.jvp_ops = {21, 67, 3, 2};
   d.intact.energy = &silling_plane_strain_intact_energy;
   d.intact.outputs = &silling_plane_strain_intact_outputs;
   d.intact.form = &silling_plane_strain_intact_form;
@@ -930,7 +949,7 @@ void silling_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// silling_3d_damaged_residual: per bond 9 add, 23 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
+// silling_3d_damaged_residual: per bond 9 add, 25 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
 void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -952,6 +971,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -960,7 +980,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -979,13 +999,14 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
       const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
-    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * alpha * w;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * sf * V * alpha * w;
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     const double b13 = b10 * Y_2;
@@ -1002,7 +1023,7 @@ void silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_3d_damaged_tangent: per bond 24 add, 74 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
+// silling_3d_damaged_tangent: per bond 24 add, 81 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1024,6 +1045,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1032,7 +1054,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1055,6 +1077,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
       const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1064,27 +1087,28 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b14 = p6 * b12 + p7 * (b13 - b12 - p8 * b12);
     const double b15 = 1.0 / b13;
-    const double b16 = p5 * b14 * b15 * V * alpha * w;
+    const double b16 = p5 * b14 * b15 * sf * V * alpha * w;
     const double b17 = b16 * Y_0;
     const double b18 = b16 * Y_1;
     const double b19 = b16 * Y_2;
     const double b20 = p4 * b14;
-    const double b21 = b20 * b15 * alpha * w;
+    const double b21 = b20 * b15 * sf * alpha * w;
     const double b22 = Y_0 * Y_0;
     const double b23 = Y_1 * Y_1;
     const double b24 = Y_2 * Y_2;
     const double b25 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b22 + b23 + b24);
-    const double b26 = p9 * b25 * alpha * w;
-    const double b27 = b20 * (b25 * b15) * alpha * w;
+    const double b26 = p9 * b25 * sf * alpha * w;
+    const double b27 = b20 * (b25 * b15) * sf * alpha * w;
     const double b28 = b26 * Y_1 * Y_0 - b27 * Y_1 * Y_0;
     const double b29 = b26 * Y_2;
     const double b30 = b27 * Y_2;
     const double b31 = b29 * Y_0 - b30 * Y_0;
     const double b32 = b29 * Y_1 - b30 * Y_1;
-    const double b33 = p0 * b15 * b12 * V * alpha * w;
-    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * alpha * w;
+    const double b33 = p0 * b15 * b12 * sd * V * alpha * w;
+    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * sf * alpha * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
     lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
@@ -1113,7 +1137,7 @@ void silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, cons
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_3d_damaged_jvp: per bond 35 add, 94 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
+// silling_3d_damaged_jvp: per bond 35 add, 102 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1137,6 +1161,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1149,8 +1174,8 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
-    lane1[lane] += p0 * dY_0 * b4 * b3 * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * V * alpha * w * Y_1 + p0 * dY_2 * b4 * b3 * V * alpha * w * Y_2;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * sd * V * alpha * w * Y_0 + p0 * dY_1 * b4 * b3 * sd * V * alpha * w * Y_1 + p0 * dY_2 * b4 * b3 * sd * V * alpha * w * Y_2;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1175,6 +1200,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
@@ -1188,18 +1214,18 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
     const double V = fam.V[k];
     const double b15 = p5 * (p6 * b13 + p7 * (b14 - b13 - p8 * b13));
     const double b16 = 1.0 / b14;
-    const double b17 = b15 * b16 * alpha * w;
+    const double b17 = b15 * b16 * sf * alpha * w;
     const double b18 = Y_0 * Y_0;
     const double b19 = Y_1 * Y_1;
     const double b20 = Y_2 * Y_2;
     const double b21 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b18 + b19 + b20);
-    const double b22 = p9 * b21 * alpha * w;
-    const double b23 = b15 * (b21 * b16) * alpha * w;
+    const double b22 = p9 * b21 * sf * alpha * w;
+    const double b23 = b15 * (b21 * b16) * sf * alpha * w;
     const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
     const double b25 = b22 * Y_2;
     const double b26 = b23 * Y_2;
     const double b27 = b25 * Y_0 - b26 * Y_0;
-    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * alpha * w;
+    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * sf * alpha * w;
     const double b29 = V0 * (dY_0 * (b17 + b22 * b18 - b23 * b18) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
     const double b30 = b25 * Y_1 - b26 * Y_1;
     const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
@@ -1217,7 +1243,7 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// silling_3d_damaged_energy: per bond 8 add, 17 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
+// silling_3d_damaged_energy: per bond 8 add, 18 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
 double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1238,6 +1264,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
@@ -1246,7 +1273,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1272,7 +1299,7 @@ double silling_3d_damaged_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// silling_3d_damaged_outputs: per bond 6 add, 12 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// silling_3d_damaged_outputs: per bond 6 add, 13 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1290,13 +1317,14 @@ void silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * alpha * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1482,7 +1510,7 @@ void silling_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// silling_3d_intact_residual: per bond 9 add, 21 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
+// silling_3d_intact_residual: per bond 9 add, 23 mul, 1 div, 2 call; per family 0 add, 6 mul, 2 div, 0 call
 void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1504,6 +1532,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1511,7 +1540,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1530,12 +1559,13 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
       const int k = k_group + lane;
     const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
-    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * V * w;
+    const double b10 = p4 * (p5 * b8 + p6 * (b9 - b8 - p7 * b8)) * (1.0 / b9) * sf * V * w;
     const double b11 = b10 * Y_0;
     const double b12 = b10 * Y_1;
     const double b13 = b10 * Y_2;
@@ -1552,7 +1582,7 @@ void silling_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_3d_intact_tangent: per bond 24 add, 67 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
+// silling_3d_intact_tangent: per bond 24 add, 74 mul, 2 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1574,6 +1604,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1581,7 +1612,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1604,6 +1635,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
       const int k = k_group + lane;
     const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double Y_0 = fam.Y[k * 3 + 0];
@@ -1612,27 +1644,28 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double b14 = p6 * b12 + p7 * (b13 - b12 - p8 * b12);
     const double b15 = 1.0 / b13;
-    const double b16 = p5 * b14 * b15 * V * w;
+    const double b16 = p5 * b14 * b15 * sf * V * w;
     const double b17 = b16 * Y_0;
     const double b18 = b16 * Y_1;
     const double b19 = b16 * Y_2;
     const double b20 = p4 * b14;
-    const double b21 = b20 * b15 * w;
+    const double b21 = b20 * b15 * sf * w;
     const double b22 = Y_0 * Y_0;
     const double b23 = Y_1 * Y_1;
     const double b24 = Y_2 * Y_2;
     const double b25 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b22 + b23 + b24);
-    const double b26 = p9 * b25 * w;
-    const double b27 = b20 * (b25 * b15) * w;
+    const double b26 = p9 * b25 * sf * w;
+    const double b27 = b20 * (b25 * b15) * sf * w;
     const double b28 = b26 * Y_1 * Y_0 - b27 * Y_1 * Y_0;
     const double b29 = b26 * Y_2;
     const double b30 = b27 * Y_2;
     const double b31 = b29 * Y_0 - b30 * Y_0;
     const double b32 = b29 * Y_1 - b30 * Y_1;
-    const double b33 = p0 * b15 * b12 * V * w;
-    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * w;
+    const double b33 = p0 * b15 * b12 * sd * V * w;
+    const double b34 = p4 * (p10 * b12 - p11 * b12) * b15 * sf * w;
     if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
     lane1[lane] += b17;
     if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
@@ -1661,7 +1694,7 @@ void silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// silling_3d_intact_jvp: per bond 35 add, 86 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
+// silling_3d_intact_jvp: per bond 35 add, 94 mul, 3 div, 2 call; per family 0 add, 10 mul, 2 div, 0 call
 void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1685,6 +1718,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
@@ -1696,8 +1730,8 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
     const double b4 = 1.0 / b2;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
-    lane1[lane] += p0 * dY_0 * b4 * b3 * V * w * Y_0 + p0 * dY_1 * b4 * b3 * V * w * Y_1 + p0 * dY_2 * b4 * b3 * V * w * Y_2;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * dY_0 * b4 * b3 * sd * V * w * Y_0 + p0 * dY_1 * b4 * b3 * sd * V * w * Y_1 + p0 * dY_2 * b4 * b3 * sd * V * w * Y_2;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1722,6 +1756,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double b13 = cache[static_cast<std::size_t>(k) * 2 + 0];
     const double b14 = cache[static_cast<std::size_t>(k) * 2 + 1];
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
     const double w = fam.w[k];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
@@ -1734,18 +1769,18 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
     const double V = fam.V[k];
     const double b15 = p5 * (p6 * b13 + p7 * (b14 - b13 - p8 * b13));
     const double b16 = 1.0 / b14;
-    const double b17 = b15 * b16 * w;
+    const double b17 = b15 * b16 * sf * w;
     const double b18 = Y_0 * Y_0;
     const double b19 = Y_1 * Y_1;
     const double b20 = Y_2 * Y_2;
     const double b21 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + b18 + b19 + b20);
-    const double b22 = p9 * b21 * w;
-    const double b23 = b15 * (b21 * b16) * w;
+    const double b22 = p9 * b21 * sf * w;
+    const double b23 = b15 * (b21 * b16) * sf * w;
     const double b24 = b22 * Y_1 * Y_0 - b23 * Y_1 * Y_0;
     const double b25 = b22 * Y_2;
     const double b26 = b23 * Y_2;
     const double b27 = b25 * Y_0 - b26 * Y_0;
-    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * w;
+    const double b28 = p10 * (p11 * b13 - p12 * b13) * b16 * sf * w;
     const double b29 = V0 * (dY_0 * (b17 + b22 * b18 - b23 * b18) + dY_1 * b24 + dY_2 * b27 + b28 * Y_0) * V;
     const double b30 = b25 * Y_1 - b26 * Y_1;
     const double b31 = V0 * (dY_0 * b24 + dY_1 * (b17 + b22 * b19 - b23 * b19) + dY_2 * b30 + b28 * Y_1) * V;
@@ -1763,7 +1798,7 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// silling_3d_intact_energy: per bond 8 add, 15 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
+// silling_3d_intact_energy: per bond 8 add, 16 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
 double silling_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1784,6 +1819,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
@@ -1791,7 +1827,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1816,7 +1852,7 @@ double silling_3d_intact_energy(const pd::abi::Family& fam) {
   return W;
 }
 
-// silling_3d_intact_outputs: per bond 6 add, 11 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// silling_3d_intact_outputs: per bond 6 add, 12 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1834,12 +1870,13 @@ void silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
     const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * V * w;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2017,26 +2054,27 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
   d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &silling_3d_damaged_moments;
   d.damaged.residual = &silling_3d_damaged_residual;
-  d.damaged.residual_ops = {9, 23, 1, 2};
+  d.damaged.residual_ops = {9, 25, 1, 2};
   d.damaged.tangent = &silling_3d_damaged_tangent;
-  d.damaged.tangent_ops = {24, 74, 2, 2};
+  d.damaged.tangent_ops = {24, 81, 2, 2};
   d.damaged.jvp = &silling_3d_damaged_jvp;
-  d.damaged.jvp_ops = {35, 94, 3, 2};
+  d.damaged.jvp_ops = {35, 102, 3, 2};
   d.damaged.energy = &silling_3d_damaged_energy;
   d.damaged.outputs = &silling_3d_damaged_outputs;
   d.damaged.form = &silling_3d_damaged_form;
   d.intact.moments = &silling_3d_intact_moments;
   d.intact.residual = &silling_3d_intact_residual;
-  d.intact.residual_ops = {9, 21, 1, 2};
+  d.intact.residual_ops = {9, 23, 1, 2};
   d.intact.tangent = &silling_3d_intact_tangent;
-  d.intact.tangent_ops = {24, 67, 2, 2};
+  d.intact.tangent_ops = {24, 74, 2, 2};
   d.intact.jvp = &silling_3d_intact_jvp;
-  d.intact.jvp_ops = {35, 86, 3, 2};
+  d.intact.jvp_ops = {35, 94, 3, 2};
   d.intact.energy = &silling_3d_intact_energy;
   d.intact.outputs = &silling_3d_intact_outputs;
   d.intact.form = &silling_3d_intact_form;

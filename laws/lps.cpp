@@ -44,13 +44,12 @@ Law lps(const std::string& name, int dim, bool corrected, const std::string& sum
     const Mat Mplus = M * inverse(M * M + eps * identity(dim));
     g = Mplus * law.xi();
   }
-  const Expr theta = law.sum("theta", Expr(dim) / m * wa * dot(g, eta) * law.V());
+  const Expr theta = law.dilatation_sum("theta", Expr(dim) / m * wa * dot(g, eta) * law.V());
   const Expr stretch = dot(law.xi(), eta) / (r * r);  // (n . eta) / |xi|
   const Expr lambda_ij = law.pair_param("lambda", PairMean::harmonic), mu_ij = law.pair_param("mu", PairMean::harmonic);
   law.force(wa / m * (Ca * (lambda_ij - mu_ij) * theta * g + Cb / 2 * mu_ij * stretch * law.xi()));
   const Expr shear = law.sum("bond_energy", mu_ij * wa * pow(dot(law.xi(), eta), 2) / (r * r) * law.V());
   law.energy(Ca * (lambda - mu) / (2 * dim) * theta * theta + Cb / (4 * m) * shear);
-  law.output("dilatation", theta);
   return law;
 }
 }  // namespace

@@ -41,10 +41,9 @@ Law oterkus(const std::string& name, const std::string& summary, bool d_from_m, 
   const Expr d = theta_per_s / m1;
   const Expr b = G / (2 * mx);
   const Expr a = (bulk_energy - b * m2) / (theta_per_s * theta_per_s);
-  const Expr theta = law.sum("theta", d * wa * e * cosine * law.V());
+  const Expr theta = law.dilatation_sum("theta", d * wa * e * cosine * law.V());
   law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
-  law.output("dilatation", theta);
   return law;
 }
 }  // namespace

@@ -22,7 +22,7 @@ Law silling(const std::string& name, int dim, const std::string& summary) {
   const Expr wa = law.w() * law.alpha();
   const Expr m = law.sum("m", wa * r * r * law.V());
   const double n = dim;  // theta = (n/m) sum ..., deviatoric extension e - theta r / n
-  const Expr theta = law.sum("theta", Expr(n) / m * wa * r * e * law.V());
+  const Expr theta = law.dilatation_sum("theta", Expr(n) / m * wa * r * e * law.V());
   const Expr ed = e - theta * r / n;
   const Expr bulk = dim == 2 ? K + G / 3 : K;
   const double shear = dim == 2 ? 8.0 : 15.0;
@@ -30,7 +30,6 @@ Law silling(const std::string& name, int dim, const std::string& summary) {
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   const Expr dev = law.sum("deviatoric_energy", wa * ed * ed * law.V());
   law.energy(bulk / 2 * theta * theta + shear / 2 * G / m * dev);
-  law.output("dilatation", theta);
   return law;
 }
 }  // namespace

@@ -39,6 +39,12 @@ struct Family {
   // values one loop computes and a later loop reads); the caller owns it, one per thread.
   // May be null when the law's scratch_per_bond is 0.
   double* scratch = nullptr;
+  // Surface correction (paper 003 eq. 19; discretize/surface_correction.hpp), per bond,
+  // null meaning 1 for every bond. force_factor multiplies the bond's force state (and
+  // so its tangent and JVP); dilatation_factor multiplies the bond's term in the law's
+  // dilatation sum (laws that declare one: LawDescriptor::has_dilatation_sum).
+  const double* dilatation_factor = nullptr;  // [L]
+  const double* force_factor = nullptr;       // [L]
 };
 
 // Factored tangent of one family. With T_ik = d t_i / d Y_k (bond i's force state
@@ -114,6 +120,9 @@ struct LawDescriptor {
   // or plane-strain form; false: any ratio the material gives.
   bool has_fixed_poisson_ratio = false;
   double poisson_ratio = 0.0;
+  // The law marks a dilatation sum (pdgen Law::dilatation_sum) that reads
+  // Family::dilatation_factor; false: only Family::force_factor acts.
+  bool has_dilatation_sum = false;
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };

@@ -31,6 +31,9 @@ struct Bonds {
   // [nb] share of the neighbour's volume inside the horizon (domain.quadrature, paper 002);
   // empty: every neighbour counts whole.
   std::vector<double> volume_factor;
+  // [nb] surface correction (domain.surface_correction, discretize/surface_correction.hpp):
+  // the bond's factor on the law's dilatation sum and on its force state; empty: 1.
+  std::vector<double> surface_dilatation, surface_force;
 
   int particle_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   int bond_count() const { return static_cast<int>(neighbor.size()); }

@@ -34,6 +34,7 @@ Signature signature(Kernel k) {
 
 std::string bond_vector(const std::string& field, int dim, int c) { return "fam." + field + "[k * " + str(dim) + " + " + str(c) + "]"; }
 std::string bond_scalar(const std::string& field) { return "fam." + field + "[k]"; }
+std::string optional_bond_scalar(const std::string& field) { return "(fam." + field + " ? fam." + field + "[k] : 1.0)"; }
 std::string family_scalar(const std::string& field) { return "fam." + field; }
 std::string param(int i) { return "fam.params[" + str(i) + "]"; }
 std::string pair_param(int i, int n_params, const std::string& mean) {

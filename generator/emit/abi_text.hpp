@@ -20,6 +20,8 @@ Signature signature(Kernel k);
 // (w, alpha, V). Per family: V0, delta, parameter i, moment i.
 std::string bond_vector(const std::string& field, int dim, int c);
 std::string bond_scalar(const std::string& field);
+// A per-bond array the caller may leave null, meaning 1 for every bond.
+std::string optional_bond_scalar(const std::string& field);
 std::string family_scalar(const std::string& field);
 std::string param(int i);
 // Bond k's pair value of parameter i of n: `mean` (a function of kernel_abi.hpp) of the

@@ -81,6 +81,8 @@ class Builder {
     b[symbol_index(law_.w())] = {"w", abi_text::bond_scalar("w"), true};
     b[symbol_index(law_.alpha())] = {"alpha", abi_text::bond_scalar("alpha"), true};
     b[symbol_index(law_.V())] = {"V", abi_text::bond_scalar("V"), true};
+    b[symbol_index(law_.dilatation_factor())] = {"sd", abi_text::optional_bond_scalar("dilatation_factor"), true};
+    b[symbol_index(law_.force_factor())] = {"sf", abi_text::optional_bond_scalar("force_factor"), true};
     b[symbol_index(law_.V0())] = {"V0", abi_text::family_scalar("V0"), false};
     b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
@@ -126,9 +128,12 @@ class Builder {
     }
   }
 
+  // The force state the kernels use: the law's, times the bond's surface-correction force
+  // factor (1 when Family::force_factor is null), so the forces, the tangent factors
+  // (direct, left) and the JVP all carry it and the local matrix needs no change.
   std::vector<Expr> force_roots() const {
     std::vector<Expr> r;
-    for (int c = 0; c < D_; ++c) r.push_back(law_.force_state()[c]);
+    for (int c = 0; c < D_; ++c) r.push_back(law_.force_factor() * law_.force_state()[c]);
     return r;
   }
 

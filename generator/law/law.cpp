@@ -41,6 +41,8 @@ Law::Law(std::string name, int dim, std::string summary)
   V_ = symbol("V", SymbolKind::BondInput);
   V0_ = symbol("V0", SymbolKind::ParticleInput);
   delta_ = symbol("delta", SymbolKind::ParticleInput);
+  dilatation_factor_ = symbol("dilatation_factor", SymbolKind::BondInput);
+  force_factor_ = symbol("force_factor", SymbolKind::BondInput);
 }
 
 Expr Law::param(const std::string& name) {
@@ -99,6 +101,14 @@ Expr Law::sum(const std::string& name, Expr body) {
   }
   sums_.push_back(def);
   return def.symbol;
+}
+
+Expr Law::dilatation_sum(const std::string& name, Expr body) {
+  if (has_dilatation_sum_) throw std::invalid_argument("law " + name_ + ": a second dilatation_sum '" + name + "'");
+  has_dilatation_sum_ = true;
+  const Expr theta = sum(name, dilatation_factor_ * body);
+  output("dilatation", theta);  // the surface correction reads it (runtime: output "dilatation")
+  return theta;
 }
 
 Vec Law::sum(const std::string& name, const Vec& body) {

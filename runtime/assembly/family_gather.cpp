@@ -62,6 +62,8 @@ abi::Family FamilyGather::gather(int p, const double* u) {
                   ? in_->moments.data() + static_cast<std::ptrdiff_t>(p) * in_->n_moments
                   : nullptr;
   f.scratch = scratch_.data();
+  f.dilatation_factor = B.surface_dilatation.empty() ? nullptr : B.surface_dilatation.data() + b0;
+  f.force_factor = B.surface_force.empty() ? nullptr : B.surface_force.data() + b0;
   return f;
 }
 

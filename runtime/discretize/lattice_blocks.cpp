@@ -62,7 +62,7 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
                               double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
   if (static_cast<int>(delta.size()) != n) throw std::invalid_argument("find_bonds_per_particle: one delta per particle");
-  if (n == 0) return Bonds{d, {0}, {}, {}, {}, {}, {}, {}, {}};
+  if (n == 0) return Bonds{d, {0}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   // A cell list with cells a little larger than the smallest horizon; a particle scans as
   // many cells each way as its own horizon needs (a fine particle does not scan a coarse
   // one's reach). The 1e-9 margin keeps a neighbour exactly delta away (integer delta/h on

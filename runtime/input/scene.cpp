@@ -453,6 +453,19 @@ Scene read(const YAML::Node& root, const std::string& file) {
       if (s.compensation && s.perturbation > 0)
         d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
     }
+    if (d.has("surface_correction")) {
+      const std::string match = d.text("surface_correction", "none");
+      if (match != "none" && match != "terms" && match != "responses")
+        d.get("surface_correction").fail("surface_correction is none, terms (the references' recipe) or responses (both trial responses matched)");
+      s.surface_correction = match != "none";
+      s.surface_match_responses = match == "responses";
+      if (s.surface_correction && is_obq(s.quadrature))
+        d.get("surface_correction").fail("the surface correction compares each family with the full family of a regular lattice; obq and obq_cut replace the bond volumes by their own weights");
+      if (s.surface_correction && s.compensation)
+        d.get("surface_correction").fail("choose one of compensation (paper 002) and surface_correction (paper 003): both correct the same truncated families");
+      if (s.surface_correction && s.perturbation > 0)
+        d.get("surface_correction").fail("the surface correction compares each family with the full family of a regular lattice: not on a perturbed cloud");
+    }
     if (d.has("gauss_points")) {
       // {per_axis: 1|2|3, support: r_w / h}: fixed Gauss points with MLS displacements.
       MapReader g(d.get("gauss_points"));
@@ -461,9 +474,9 @@ Scene read(const YAML::Node& root, const std::string& file) {
       s.gauss_support = g.number("support", 3.0);
       if (!(s.gauss_support >= 1.0)) g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
       g.finish();
-      if (s.quadrature != Quadrature::Volume || s.compensation)
+      if (s.quadrature != Quadrature::Volume || s.compensation || s.surface_correction)
         d.get("gauss_points").fail("the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
-                                   "another quadrature or compensation");
+                                   "another quadrature, compensation or surface_correction");
     }
     for (const char* key : {"holes", "inclusions"}) {
       if (!d.has(key)) continue;

@@ -129,6 +129,8 @@ struct Scene {
   std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
   bool obq_symmetric = false;                 // domain.obq_symmetric
   bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
+  bool surface_correction = false;             // domain.surface_correction (paper 003 eq. 19, discretize/surface_correction.hpp)
+  bool surface_match_responses = false;        // ... : responses (else terms)
   // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
   // each cell (0: off, the quadrature above) and the MLS support in units of h.
   int gauss_points = 0;

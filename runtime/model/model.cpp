@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "discretize/compensation.hpp"
+#include "discretize/surface_correction.hpp"
 #include "discretize/crack_cut.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
@@ -67,6 +68,14 @@ Model build_model(const Scene& scene) {
   if (scene.compensation) {
     const CompensationInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight};
     apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
+  }
+  if (scene.surface_correction) {
+    if (!scene.particle_spacing.empty())
+      throw SceneError(scene.file + ": domain.surface_correction: not with domain.blocks (the factors compare each "
+                       "family with the full family of one regular lattice)");
+    const SurfaceCorrectionInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight,
+                                     scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
+    apply_surface_correction(m.bonds, surface_correction_factors(m.particles, m.bonds, in), m.law->has_dilatation_sum);
   }
   if (is_obq(scene.quadrature)) {
     const std::optional<Box2> body = obq_cut_body(scene);

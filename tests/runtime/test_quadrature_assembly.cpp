@@ -3,9 +3,9 @@
 // matrix-free product must equal the matrix, with the partial factors in place.
 #include <gtest/gtest.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 
+#include "assembler_fd.hpp"
 #include "assembly/assembler.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
@@ -56,26 +56,10 @@ TEST_P(QuadratureAssembly, StiffnessIsMinusDerivativeOfForcesAndProductEqualsMat
   const int dofs = static_cast<int>(p.x.size());
   std::vector<double> u(dofs), v(dofs);
   for (int i = 0; i < dofs; ++i) u[i] = 0.01 * std::sin(2.3 * p.x[i] + 0.9 * i), v[i] = std::cos(1.1 * i);
-  pd::SparseMatrix K;
-  a.stiffness(u.data(), K);
-  const Eigen::MatrixXd Kd(K);
-  const double scale = Kd.cwiseAbs().maxCoeff();
-  ASSERT_GT(scale, 0.0);
-  const double eps = 1e-6;
-  double worst = 0;
-  std::vector<double> fp(dofs), fm(dofs);
-  for (int j = 0; j < dofs; j += 3) {  // every third column keeps the test fast
-    std::vector<double> up = u, um = u;
-    up[j] += eps, um[j] -= eps;
-    a.internal_forces(up.data(), fp.data());
-    a.internal_forces(um.data(), fm.data());
-    for (int i = 0; i < dofs; ++i) worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
-  }
-  EXPECT_LT(worst, 1e-6 * scale);
-  std::vector<double> Kv(dofs);
-  a.stiffness_product(u.data(), v.data(), Kv.data());
-  const Eigen::VectorXd expected = Kd * Eigen::Map<const Eigen::VectorXd>(v.data(), dofs);
-  for (int i = 0; i < dofs; ++i) EXPECT_NEAR(Kv[i], expected[i], 1e-10 * scale * expected.cwiseAbs().maxCoeff() / scale + 1e-12 * scale);
+  const pd::test::TangentFdCheck fd = pd::test::tangent_fd_check(a, u);
+  ASSERT_GT(fd.scale, 0.0);
+  EXPECT_LT(fd.worst, 1e-6 * fd.scale);
+  pd::test::expect_product_equals_matrix(a, u, v);
 }
 
 TEST(QuadratureAssembly, PartialFactorsChangeTheForces) {

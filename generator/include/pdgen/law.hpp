@@ -70,6 +70,13 @@ class Law {
   Expr V() const { return V_; }
   Expr V0() const { return V0_; }
   Expr delta() const { return delta_; }
+  // Surface correction (paper 003 eq. 19, runtime/discretize/surface_correction.hpp):
+  // per-bond factors the runtime passes in abi::Family (null: 1). The force factor
+  // multiplies every bond's force state (the builders apply it; a law does not use it).
+  // The dilatation factor multiplies the bond's term in the sum declared by
+  // dilatation_sum: a law that has a dilatation marks it that way.
+  Expr dilatation_factor() const { return dilatation_factor_; }
+  Expr force_factor() const { return force_factor_; }
   // |Y| regularised as sqrt(Y.Y + (1e-8 |xi|)^2): equal to |Y| to rounding for every
   // bond longer than about 1e-8 |xi|, and finite, with a finite derivative, when a
   // deformed bond collapses to zero length (where Y/|Y| would be 0/0). Use it rather
@@ -81,6 +88,12 @@ class Law {
   Expr sum(const std::string& name, Expr body);
   Vec sum(const std::string& name, const Vec& body);
   Mat sum(const std::string& name, const Mat& body);
+  // The law's dilatation: a horizon sum whose every term is scaled by the bond's
+  // dilatation_factor() (the surface correction of the dilatation term; 1 unless the
+  // scene asks for domain.surface_correction). At most one per law; it is also the law's
+  // output "dilatation", which the surface correction reads.
+  Expr dilatation_sum(const std::string& name, Expr body);
+  bool has_dilatation_sum() const { return has_dilatation_sum_; }
 
   void force(const Vec& t);
   bool has_force() const { return force_.dim() == dim_; }
@@ -116,7 +129,8 @@ class Law {
   std::string name_, summary_;
   int dim_;
   Vec xi_, Y_;
-  Expr w_, alpha_, V_, V0_, delta_;
+  Expr w_, alpha_, V_, V0_, delta_, dilatation_factor_, force_factor_;
+  bool has_dilatation_sum_ = false;
   std::vector<std::string> param_names_;
   std::vector<Expr> params_;
   std::vector<double> param_test_values_;
