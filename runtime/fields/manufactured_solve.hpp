@@ -31,12 +31,21 @@ struct ManufacturedSetup {
   // 0: the error over all solved particles (the paper's); > 0: only over those at least
   // this far from the boundary, a region that does not change with h.
   double error_margin = 0;
+  // A traction-free hole (paper 001 §4.2, Fig. 1), off when hole_radius = 0: after the
+  // weights are computed on the whole cloud, every bond whose segment meets the circle is
+  // broken (the paper's "break all bonds crossing the circle"); the particles inside are
+  // neither solved nor measured (their bonds to the body are all broken).
+  double hole_radius = 0;
+  double hole_center[2] = {0.5, 0.5};
+  bool symmetric_weights = false;  // symmetric_pair_weights (collocation.hpp) on the OBQ weights
 };
 
 struct ManufacturedResult {
   double rms_error = 0;
   double rms_component[2] = {0, 0};  // the same norm of u_x - u_x,ex and u_y - u_y,ex alone
   int particles = 0, solved = 0, measured = 0;
+  int broken_bonds = 0;  // by the hole, each direction counted
+  bool symmetric_matrix = false;  // the solver used: CHOLMOD when true, UMFPACK otherwise
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
 };
 
