@@ -66,9 +66,12 @@ class FamilyAssembler {
   void stiffness_diagonal(const double* u, double* diag) const;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
-  bool has_energy() const { return variant_.energy != nullptr && options_.collocation == nullptr; }
-  // False under collocation assembly: the solver needs UMFPACK or GMRES then.
-  bool symmetric() const { return options_.collocation == nullptr; }
+  // Collocation with symmetric pair weights (Collocation::pair_symmetric) is the energy
+  // assembly with other weights, so it has both.
+  bool has_energy() const { return variant_.energy != nullptr && symmetric(); }
+  // False under collocation assembly with unsymmetric pair weights: the solver needs
+  // UMFPACK or GMRES then.
+  bool symmetric() const { return options_.collocation == nullptr || options_.collocation->pair_symmetric; }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
   std::vector<double> particle_outputs(const double* u) const;
