@@ -1,13 +1,14 @@
 // Paper 001 Fig. 1: the traction-free hole (Michell solution, eqs. 4.5-4.7) in the unit
 // square, first-order convergence of the RMS displacement error, far from and close to the
 // incompressible limit, on uniform and perturbed clouds, with the time each run costs.
-//   build/bin/paper001_fig1 [--csv FILE] [--laws LAW,...] [--inside] [n ...]   (default 24 48 96)
+//   build/bin/paper001_fig1 [--csv FILE] [--laws LAW,...] [--inside] [--far D]
+//                         [--nu 0.25|0.495] [--perturbation 0|0.2] [--seed S] [n ...]   (default 24 48 96)
 // Set-up as §4: lattice h = 1/n (perturbed by 0.2 h, or not), delta = 3.5 h, K = 1/r, OBQ
 // weights with paper001_space computed on the whole cloud, then every bond that meets the
 // circle of radius a = 0.2 about (0.5, 0.5) broken; the exact field on a Dirichlet collar of
 // one horizon (outside the square by default: the reading that reproduces Table 1's shape,
 // docs/paper001.md; --inside puts the layer inside), the RMS error of §4 over the solved
-// particles. Far-field tension T = 1 along x (the paper gives no T; the problem is linear).
+// particles (--far D: only those at least D from the hole's circle). Far-field tension T = 1 along x (the paper gives no T; the problem is linear).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,10 +24,17 @@ int main(int argc, char** argv) {
   std::vector<std::string> laws{"lps_plane_strain", "lps_corrected_plane_strain"};
   std::string csv_path;
   bool inside = false;
+  double far = 0;  // --far D: the error only over particles at least D from the hole
+  int seed = 1;
+  double only_nu = 0, only_perturbation = -1;  // --nu V, --perturbation P: only those cases
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--csv" && i + 1 < argc) csv_path = argv[++i];
     else if (a == "--inside") inside = true;
+    else if (a == "--far" && i + 1 < argc) far = std::atof(argv[++i]);
+    else if (a == "--seed" && i + 1 < argc) seed = std::atoi(argv[++i]);
+    else if (a == "--nu" && i + 1 < argc) only_nu = std::atof(argv[++i]);
+    else if (a == "--perturbation" && i + 1 < argc) only_perturbation = std::atof(argv[++i]);
     else if (a == "--laws" && i + 1 < argc) {
       laws.clear();
       std::stringstream ss(argv[++i]);
@@ -51,6 +59,7 @@ int main(int argc, char** argv) {
   for (const std::string& law : laws)
     for (const Material& m : materials)
       for (double perturbation : {0.0, 0.2}) {
+        if ((only_nu != 0 && m.nu != only_nu) || (only_perturbation >= 0 && perturbation != only_perturbation)) continue;
         pd::MichellHole hole;
         hole.T = 1, hole.a = 0.2, hole.x0 = 0.5, hole.y0 = 0.5, hole.lambda = m.lambda, hole.mu = m.mu;
         pd::ManufacturedField field{"michell", [hole](double x, double y) { return hole.displacement(x, y); },
@@ -63,8 +72,10 @@ int main(int argc, char** argv) {
           s.lambda = m.lambda, s.mu = m.mu;
           s.law = law;
           s.perturbation = perturbation;
+          s.seed = seed;
           s.collar_outside = !inside;
           s.hole_radius = hole.a;
+          s.hole_error_margin = far;
           const pd::ManufacturedResult r = pd::solve_manufactured(field, s);
           const double seconds = r.weights_seconds + r.assembly_seconds + r.solve_seconds;
           const double order = previous_n ? std::log(previous / r.rms_error) / std::log(double(n) / previous_n) : NAN;

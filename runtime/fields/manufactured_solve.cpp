@@ -149,6 +149,9 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
     if (!solved[p] || depth(x) < margin) continue;
+    if (s.hole_error_margin > 0 &&
+        std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) < s.hole_radius + s.hole_error_margin)
+      continue;
     for (int c = 0; c < 2; ++c) component_sum[c] += std::pow(u[index[2 * p + c]] - exact[2 * p + c], 2);
     ++r.measured;
   }

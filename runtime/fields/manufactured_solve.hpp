@@ -37,6 +37,9 @@ struct ManufacturedSetup {
   // neither solved nor measured (their bonds to the body are all broken).
   double hole_radius = 0;
   double hole_center[2] = {0.5, 0.5};
+  // > 0: the error only over particles at least this far from the hole's circle (a region
+  // that does not change with h), to tell the hole's surface layer from the rest.
+  double hole_error_margin = 0;
   bool symmetric_weights = false;  // symmetric_pair_weights (collocation.hpp) on the OBQ weights
 };
 
