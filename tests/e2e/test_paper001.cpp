@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "fields/analytic.hpp"
 #include "input/scene.hpp"
 #include "run/simulation.hpp"
 
@@ -107,4 +108,25 @@ TEST(Paper001Scene, SymmetricPaper001WeightsOnAPerturbedCloudAreIndefiniteAndFal
   ASSERT_TRUE(r.newton.converged) << r.newton.message;
   EXPECT_EQ(r.newton.linear_solver, "umfpack");
   EXPECT_NE(r.newton.linear_choice.find("fell back to umfpack"), std::string::npos) << r.newton.linear_choice;
+}
+
+TEST(Paper001Scene, RmsErrorOverTheFreeParticlesMatchesEquation48) {
+  // The §4 RMS over the particles off the collar and eq. (48) over all particles see the
+  // same errors (the collar's are exactly zero): eq48 * sum_all |u_ex|^2 = rms^2 * N_free.
+  pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/scenes/paper001_linear_patch.yaml");
+  s.quadrature = pd::Quadrature::Volume;  // a visible error
+  pd::Simulation sim(s, [](const std::string&) {});
+  const pd::RunSummary r = sim.run(false);
+  ASSERT_TRUE(r.has_field_error);
+  const pd::AnalyticField field(*s.reference, s.materials[0].elastic);
+  const pd::Particles& P = sim.particles();
+  double norm = 0;
+  for (int p = 0; p < P.size(); ++p) {
+    const auto u = field.displacement(P.position(p));
+    norm += u[0] * u[0] + u[1] * u[1];
+  }
+  EXPECT_GT(r.rms_particles, 0);
+  EXPECT_LT(r.rms_particles, P.size());
+  EXPECT_GT(r.rms_error, 0.0);
+  EXPECT_NEAR(r.rms_error * r.rms_error * r.rms_particles, r.field_error * norm, 1e-12 * r.field_error * norm);
 }
