@@ -67,11 +67,15 @@ class FamilyAssembler {
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
   // Collocation with symmetric pair weights (Collocation::pair_symmetric) is the energy
-  // assembly with other weights, so it has both.
+  // assembly with other weights, so it has both. Also false for a law with pair parameters
+  // (LawDescriptor::uses_pair_params) on a body whose particles carry different parameters:
+  // its forces have no potential there.
   bool has_energy() const { return variant_.energy != nullptr && symmetric(); }
-  // False under collocation assembly with unsymmetric pair weights: the solver needs
-  // UMFPACK or GMRES then.
-  bool symmetric() const { return options_.collocation == nullptr || options_.collocation->pair_symmetric; }
+  // False under collocation assembly with unsymmetric pair weights and for pair parameters
+  // across a material jump: the solver needs UMFPACK or GMRES then.
+  bool symmetric() const {
+    return (options_.collocation == nullptr || options_.collocation->pair_symmetric) && !pair_jump_;
+  }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
   std::vector<double> particle_outputs(const double* u) const;
@@ -96,6 +100,7 @@ class FamilyAssembler {
   const abi::LawDescriptor& law_;
   const abi::KernelVariant& variant_;
   AssemblerOptions options_;
+  bool pair_jump_ = false;  // the law uses pair parameters and the particles' parameters differ
   FamilyInputs inputs_;
   FamilyColouring colouring_;
   std::unique_ptr<SparsityPattern> pattern_;

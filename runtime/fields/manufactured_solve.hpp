@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "fields/manufactured.hpp"
 
@@ -41,6 +42,13 @@ struct ManufacturedSetup {
   // that does not change with h), to tell the hole's surface layer from the rest.
   double hole_error_margin = 0;
   bool symmetric_weights = false;  // symmetric_pair_weights (collocation.hpp) on the OBQ weights
+  // A circular inclusion (paper 001 §4.3) when inclusion_radius > 0: the particles closer
+  // than the radius to inclusion_centre take (inclusion_lambda, inclusion_mu), the others
+  // (lambda, mu); a law with pair parameters (LPS) averages them bond by bond (eq. 2.4).
+  double inclusion_radius = 0;
+  double inclusion_centre[2] = {0.5, 0.5};
+  double inclusion_lambda = 0, inclusion_mu = 0;
+  bool keep_solution = false;  // fill ManufacturedResult::x, u, exact
 };
 
 struct ManufacturedResult {
@@ -50,6 +58,8 @@ struct ManufacturedResult {
   int broken_bonds = 0;  // by the hole, each direction counted
   bool symmetric_matrix = false;  // the solver used: CHOLMOD when true, UMFPACK otherwise
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
+  // With keep_solution: every particle's position, computed and exact displacement, [n*2].
+  std::vector<double> x, u, exact;
 };
 
 // Throws NotUnisolventError when a family that reaches a solved particle is not unisolvent.
