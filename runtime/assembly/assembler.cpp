@@ -283,7 +283,7 @@ namespace pd {
 
 double FamilyAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
-  if (options_.collocation) throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
+  if (!symmetric()) throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
   if (gauss_) return gauss_->strain_energy(u);
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);

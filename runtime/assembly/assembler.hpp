@@ -66,15 +66,17 @@ class FamilyAssembler {
   void stiffness_diagonal(const double* u, double* diag) const;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
-  // Also false for a law with pair parameters (LawDescriptor::uses_pair_params) on a body
-  // whose particles carry different parameters, and with surface correction factors
-  // (Bonds::surface_force): the forces have no potential there.
-  bool has_energy() const {
-    return variant_.energy != nullptr && options_.collocation == nullptr && !pair_jump_ && !surface_corrected();
+  // Collocation with symmetric pair weights (Collocation::pair_symmetric) is the energy
+  // assembly with other weights, so it has both. Also false for a law with pair parameters
+  // (LawDescriptor::uses_pair_params) on a body whose particles carry different parameters,
+  // and with surface correction factors (Bonds::surface_force): the forces have no potential there.
+  bool has_energy() const { return variant_.energy != nullptr && symmetric(); }
+  // False under collocation assembly with unsymmetric pair weights, for pair parameters across
+  // a material jump and with surface correction: the solver needs UMFPACK or GMRES then.
+  bool symmetric() const {
+    return (options_.collocation == nullptr || options_.collocation->pair_symmetric) && !pair_jump_ &&
+           !surface_corrected();
   }
-  // False under collocation assembly, for pair parameters across a material jump and with
-  // surface correction: the solver needs UMFPACK or GMRES then.
-  bool symmetric() const { return options_.collocation == nullptr && !pair_jump_ && !surface_corrected(); }
   bool surface_corrected() const { return !inputs_.bonds->surface_force.empty(); }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).

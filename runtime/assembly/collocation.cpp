@@ -2,6 +2,7 @@
 #include "assembly/collocation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,12 @@ Collocation make_collocation(const Particles& particles, const Bonds& bonds, std
       }
       c.row_scale[b] = particles.volume[q] * weights[r] / (particles.volume[p] * weights[b]);
     }
+  // symmetric_pair_weights divides one rounded pair weight by V_p and V_q, so its scales
+  // differ from 1 by a few ulps; unsymmetric OBQ weights of a perturbed cloud by ~1e-2.
+  c.pair_symmetric = std::all_of(c.row_scale.begin(), c.row_scale.end(), [](double s) { return s == 0.0 || std::fabs(s - 1) <= 1e-13; });
+  if (c.pair_symmetric)
+    for (double& s : c.row_scale)
+      if (s != 0.0) s = 1.0;
   c.weight = std::move(weights);
   return c;
 }
@@ -63,8 +70,8 @@ std::vector<double> symmetric_pair_weights(const Particles& particles, const Bon
 Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
                                  std::string& description, const Box2* body, bool symmetric) {
   CloudWeights w = obq_weights_where_unisolvent(particles, bonds, space, body);
-  description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly (non-symmetric stiffness)",
-                            space.name, space.terms.size());
+  description = fmt::format("quadrature: obq ('{}', {} functions), collocation assembly ({})", space.name,
+                            space.terms.size(), symmetric ? "symmetric pair weights: symmetric stiffness" : "non-symmetric stiffness");
   if (body)
     description += fmt::format("; families at the faces of [{:g}, {:g}] x [{:g}, {:g}] integrate over the cut ball",
                                body->lo[0], body->hi[0], body->lo[1], body->hi[1]);
@@ -72,7 +79,7 @@ Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds,
     description += fmt::format("; {} families not unisolvent keep the volume quadrature (particle {} first)",
                                w.volume_families, w.first_volume_family);
   if (symmetric) {
-    description += "; pair weights symmetrised (V_p w_qp = V_q w_pq: momentum-conserving pair forces)";
+    description += "; pair weights symmetrised (V_p w_qp = V_q w_pq: momentum-conserving pair forces, a symmetric stiffness)";
     w.weights = symmetric_pair_weights(particles, bonds, w.weights);
   }
   return make_collocation(particles, bonds, std::move(w.weights));

@@ -28,12 +28,17 @@ namespace pd {
 struct Collocation {
   std::vector<double> weight;     // [nb] omega_{q,p} for bond b = (p -> q), in the rows of Bonds
   std::vector<double> row_scale;  // [nb] s of the header comment
+  // Every pair has V_p w_{q,p} = V_q w_{p,q} (to 1e-13; symmetric_pair_weights makes it so):
+  // every row scale is then 1 (set exactly), the pair forces are equal and opposite and
+  // the assembly is the energy-based one with weights w as the neighbours' volumes, so
+  // an energy law's stiffness is symmetric and its forces are -dE/du.
+  bool pair_symmetric = false;
 };
 
 // Collocation data from per-bond weights (obq_weights). Needs every bond in both
 // directions (a common horizon). Throws std::invalid_argument naming the bond when a
 // reverse bond is missing or a weight is exactly zero while its reverse is not (the
-// row scale would be infinite).
+// row scale would be infinite). Sets pair_symmetric from the weights themselves.
 Collocation make_collocation(const Particles& particles, const Bonds& bonds, std::vector<double> weights);
 
 // Multiplies the rows of a family's local output that belong to neighbours (local

@@ -60,6 +60,15 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
       inner_ = outer_ * (mm.lambda + 2 * mm.G) / (mi.lambda + mi.G + mm.G);
       hole_ = (inner_ - outer_) * a_ * a_;
     }
+  } else if (name_ == "michell") {
+    // Paper 001 §4.2: a traction-free hole of `radius` at (x0, y0), tension `traction` along x.
+    michell_.T = param(spec, "traction", NAN);
+    michell_.a = param(spec, "radius", NAN);
+    michell_.x0 = x0_, michell_.y0 = y0_;
+    if (!std::isfinite(michell_.T) || !(michell_.a > 0))
+      throw std::invalid_argument("michell field needs traction and a positive radius");
+    const auto lame = lame_from_young_poisson(E_, nu_);
+    michell_.lambda = lame[0], michell_.mu = lame[1];
   } else if (name_ == "u1" || name_ == "u2") {
     manufactured_ = name_ == "u1" ? paper001_u1() : paper001_u2();
     amplitude_ = param(spec, "amplitude", 1.0);
@@ -112,6 +121,10 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
   if (has_body_force()) {
     const auto u = manufactured_.displacement(x, y);
     return {amplitude_ * u[0], amplitude_ * u[1], 0.0};
+  }
+  if (name_ == "michell") {
+    const auto u = michell_.displacement(p[0], p[1]);
+    return {u[0], u[1], 0.0};
   }
   if (name_ == "inclusion") {
     const double r = std::hypot(x, y);

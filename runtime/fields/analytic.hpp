@@ -8,6 +8,8 @@
 //   affine:     u = eps (x - x0), eps symmetric from e11 e22 e33 e12 e13 e23 (default 0), 2D or 3D
 //   inclusion:  circular inclusion of radius a (E_inclusion, nu_inclusion) at (x0, y0)
 //               in an infinite plane under remote equibiaxial traction T
+//   michell:    paper 001's traction-free hole of `radius` at (x0, y0) in an infinite plane
+//               under tension `traction` along x (fields/michell.hpp)
 //   u1, u2:     paper 001's manufactured solutions (fields/manufactured.hpp) times
 //               `amplitude` (default 1); the only fields with a body force
 #pragma once
@@ -17,6 +19,7 @@
 #include <string>
 
 #include "fields/manufactured.hpp"
+#include "fields/michell.hpp"
 #include "input/scene.hpp"
 
 namespace pd {
@@ -45,6 +48,7 @@ class AnalyticField {
   double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
   double strain_[3][3] = {};                  // affine: u = strain (x - (x0, y0, z0))
   double z0_ = 0;
+  MichellHole michell_;                       // michell
   ManufacturedField manufactured_;            // u1, u2
   double amplitude_ = 1;
 };

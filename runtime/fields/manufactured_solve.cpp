@@ -42,6 +42,16 @@ std::vector<char> families_reaching(const Bonds& bonds, const std::vector<char>&
       for (int b = bonds.offsets[p]; b < bonds.offsets[p + 1]; ++b) needed[bonds.neighbor[b]] = 1;
   return needed;
 }
+
+// Whether the segment xa-xb meets the circle |x - c| = R: its nearest point to c lies
+// within R and its farthest point (an end) beyond R.
+bool meets_circle(const double* xa, const double* xb, const double* c, double R) {
+  const double d[2] = {xb[0] - xa[0], xb[1] - xa[1]}, f[2] = {xa[0] - c[0], xa[1] - c[1]};
+  const double t = std::clamp(-(f[0] * d[0] + f[1] * d[1]) / (d[0] * d[0] + d[1] * d[1]), 0.0, 1.0);
+  const double nearest = std::hypot(f[0] + t * d[0], f[1] + t * d[1]);
+  const double farthest = std::max(std::hypot(f[0], f[1]), std::hypot(xb[0] - c[0], xb[1] - c[1]));
+  return nearest <= R && farthest >= R;
+}
 }  // namespace
 
 ManufacturedResult solve_manufactured(const ManufacturedField& field, const ManufacturedSetup& s) {
@@ -70,14 +80,15 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   auto lame = [&](int p) { return P.material[p] == 1 ? std::array<double, 2>{s.inclusion_lambda, s.inclusion_mu} : std::array<double, 2>{s.lambda, s.mu}; };
   // Distance of a point from the boundary of the square (negative in an outside collar).
   auto depth = [&](const double* x) { return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]}); };
-  const Bonds B = find_bonds(P, delta, influence->weight);
+  Bonds B = find_bonds(P, delta, influence->weight);
   const int n = P.size();
   std::vector<char> solved(n);
   ManufacturedResult r;
   r.particles = n;
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
-    solved[p] = depth(x) >= layer;
+    const bool in_hole = s.hole_radius > 0 && std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) < s.hole_radius;
+    solved[p] = depth(x) >= layer && !in_hole;
     r.solved += solved[p];
   }
 
@@ -86,11 +97,22 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   AssemblerOptions options;
   options.intact = true;
   if (s.obq) {
-    collocation = make_collocation(P, B, obq_weights(P, B, s.odd_terms ? paper001_odd_space(2) : paper001_space(2),
-                                                  families_reaching(B, solved)));
+    std::vector<double> w =
+        obq_weights(P, B, s.odd_terms ? paper001_odd_space(2) : paper001_space(2), families_reaching(B, solved));
+    if (s.symmetric_weights) w = symmetric_pair_weights(P, B, w);
+    collocation = make_collocation(P, B, std::move(w));
     options.collocation = &collocation;
   }
   r.weights_seconds = seconds_since(t0);
+  if (s.hole_radius > 0) {  // the weights above saw the whole cloud (§4: "before bonds are broken")
+    for (int p = 0; p < n; ++p)
+      for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b)
+        if (meets_circle(P.position(p), P.position(B.neighbor[b]), s.hole_center, s.hole_radius)) {
+          B.alpha[b] = 0;
+          ++r.broken_bonds;
+        }
+    options.intact = r.broken_bonds == 0;
+  }
 
   t0 = std::chrono::steady_clock::now();
   const FamilyAssembler assembler(P, B, *law, params, options);
@@ -126,7 +148,8 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.assembly_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  auto solver = make_sparse_solver(assembler.symmetric() ? LinearMethod::cholmod : LinearMethod::umfpack, {});
+  r.symmetric_matrix = assembler.symmetric();
+  auto solver = make_sparse_solver(r.symmetric_matrix ? LinearMethod::cholmod : LinearMethod::umfpack, {});
   solver->analyse(A);
   if (!solver->factor(A)) throw std::runtime_error("solve_manufactured: " + solver->failure());
   Eigen::VectorXd u(unknowns);
@@ -138,6 +161,9 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
     if (!solved[p] || depth(x) < margin) continue;
+    if (s.hole_error_margin > 0 &&
+        std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) < s.hole_radius + s.hole_error_margin)
+      continue;
     for (int c = 0; c < 2; ++c) component_sum[c] += std::pow(u[index[2 * p + c]] - exact[2 * p + c], 2);
     ++r.measured;
   }

@@ -32,6 +32,16 @@ struct ManufacturedSetup {
   // 0: the error over all solved particles (the paper's); > 0: only over those at least
   // this far from the boundary, a region that does not change with h.
   double error_margin = 0;
+  // A traction-free hole (paper 001 §4.2, Fig. 1), off when hole_radius = 0: after the
+  // weights are computed on the whole cloud, every bond whose segment meets the circle is
+  // broken (the paper's "break all bonds crossing the circle"); the particles inside are
+  // neither solved nor measured (their bonds to the body are all broken).
+  double hole_radius = 0;
+  double hole_center[2] = {0.5, 0.5};
+  // > 0: the error only over particles at least this far from the hole's circle (a region
+  // that does not change with h), to tell the hole's surface layer from the rest.
+  double hole_error_margin = 0;
+  bool symmetric_weights = false;  // symmetric_pair_weights (collocation.hpp) on the OBQ weights
   // A circular inclusion (paper 001 §4.3) when inclusion_radius > 0: the particles closer
   // than the radius to inclusion_centre take (inclusion_lambda, inclusion_mu), the others
   // (lambda, mu); a law with pair parameters (LPS) averages them bond by bond (eq. 2.4).
@@ -45,6 +55,8 @@ struct ManufacturedResult {
   double rms_error = 0;
   double rms_component[2] = {0, 0};  // the same norm of u_x - u_x,ex and u_y - u_y,ex alone
   int particles = 0, solved = 0, measured = 0;
+  int broken_bonds = 0;  // by the hole, each direction counted
+  bool symmetric_matrix = false;  // the solver used: CHOLMOD when true, UMFPACK otherwise
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
   // With keep_solution: every particle's position, computed and exact displacement, [n*2].
   std::vector<double> x, u, exact;

@@ -136,6 +136,7 @@ const std::vector<FieldParameters> kFieldParameters{
     {"westergaard", {"pressure", "half_length"}, {}},
     {"rotation", {"angle"}, {"stretch"}},
     {"inclusion", {"traction", "radius", "E_inclusion", "nu_inclusion"}, {}},
+    {"michell", {"traction", "radius"}, {}},
     {"affine", {}, {"e11", "e22", "e33", "e12", "e13", "e23", "z0"}},
     {"u1", {}, {"amplitude"}},
     {"u2", {}, {"amplitude"}}};

@@ -76,6 +76,23 @@ double field_error(const Scene& scene, const FieldSpec& reference, const Particl
   return den > 0 ? num / den : num;
 }
 
+double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles, const DofMap& dofs,
+                      const std::vector<double>& u, int& count) {
+  const AnalyticField field(reference, scene.materials[0].elastic);
+  const int d = particles.dim;
+  double sum = 0;
+  count = 0;
+  for (int p = 0; p < particles.size(); ++p) {
+    bool free = true;
+    for (int c = 0; c < d; ++c) free = free && dofs.free_index(p * d + c) >= 0;
+    if (!free) continue;
+    const auto ua = field.displacement(particles.position(p));
+    for (int c = 0; c < d; ++c) sum += std::pow(ua[c] - u[p * d + c], 2);
+    ++count;
+  }
+  return count > 0 ? std::sqrt(sum / count) : 0.0;
+}
+
 std::string probe_log_line(const ProbeResult& p) {
   return p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
                                        p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))

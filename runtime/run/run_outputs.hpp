@@ -10,6 +10,7 @@
 #include "output/particle_fields.hpp"
 #include "particles.hpp"
 #include "run/run_summary.hpp"
+#include "solve/dof_map.hpp"
 
 namespace pd {
 
@@ -34,6 +35,12 @@ bool wants_stress(const Scene& scene);
 // reference is zero everywhere).
 double field_error(const Scene& scene, const FieldSpec& reference, const Particles& particles,
                    const std::vector<double>& u);
+
+// Paper 001 §4's error: the RMS sqrt(sum_i |u_i - u_anal(x_i)|^2 / N) over the N particles
+// whose every dof is free (the solved ones; a Dirichlet collar is left out). `count` gets N;
+// 0 when no particle is free (the RMS is then 0).
+double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles, const DofMap& dofs,
+                      const std::vector<double>& u, int& count);
 
 // The probe's line in the run log.
 std::string probe_log_line(const ProbeResult& p);

@@ -76,6 +76,7 @@ std::string RunSummary::json() const {
   }
   j["probes"] = probe_list;
   if (has_field_error) j["field_error_eq48"] = field_error;
+  if (has_field_error) j["rms_error_free"] = {{"value", rms_error}, {"particles", rms_particles}};
   if (!smoothing.empty()) {
     nlohmann::ordered_json sj{{"influence", smoothing}, {"oscillation", oscillation}};
     if (has_field_error) sj["field_error_eq48"] = smoothed_field_error;
@@ -118,6 +119,8 @@ std::string RunSummary::text() const {
                      setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
   }
   if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
+  if (has_field_error)
+    s += fmt::format("RMS error over the {} free particles (paper 001 §4): {:.9e}\n", rms_particles, rms_error);
   if (!smoothing.empty())
     s += fmt::format("smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
                      has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");

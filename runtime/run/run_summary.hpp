@@ -37,6 +37,8 @@ struct RunSummary {
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2
+  double rms_error = 0;    // paper 001 §4: RMS of |u - u_anal| over the rms_particles free particles
+  int rms_particles = 0;
   // output.smoothing (paper 000 eq. 49): the influence used, the relative oscillation
   // sqrt(sum |u - u_s|^2 / sum |u|^2) and, with a reference, eq. (48) for u_s.
   std::string smoothing;

@@ -112,6 +112,8 @@ void report(StaticRun& run, const Model& model, const Scene& scene, const RunLog
     summary.has_field_error = true;
     summary.field_error = field_error(scene, *scene.reference, model.particles, u);
     log(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene.reference->solution, summary.field_error));
+    summary.rms_error = rms_error_free(scene, *scene.reference, model.particles, model.dofs, u, summary.rms_particles);
+    log(fmt::format("  RMS error over the {} free particles (paper 001 §4): {:.6e}", summary.rms_particles, summary.rms_error));
   }
   if (!scene.output.smoothing_influence.empty()) smooth(run, model, scene, log);
   std::vector<double> external(scene.output.j_integral.empty() ? 0 : u.size(), 0.0);

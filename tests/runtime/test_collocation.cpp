@@ -184,3 +184,51 @@ TEST(Collocation, SymmetricPairWeightsConserveMomentumAndKeepALatticeInterior) {
   }
   EXPECT_GT(checked, 0);
 }
+
+TEST(Collocation, SymmetricPairWeightsGiveASymmetricSystemWithAnEnergy) {
+  // With V_p w'_qp = V_q w'_pq the collocation is the energy assembly with w' as volumes:
+  // the assembler says so (symmetric(), has_energy(): the solver plan then takes the
+  // Cholesky path), its stiffness is symmetric to round-off and its forces are -dE/du.
+  // The paper's unsymmetric weights on the same cloud keep the non-symmetric path.
+  const obq_test::Cloud c = obq_test::unit_square_cloud(1.0 / 12);
+  const pd::Collocation plain = obq_test::paper001_collocation(c);
+  const pd::Collocation sym =
+      pd::make_collocation(c.particles, c.bonds, pd::symmetric_pair_weights(c.particles, c.bonds, plain.weight));
+  EXPECT_TRUE(sym.pair_symmetric);
+  EXPECT_FALSE(plain.pair_symmetric);
+  const auto* law = pd::abi::find_law("lps_plane_strain");
+  pd::AssemblerOptions opt, opt_plain;
+  opt.collocation = &sym;
+  opt_plain.collocation = &plain;
+  const pd::FamilyAssembler A(c.particles, c.bonds, *law, lps_params(*law), opt);
+  const pd::FamilyAssembler A_plain(c.particles, c.bonds, *law, lps_params(*law), opt_plain);
+  EXPECT_TRUE(A.symmetric());
+  EXPECT_TRUE(A.has_energy());
+  EXPECT_FALSE(A_plain.symmetric());
+  EXPECT_FALSE(A_plain.has_energy());
+  EXPECT_THROW(A_plain.strain_energy(std::vector<double>(A.dofs(), 0.0).data()), std::logic_error);
+
+  const std::vector<double> u = random_field(A.dofs(), 1e-2, 5);
+  pd::SparseMatrix K = A.make_matrix(), K_plain = A_plain.make_matrix();
+  A.stiffness(u.data(), K);
+  A_plain.stiffness(u.data(), K_plain);
+  const Eigen::MatrixXd Kd(K), Kp(K_plain);
+  const double scale = Kd.cwiseAbs().maxCoeff();
+  EXPECT_LT((Kd - Kd.transpose()).cwiseAbs().maxCoeff(), 1e-13 * scale);
+  EXPECT_GT((Kp - Kp.transpose()).cwiseAbs().maxCoeff(), 1e-3 * scale);
+
+  // f = -dE/du by central differences of the energy, on a few dofs.
+  std::vector<double> f(u.size()), v = u;
+  A.internal_forces(u.data(), f.data());
+  double fmax = 0;
+  for (double x : f) fmax = std::max(fmax, std::abs(x));
+  const double e = 1e-6;
+  for (int i : {0, 7, 40, 101, static_cast<int>(u.size()) - 1}) {
+    v[i] = u[i] + e;
+    const double ep = A.strain_energy(v.data());
+    v[i] = u[i] - e;
+    const double em = A.strain_energy(v.data());
+    v[i] = u[i];
+    EXPECT_NEAR(-(ep - em) / (2 * e), f[i], 1e-6 * fmax) << "dof " << i;
+  }
+}
