@@ -448,6 +448,27 @@ void GaussPointAssembler::stiffness_product(const double* u, const double* v, do
   add_mapped(point_df.data(), -1.0, Kv);
 }
 
+void GaussPointAssembler::collocation_forces(const double* u, double* forces) const {
+  if (law_.n_states != 0)
+    throw std::invalid_argument(std::string("collocation form (eq. 3.15): law ") + law_.name +
+                                " is state-based; its force state needs the Gauss point's own family, which does not exist");
+  const int d = particles_->dim;
+  std::fill(forces, forces + dofs(), 0.0);
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gather_points(u, ug.data());
+  }
+  for_each_family_coloured("collocation forces (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    double* f_loc = g.local();
+    variant_.residual(fam, f_loc);
+    if (!finite(f_loc, static_cast<std::size_t>(d))) return "residual";
+    for (int c = 0; c < d; ++c) forces[static_cast<std::ptrdiff_t>(p) * d + c] = 2.0 * f_loc[c];
+    return nullptr;
+  });
+}
+
 void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) const {
   // The diagonal of P^T M P needs M and the map: O(L^2) per family, as for the matrix.
   const int d = particles_->dim, S = law_.n_states;

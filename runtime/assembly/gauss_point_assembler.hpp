@@ -50,6 +50,13 @@ class GaussPointAssembler {
   // Forces overwritten with f(u) (may be null); K (may be null) with -df/du in pattern().
   void assemble(const double* u, double* forces, SparseMatrix* K) const;
   void stiffness_product(const double* u, const double* v, double* Kv) const;
+  // The paper's collocation form, eq. (3.15), for a pairwise law (n_states == 0; throws
+  // otherwise): node i's force is the sum of the pairwise forces f(u_g - u_i, x_g - x_i)
+  // beta_g V_g over its own Gauss bonds, f = 2 t_i<g> (the kernel's force state is half the
+  // pairwise force), and nothing is returned to the points' nodes. Not momentum-balanced and
+  // not symmetric (docs/paper002.md measures both); for comparison with the variational
+  // form above, not reachable from a scene.
+  void collocation_forces(const double* u, double* forces) const;
   void stiffness_diagonal(const double* u, double* diag) const;
   double strain_energy(const double* u) const;
   // An upper bound on the Gershgorin row sums S_r = sum_c |K_rc| of the stiffness at u (null:
