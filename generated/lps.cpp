@@ -29,13 +29,11 @@ void lps_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[0] = s_m;
 }
 
-// lps_plane_strain_damaged_residual: per bond 9 add, 24 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_damaged_residual: per bond 10 add, 26 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -57,8 +55,7 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 8.0 * P_mu;
+  const double p2 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -66,6 +63,8 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -73,9 +72,10 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -86,13 +86,11 @@ void lps_plane_strain_damaged_residual(const pd::abi::Family& fam, double* force
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_tangent: per bond 9 add, 40 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_damaged_tangent: per bond 10 add, 44 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -115,11 +113,8 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 2.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_mu;
-  const double p6 = 8.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 2.0 * s_theta;
+  const double p4 = 8.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -127,6 +122,8 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -134,41 +131,41 @@ void lps_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = 1.0 / (b8 + b9);
-    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * alpha * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * alpha * w;
-    const double b14 = p6 * b10 * alpha * w;
-    const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * V * alpha * w;
-    const double b17 = p7 * alpha * w;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    lane1[lane] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    lane2[lane] += b13;
-    factors.direct[k * 4 + 0] = b14 * b8;
-    factors.direct[k * 4 + 1] = b15;
-    factors.direct[k * 4 + 2] = b15;
-    factors.direct[k * 4 + 3] = b14 * b9;
-    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = 1.0 / (b7 + b8);
+    const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * V * alpha * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * V * alpha * w;
+    const double b13 = p4 * Q_mu * b9 * alpha * w;
+    const double b14 = b13 * xi_1 * xi_0;
+    const double b15 = p0 * V * alpha * w;
+    const double b16 = p0 * b5 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
+    lane1[lane] += b11;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
+    lane2[lane] += b12;
+    factors.direct[k * 4 + 0] = b13 * b7;
+    factors.direct[k * 4 + 1] = b14;
+    factors.direct[k * 4 + 2] = b14;
+    factors.direct[k * 4 + 3] = b13 * b8;
+    factors.right[(k * 1 + 0) * 2 + 0] = b15 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b15 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_jvp: per bond 6 add, 34 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_damaged_jvp: per bond 7 add, 37 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -190,8 +187,8 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 8.0 * p1 * P_mu;
-  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 8.0 * p1;
+  const double p3 = 2.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -200,18 +197,20 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * alpha * w;
-    const double b8 = p2 * dY_1 * b6 * alpha * w;
-    const double b9 = p3 * alpha * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * alpha * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * alpha * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * alpha * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -224,7 +223,7 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_damaged_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_damaged_energy: per bond 7 add, 16 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -237,6 +236,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -245,7 +245,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -268,7 +268,7 @@ double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -408,13 +408,11 @@ void lps_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments
   moments[0] = s_m;
 }
 
-// lps_plane_strain_intact_residual: per bond 9 add, 21 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_plane_strain_intact_residual: per bond 10 add, 23 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -435,8 +433,7 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 8.0 * P_mu;
+  const double p2 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -444,15 +441,18 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * w;
     forces[(k + 1) * 2 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 2 + 1] = -b6;
@@ -463,13 +463,11 @@ void lps_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_tangent: per bond 9 add, 34 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_plane_strain_intact_tangent: per bond 10 add, 38 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -491,11 +489,8 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 2.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 8.0 * P_mu;
-  const double p6 = 8.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 2.0 * s_theta;
+  const double p4 = 8.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -503,47 +498,49 @@ void lps_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces,
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = 1.0 / (b8 + b9);
-    const double b11 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b10;
-    const double b12 = p2 * (p4 * xi_0 + b11 * xi_0) * V * w;
-    const double b13 = p2 * (p4 * xi_1 + b11 * xi_1) * V * w;
-    const double b14 = p6 * b10 * w;
-    const double b15 = b14 * xi_1 * xi_0;
-    const double b16 = p0 * V * w;
-    const double b17 = p7 * w;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b12;
-    lane1[lane] += b12;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b13;
-    lane2[lane] += b13;
-    factors.direct[k * 4 + 0] = b14 * b8;
-    factors.direct[k * 4 + 1] = b15;
-    factors.direct[k * 4 + 2] = b15;
-    factors.direct[k * 4 + 3] = b14 * b9;
-    factors.right[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
-    factors.right[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
-    factors.left[(k * 1 + 0) * 2 + 0] = b17 * xi_0;
-    factors.left[(k * 1 + 0) * 2 + 1] = b17 * xi_1;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = 1.0 / (b7 + b8);
+    const double b10 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b9;
+    const double b11 = p2 * (b6 * xi_0 + b10 * xi_0) * V * w;
+    const double b12 = p2 * (b6 * xi_1 + b10 * xi_1) * V * w;
+    const double b13 = p4 * Q_mu * b9 * w;
+    const double b14 = b13 * xi_1 * xi_0;
+    const double b15 = p0 * V * w;
+    const double b16 = p0 * b5 * w;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b11;
+    lane1[lane] += b11;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b12;
+    lane2[lane] += b12;
+    factors.direct[k * 4 + 0] = b13 * b7;
+    factors.direct[k * 4 + 1] = b14;
+    factors.direct[k * 4 + 2] = b14;
+    factors.direct[k * 4 + 3] = b13 * b8;
+    factors.right[(k * 1 + 0) * 2 + 0] = b15 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b15 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b16 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b16 * xi_1;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_jvp: per bond 6 add, 29 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_plane_strain_intact_jvp: per bond 7 add, 32 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -564,8 +561,8 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 8.0 * p1 * P_mu;
-  const double p3 = 2.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 8.0 * p1;
+  const double p3 = 2.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -574,17 +571,19 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = 1.0 / (b4 + b5);
-    const double b7 = p2 * dY_0 * b6 * w;
-    const double b8 = p2 * dY_1 * b6 * w;
-    const double b9 = p3 * w;
+    const double b7 = p2 * dY_0 * Q_mu * b6 * w;
+    const double b8 = p2 * dY_1 * Q_mu * b6 * w;
+    const double b9 = p3 * (Q_lambda - Q_mu) * w;
     const double b10 = V0 * (b7 * b4 + b8 * xi_1 * xi_0 + b9 * xi_0) * V;
     const double b11 = V0 * (b7 * xi_1 * xi_0 + b8 * b5 + b9 * xi_1) * V;
     df[(k + 1) * 2 + 0] = -b10;
@@ -597,7 +596,7 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_plane_strain_intact_energy: per bond 7 add, 13 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_plane_strain_intact_energy: per bond 7 add, 14 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -610,6 +609,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -617,7 +617,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -639,7 +639,7 @@ double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -770,26 +770,27 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_plane_strain_damaged_moments;
   d.damaged.residual = &lps_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {9, 24, 1, 0};
+  d.damaged.residual_ops = {10, 26, 1, 0};
   d.damaged.tangent = &lps_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {9, 40, 1, 0};
+  d.damaged.tangent_ops = {10, 44, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {6, 34, 1, 0};
+  d.damaged.jvp_ops = {7, 37, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.damaged.form = &lps_plane_strain_damaged_form;
   d.intact.moments = &lps_plane_strain_intact_moments;
   d.intact.residual = &lps_plane_strain_intact_residual;
-  d.intact.residual_ops = {9, 21, 1, 0};
+  d.intact.residual_ops = {10, 23, 1, 0};
   d.intact.tangent = &lps_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {9, 34, 1, 0};
+  d.intact.tangent_ops = {10, 38, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {6, 29, 1, 0};
+  d.intact.jvp_ops = {7, 32, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   d.intact.form = &lps_plane_strain_intact_form;
@@ -819,13 +820,11 @@ void lps_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_damaged_residual: per bond 15 add, 33 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_damaged_residual: per bond 16 add, 35 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -849,8 +848,7 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 15.0 * P_mu;
+  const double p2 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -859,6 +857,8 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -868,10 +868,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * alpha * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * alpha * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * alpha * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * alpha * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * alpha * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -885,13 +886,11 @@ void lps_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_tangent: per bond 15 add, 55 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_damaged_tangent: per bond 16 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -916,11 +915,8 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 3.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 15.0 * P_mu;
-  const double p6 = 15.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 3.0 * s_theta;
+  const double p4 = 15.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -929,6 +925,8 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -938,42 +936,44 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = xi_2 * xi_2;
-    const double b11 = 1.0 / (b8 + b9 + b10);
-    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * alpha * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * alpha * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * alpha * w;
-    const double b16 = p6 * b11 * alpha * w;
-    const double b17 = b16 * xi_1 * xi_0;
-    const double b18 = b16 * xi_2;
-    const double b19 = b18 * xi_0;
-    const double b20 = b18 * xi_1;
-    const double b21 = p0 * V * alpha * w;
-    const double b22 = p7 * alpha * w;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    lane1[lane] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    lane2[lane] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    lane3[lane] += b15;
-    factors.direct[k * 9 + 0] = b16 * b8;
-    factors.direct[k * 9 + 1] = b17;
-    factors.direct[k * 9 + 2] = b19;
-    factors.direct[k * 9 + 3] = b17;
-    factors.direct[k * 9 + 4] = b16 * b9;
-    factors.direct[k * 9 + 5] = b20;
-    factors.direct[k * 9 + 6] = b19;
-    factors.direct[k * 9 + 7] = b20;
-    factors.direct[k * 9 + 8] = b16 * b10;
-    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = xi_2 * xi_2;
+    const double b10 = 1.0 / (b7 + b8 + b9);
+    const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * V * alpha * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * V * alpha * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * V * alpha * w;
+    const double b15 = p4 * Q_mu * b10 * alpha * w;
+    const double b16 = b15 * xi_1 * xi_0;
+    const double b17 = b15 * xi_2;
+    const double b18 = b17 * xi_0;
+    const double b19 = b17 * xi_1;
+    const double b20 = p0 * V * alpha * w;
+    const double b21 = p0 * b5 * alpha * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    factors.direct[k * 9 + 0] = b15 * b7;
+    factors.direct[k * 9 + 1] = b16;
+    factors.direct[k * 9 + 2] = b18;
+    factors.direct[k * 9 + 3] = b16;
+    factors.direct[k * 9 + 4] = b15 * b8;
+    factors.direct[k * 9 + 5] = b19;
+    factors.direct[k * 9 + 6] = b18;
+    factors.direct[k * 9 + 7] = b19;
+    factors.direct[k * 9 + 8] = b15 * b9;
+    factors.right[(k * 1 + 0) * 3 + 0] = b20 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b20 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b20 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -981,13 +981,11 @@ void lps_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_jvp: per bond 13 add, 55 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_damaged_jvp: per bond 14 add, 59 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1011,8 +1009,8 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 15.0 * p1 * P_mu;
-  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 15.0 * p1;
+  const double p3 = 3.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1022,6 +1020,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -1029,16 +1028,17 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * alpha * w;
-    const double b9 = p2 * dY_1 * b7 * alpha * w;
-    const double b10 = p2 * dY_2 * b7 * alpha * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * alpha * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * alpha * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * alpha * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * alpha * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * alpha * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1055,7 +1055,7 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_damaged_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_damaged_energy: per bond 12 add, 19 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1068,6 +1068,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1078,7 +1079,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1103,7 +1104,7 @@ double lps_3d_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -1314,13 +1315,11 @@ void lps_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
   moments[0] = s_m;
 }
 
-// lps_3d_intact_residual: per bond 15 add, 29 mul, 1 div, 0 call; per family 1 add, 5 mul, 2 div, 0 call
+// lps_3d_intact_residual: per bond 16 add, 31 mul, 1 div, 0 call; per family 0 add, 3 mul, 2 div, 0 call
 void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1343,8 +1342,7 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p1 = 1.0 / s_m * V0;
-  const double p2 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p3 = 15.0 * P_mu;
+  const double p2 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1353,6 +1351,8 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1361,10 +1361,11 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b4 = p3 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b5 = p1 * (p2 * xi_0 + b4 * xi_0) * V * w;
-    const double b6 = p1 * (p2 * xi_1 + b4 * xi_1) * V * w;
-    const double b7 = p1 * (p2 * xi_2 + b4 * xi_2) * V * w;
+    const double b3 = p2 * (Q_lambda - Q_mu);
+    const double b4 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b5 = p1 * (b3 * xi_0 + b4 * xi_0) * V * w;
+    const double b6 = p1 * (b3 * xi_1 + b4 * xi_1) * V * w;
+    const double b7 = p1 * (b3 * xi_2 + b4 * xi_2) * V * w;
     forces[(k + 1) * 3 + 0] = -b5;
     lane1[lane] += b5;
     forces[(k + 1) * 3 + 1] = -b6;
@@ -1378,13 +1379,11 @@ void lps_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_tangent: per bond 15 add, 48 mul, 1 div, 0 call; per family 1 add, 8 mul, 2 div, 0 call
+// lps_3d_intact_tangent: per bond 16 add, 52 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1408,11 +1407,8 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p1 = 1.0 / s_m;
   const double p2 = p1 * V0;
-  const double p3 = 3.0 * (P_lambda - P_mu);
-  const double p4 = p3 * s_theta;
-  const double p5 = 15.0 * P_mu;
-  const double p6 = 15.0 * p1 * P_mu;
-  const double p7 = p3 * p1;
+  const double p3 = 3.0 * s_theta;
+  const double p4 = 15.0 * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1421,6 +1417,8 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_0 = fam.Y[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1429,42 +1427,44 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
     const double xi_2 = fam.xi[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b8 = xi_0 * xi_0;
-    const double b9 = xi_1 * xi_1;
-    const double b10 = xi_2 * xi_2;
-    const double b11 = 1.0 / (b8 + b9 + b10);
-    const double b12 = p5 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b11;
-    const double b13 = p2 * (p4 * xi_0 + b12 * xi_0) * V * w;
-    const double b14 = p2 * (p4 * xi_1 + b12 * xi_1) * V * w;
-    const double b15 = p2 * (p4 * xi_2 + b12 * xi_2) * V * w;
-    const double b16 = p6 * b11 * w;
-    const double b17 = b16 * xi_1 * xi_0;
-    const double b18 = b16 * xi_2;
-    const double b19 = b18 * xi_0;
-    const double b20 = b18 * xi_1;
-    const double b21 = p0 * V * w;
-    const double b22 = p7 * w;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b13;
-    lane1[lane] += b13;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b14;
-    lane2[lane] += b14;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b15;
-    lane3[lane] += b15;
-    factors.direct[k * 9 + 0] = b16 * b8;
-    factors.direct[k * 9 + 1] = b17;
-    factors.direct[k * 9 + 2] = b19;
-    factors.direct[k * 9 + 3] = b17;
-    factors.direct[k * 9 + 4] = b16 * b9;
-    factors.direct[k * 9 + 5] = b20;
-    factors.direct[k * 9 + 6] = b19;
-    factors.direct[k * 9 + 7] = b20;
-    factors.direct[k * 9 + 8] = b16 * b10;
-    factors.right[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
-    factors.right[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
-    factors.right[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
-    factors.left[(k * 1 + 0) * 3 + 0] = b22 * xi_0;
-    factors.left[(k * 1 + 0) * 3 + 1] = b22 * xi_1;
-    factors.left[(k * 1 + 0) * 3 + 2] = b22 * xi_2;
+    const double b5 = Q_lambda - Q_mu;
+    const double b6 = p3 * b5;
+    const double b7 = xi_0 * xi_0;
+    const double b8 = xi_1 * xi_1;
+    const double b9 = xi_2 * xi_2;
+    const double b10 = 1.0 / (b7 + b8 + b9);
+    const double b11 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b10;
+    const double b12 = p2 * (b6 * xi_0 + b11 * xi_0) * V * w;
+    const double b13 = p2 * (b6 * xi_1 + b11 * xi_1) * V * w;
+    const double b14 = p2 * (b6 * xi_2 + b11 * xi_2) * V * w;
+    const double b15 = p4 * Q_mu * b10 * w;
+    const double b16 = b15 * xi_1 * xi_0;
+    const double b17 = b15 * xi_2;
+    const double b18 = b17 * xi_0;
+    const double b19 = b17 * xi_1;
+    const double b20 = p0 * V * w;
+    const double b21 = p0 * b5 * w;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    factors.direct[k * 9 + 0] = b15 * b7;
+    factors.direct[k * 9 + 1] = b16;
+    factors.direct[k * 9 + 2] = b18;
+    factors.direct[k * 9 + 3] = b16;
+    factors.direct[k * 9 + 4] = b15 * b8;
+    factors.direct[k * 9 + 5] = b19;
+    factors.direct[k * 9 + 6] = b18;
+    factors.direct[k * 9 + 7] = b19;
+    factors.direct[k * 9 + 8] = b15 * b9;
+    factors.right[(k * 1 + 0) * 3 + 0] = b20 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b20 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b20 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b21 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b21 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b21 * xi_2;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -1472,13 +1472,11 @@ void lps_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd:
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_jvp: per bond 13 add, 48 mul, 1 div, 0 call; per family 1 add, 6 mul, 2 div, 0 call
+// lps_3d_intact_jvp: per bond 14 add, 52 mul, 1 div, 0 call; per family 0 add, 4 mul, 2 div, 0 call
 void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   double lane0[4] = {};
@@ -1501,8 +1499,8 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p1 = 1.0 / s_m;
-  const double p2 = 15.0 * p1 * P_mu;
-  const double p3 = 3.0 * ds_theta * (P_lambda - P_mu) * p1;
+  const double p2 = 15.0 * p1;
+  const double p3 = 3.0 * ds_theta * p1;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -1512,22 +1510,24 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b4 = xi_0 * xi_0;
     const double b5 = xi_1 * xi_1;
     const double b6 = xi_2 * xi_2;
     const double b7 = 1.0 / (b4 + b5 + b6);
-    const double b8 = p2 * dY_0 * b7 * w;
-    const double b9 = p2 * dY_1 * b7 * w;
-    const double b10 = p2 * dY_2 * b7 * w;
+    const double b8 = p2 * dY_0 * Q_mu * b7 * w;
+    const double b9 = p2 * dY_1 * Q_mu * b7 * w;
+    const double b10 = p2 * dY_2 * Q_mu * b7 * w;
     const double b11 = b10 * xi_2;
-    const double b12 = p3 * w;
+    const double b12 = p3 * (Q_lambda - Q_mu) * w;
     const double b13 = V0 * (b8 * b4 + b9 * xi_1 * xi_0 + b11 * xi_0 + b12 * xi_0) * V;
     const double b14 = V0 * (b8 * xi_1 * xi_0 + b9 * b5 + b11 * xi_1 + b12 * xi_1) * V;
     const double b15 = V0 * (b8 * xi_2 * xi_0 + b9 * xi_2 * xi_1 + b10 * b6 + b12 * xi_2) * V;
@@ -1544,7 +1544,7 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_3d_intact_energy: per bond 12 add, 16 mul, 1 div, 0 call; per family 2 add, 7 mul, 2 div, 0 call
+// lps_3d_intact_energy: per bond 12 add, 17 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1557,6 +1557,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -1566,7 +1567,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -1590,7 +1591,7 @@ double lps_3d_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -1791,26 +1792,27 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 1;
   d.n_states = 1;
   d.damaged.moments = &lps_3d_damaged_moments;
   d.damaged.residual = &lps_3d_damaged_residual;
-  d.damaged.residual_ops = {15, 33, 1, 0};
+  d.damaged.residual_ops = {16, 35, 1, 0};
   d.damaged.tangent = &lps_3d_damaged_tangent;
-  d.damaged.tangent_ops = {15, 55, 1, 0};
+  d.damaged.tangent_ops = {16, 59, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
-  d.damaged.jvp_ops = {13, 55, 1, 0};
+  d.damaged.jvp_ops = {14, 59, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.damaged.form = &lps_3d_damaged_form;
   d.intact.moments = &lps_3d_intact_moments;
   d.intact.residual = &lps_3d_intact_residual;
-  d.intact.residual_ops = {15, 29, 1, 0};
+  d.intact.residual_ops = {16, 31, 1, 0};
   d.intact.tangent = &lps_3d_intact_tangent;
-  d.intact.tangent_ops = {15, 48, 1, 0};
+  d.intact.tangent_ops = {16, 52, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
-  d.intact.jvp_ops = {13, 48, 1, 0};
+  d.intact.jvp_ops = {14, 52, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   d.intact.form = &lps_3d_intact_form;
@@ -1874,7 +1876,7 @@ void lps_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, doub
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_damaged_residual: per bond 13 add, 32 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_residual: per bond 14 add, 34 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1883,8 +1885,6 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -1922,8 +1922,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
-  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p19 = 8.0 * P_mu;
+  const double p18 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -1931,6 +1930,8 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -1938,9 +1939,10 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
+    const double b19 = p18 * (Q_lambda - Q_mu);
+    const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * alpha * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * alpha * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -1951,7 +1953,7 @@ void lps_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, dou
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_tangent: per bond 13 add, 53 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_tangent: per bond 14 add, 57 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1960,8 +1962,6 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2000,11 +2000,8 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
-  const double p19 = 2.0 * (P_lambda - P_mu);
-  const double p20 = p19 * s_theta;
-  const double p21 = 8.0 * P_mu;
-  const double p22 = 8.0 * p17 * P_mu;
-  const double p23 = p19 * p17;
+  const double p19 = 2.0 * s_theta;
+  const double p20 = 8.0 * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2012,6 +2009,8 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
@@ -2019,35 +2018,38 @@ void lps_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, doub
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b24 = p11 * xi_0 + p14 * xi_1;
-    const double b25 = xi_0 * xi_0;
-    const double b26 = xi_1 * xi_1;
-    const double b27 = 1.0 / (b25 + b26);
-    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * alpha * w;
-    const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * alpha * w;
-    const double b32 = p22 * b27 * alpha * w;
-    const double b33 = b32 * xi_1 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    lane1[lane] += b29;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    lane2[lane] += b31;
-    factors.direct[k * 4 + 0] = b32 * b25;
-    factors.direct[k * 4 + 1] = b33;
-    factors.direct[k * 4 + 2] = b33;
-    factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * alpha * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * alpha * w;
+    const double b21 = Q_lambda - Q_mu;
+    const double b22 = p19 * b21;
+    const double b23 = p11 * xi_0 + p14 * xi_1;
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / (b24 + b25);
+    const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * V * alpha * w;
+    const double b29 = p15 * xi_0 + p16 * xi_1;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * V * alpha * w;
+    const double b31 = p20 * Q_mu * b26 * alpha * w;
+    const double b32 = b31 * xi_1 * xi_0;
+    const double b33 = p0 * b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b30;
+    lane2[lane] += b30;
+    factors.direct[k * 4 + 0] = b31 * b24;
+    factors.direct[k * 4 + 1] = b32;
+    factors.direct[k * 4 + 2] = b32;
+    factors.direct[k * 4 + 3] = b31 * b25;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * V * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * alpha * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_jvp: per bond 10 add, 44 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_jvp: per bond 11 add, 47 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2056,8 +2058,6 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2095,8 +2095,8 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
-  const double p18 = 8.0 * p17 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
+  const double p18 = 8.0 * p17;
+  const double p19 = 2.0 * ds_theta * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2105,30 +2105,33 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * alpha * w;
-    const double b24 = p18 * dY_1 * b22 * alpha * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    lane1[lane] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    lane2[lane] += b26;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * alpha * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * alpha * w;
+    const double b25 = p19 * (Q_lambda - Q_mu);
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * alpha * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * alpha * w) * V;
+    df[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    df[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_damaged_energy: per bond 9 add, 20 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2145,6 +2148,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -2153,7 +2157,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2192,7 +2196,7 @@ double lps_corrected_plane_strain_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -2386,7 +2390,7 @@ void lps_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, doubl
   moments[4] = s_dilatation_moment_1_1;
 }
 
-// lps_corrected_plane_strain_intact_residual: per bond 13 add, 29 mul, 1 div, 0 call; per family 13 add, 28 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_residual: per bond 14 add, 31 mul, 1 div, 0 call; per family 12 add, 26 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2395,8 +2399,6 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2433,8 +2435,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; 
   const double p17 = 1.0 / s_m * V0;
-  const double p18 = 2.0 * (P_lambda - P_mu) * s_theta;
-  const double p19 = 8.0 * P_mu;
+  const double p18 = 2.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2442,15 +2443,18 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b20 = p19 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
-    const double b21 = p17 * (p18 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
-    const double b22 = p17 * (p18 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
+    const double b19 = p18 * (Q_lambda - Q_mu);
+    const double b20 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b21 = p17 * (b19 * (p11 * xi_0 + p14 * xi_1) + b20 * xi_0) * V * w;
+    const double b22 = p17 * (b19 * (p15 * xi_0 + p16 * xi_1) + b20 * xi_1) * V * w;
     forces[(k + 1) * 2 + 0] = -b21;
     lane1[lane] += b21;
     forces[(k + 1) * 2 + 1] = -b22;
@@ -2461,7 +2465,7 @@ void lps_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, doub
   forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_tangent: per bond 13 add, 45 mul, 1 div, 0 call; per family 13 add, 31 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_tangent: per bond 14 add, 49 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2470,8 +2474,6 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2509,11 +2511,8 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
   const double p17 = 1.0 / s_m;
   const double p18 = p17 * V0;
-  const double p19 = 2.0 * (P_lambda - P_mu);
-  const double p20 = p19 * s_theta;
-  const double p21 = 8.0 * P_mu;
-  const double p22 = 8.0 * p17 * P_mu;
-  const double p23 = p19 * p17;
+  const double p19 = 2.0 * s_theta;
+  const double p20 = 8.0 * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2521,41 +2520,46 @@ void lps_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, doubl
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double Y_0 = fam.Y[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b24 = p11 * xi_0 + p14 * xi_1;
-    const double b25 = xi_0 * xi_0;
-    const double b26 = xi_1 * xi_1;
-    const double b27 = 1.0 / (b25 + b26);
-    const double b28 = p21 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b27;
-    const double b29 = p18 * (p20 * b24 + b28 * xi_0) * V * w;
-    const double b30 = p15 * xi_0 + p16 * xi_1;
-    const double b31 = p18 * (p20 * b30 + b28 * xi_1) * V * w;
-    const double b32 = p22 * b27 * w;
-    const double b33 = b32 * xi_1 * xi_0;
-    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b29;
-    lane1[lane] += b29;
-    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b31;
-    lane2[lane] += b31;
-    factors.direct[k * 4 + 0] = b32 * b25;
-    factors.direct[k * 4 + 1] = b33;
-    factors.direct[k * 4 + 2] = b33;
-    factors.direct[k * 4 + 3] = b32 * b26;
-    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b24 * V * w;
-    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b30 * V * w;
-    factors.left[(k * 1 + 0) * 2 + 0] = p23 * b24 * w;
-    factors.left[(k * 1 + 0) * 2 + 1] = p23 * b30 * w;
+    const double b21 = Q_lambda - Q_mu;
+    const double b22 = p19 * b21;
+    const double b23 = p11 * xi_0 + p14 * xi_1;
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / (b24 + b25);
+    const double b27 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b26;
+    const double b28 = p18 * (b22 * b23 + b27 * xi_0) * V * w;
+    const double b29 = p15 * xi_0 + p16 * xi_1;
+    const double b30 = p18 * (b22 * b29 + b27 * xi_1) * V * w;
+    const double b31 = p20 * Q_mu * b26 * w;
+    const double b32 = b31 * xi_1 * xi_0;
+    const double b33 = p0 * b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b30;
+    lane2[lane] += b30;
+    factors.direct[k * 4 + 0] = b31 * b24;
+    factors.direct[k * 4 + 1] = b32;
+    factors.direct[k * 4 + 2] = b32;
+    factors.direct[k * 4 + 3] = b31 * b25;
+    factors.right[(k * 1 + 0) * 2 + 0] = p0 * b23 * V * w;
+    factors.right[(k * 1 + 0) * 2 + 1] = p0 * b29 * V * w;
+    factors.left[(k * 1 + 0) * 2 + 0] = b33 * b23 * w;
+    factors.left[(k * 1 + 0) * 2 + 1] = b33 * b29 * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_jvp: per bond 10 add, 38 mul, 1 div, 0 call; per family 13 add, 29 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_jvp: per bond 11 add, 41 mul, 1 div, 0 call; per family 12 add, 27 mul, 3 div, 0 call
 void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2564,8 +2568,6 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   const double s_dilatation_moment_1_0 = fam.moments[3];
   const double s_dilatation_moment_0_1 = fam.moments[2];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
@@ -2602,8 +2604,8 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; 
   const double p17 = 1.0 / s_m;
-  const double p18 = 8.0 * p17 * P_mu;
-  const double p19 = 2.0 * ds_theta * (P_lambda - P_mu) * p17;
+  const double p18 = 8.0 * p17;
+  const double p19 = 2.0 * ds_theta * p17;
   double lane1[4] = {};
   double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
@@ -2612,29 +2614,32 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 2 + 0];
     const double xi_1 = fam.xi[k * 2 + 1];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b20 = xi_0 * xi_0;
     const double b21 = xi_1 * xi_1;
     const double b22 = 1.0 / (b20 + b21);
-    const double b23 = p18 * dY_0 * b22 * w;
-    const double b24 = p18 * dY_1 * b22 * w;
-    const double b25 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + p19 * (p11 * xi_0 + p14 * xi_1) * w) * V;
-    const double b26 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + p19 * (p15 * xi_0 + p16 * xi_1) * w) * V;
-    df[(k + 1) * 2 + 0] = -b25;
-    lane1[lane] += b25;
-    df[(k + 1) * 2 + 1] = -b26;
-    lane2[lane] += b26;
+    const double b23 = p18 * dY_0 * Q_mu * b22 * w;
+    const double b24 = p18 * dY_1 * Q_mu * b22 * w;
+    const double b25 = p19 * (Q_lambda - Q_mu);
+    const double b26 = V0 * (b23 * b20 + b24 * xi_1 * xi_0 + b25 * (p11 * xi_0 + p14 * xi_1) * w) * V;
+    const double b27 = V0 * (b23 * xi_1 * xi_0 + b24 * b21 + b25 * (p15 * xi_0 + p16 * xi_1) * w) * V;
+    df[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    df[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
-// lps_corrected_plane_strain_intact_energy: per bond 9 add, 17 mul, 1 div, 0 call; per family 14 add, 30 mul, 3 div, 0 call
+// lps_corrected_plane_strain_intact_energy: per bond 9 add, 18 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2651,6 +2656,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 2 + 0];
     const double xi_0 = fam.xi[k * 2 + 0];
     const double Y_1 = fam.Y[k * 2 + 1];
@@ -2658,7 +2664,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -2696,7 +2702,7 @@ double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 4.0 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -2847,26 +2853,27 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 5;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_plane_strain_damaged_moments;
   d.damaged.residual = &lps_corrected_plane_strain_damaged_residual;
-  d.damaged.residual_ops = {13, 32, 1, 0};
+  d.damaged.residual_ops = {14, 34, 1, 0};
   d.damaged.tangent = &lps_corrected_plane_strain_damaged_tangent;
-  d.damaged.tangent_ops = {13, 53, 1, 0};
+  d.damaged.tangent_ops = {14, 57, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
-  d.damaged.jvp_ops = {10, 44, 1, 0};
+  d.damaged.jvp_ops = {11, 47, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_corrected_plane_strain_intact_moments;
   d.intact.residual = &lps_corrected_plane_strain_intact_residual;
-  d.intact.residual_ops = {13, 29, 1, 0};
+  d.intact.residual_ops = {14, 31, 1, 0};
   d.intact.tangent = &lps_corrected_plane_strain_intact_tangent;
-  d.intact.tangent_ops = {13, 45, 1, 0};
+  d.intact.tangent_ops = {14, 49, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
-  d.intact.jvp_ops = {10, 38, 1, 0};
+  d.intact.jvp_ops = {11, 41, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_corrected_plane_strain_intact_form;
@@ -2960,7 +2967,7 @@ void lps_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moment
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_damaged_residual: per bond 27 add, 51 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_residual: per bond 28 add, 53 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2974,8 +2981,6 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3036,8 +3041,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
-  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p40 = 15.0 * P_mu;
+  const double p39 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3046,6 +3050,8 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3055,10 +3061,11 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * alpha * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
+    const double b40 = p39 * (Q_lambda - Q_mu);
+    const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * alpha * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * alpha * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * alpha * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3072,7 +3079,7 @@ void lps_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* force
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_tangent: per bond 27 add, 83 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_tangent: per bond 28 add, 87 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3086,8 +3093,6 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3149,11 +3154,8 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
-  const double p40 = 3.0 * (P_lambda - P_mu);
-  const double p41 = p40 * s_theta;
-  const double p42 = 15.0 * P_mu;
-  const double p43 = 15.0 * p38 * P_mu;
-  const double p44 = p40 * p38;
+  const double p40 = 3.0 * s_theta;
+  const double p41 = 15.0 * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3162,6 +3164,8 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3171,43 +3175,46 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
     const double V = fam.V[k];
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
-    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
-    const double b46 = xi_0 * xi_0;
-    const double b47 = xi_1 * xi_1;
-    const double b48 = xi_2 * xi_2;
-    const double b49 = 1.0 / (b46 + b47 + b48);
-    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * alpha * w;
-    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * alpha * w;
-    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * alpha * w;
-    const double b56 = p43 * b49 * alpha * w;
-    const double b57 = b56 * xi_1 * xi_0;
-    const double b58 = b56 * xi_2;
-    const double b59 = b58 * xi_0;
-    const double b60 = b58 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    lane1[lane] += b51;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    lane2[lane] += b53;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    lane3[lane] += b55;
-    factors.direct[k * 9 + 0] = b56 * b46;
-    factors.direct[k * 9 + 1] = b57;
-    factors.direct[k * 9 + 2] = b59;
-    factors.direct[k * 9 + 3] = b57;
-    factors.direct[k * 9 + 4] = b56 * b47;
-    factors.direct[k * 9 + 5] = b60;
-    factors.direct[k * 9 + 6] = b59;
-    factors.direct[k * 9 + 7] = b60;
-    factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * alpha * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * alpha * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * alpha * w;
+    const double b42 = Q_lambda - Q_mu;
+    const double b43 = p40 * b42;
+    const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b45 = xi_0 * xi_0;
+    const double b46 = xi_1 * xi_1;
+    const double b47 = xi_2 * xi_2;
+    const double b48 = 1.0 / (b45 + b46 + b47);
+    const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * V * alpha * w;
+    const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * V * alpha * w;
+    const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * V * alpha * w;
+    const double b55 = p41 * Q_mu * b48 * alpha * w;
+    const double b56 = b55 * xi_1 * xi_0;
+    const double b57 = b55 * xi_2;
+    const double b58 = b57 * xi_0;
+    const double b59 = b57 * xi_1;
+    const double b60 = p0 * b42;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b52;
+    lane2[lane] += b52;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b54;
+    lane3[lane] += b54;
+    factors.direct[k * 9 + 0] = b55 * b45;
+    factors.direct[k * 9 + 1] = b56;
+    factors.direct[k * 9 + 2] = b58;
+    factors.direct[k * 9 + 3] = b56;
+    factors.direct[k * 9 + 4] = b55 * b46;
+    factors.direct[k * 9 + 5] = b59;
+    factors.direct[k * 9 + 6] = b58;
+    factors.direct[k * 9 + 7] = b59;
+    factors.direct[k * 9 + 8] = b55 * b47;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * V * alpha * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * V * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * alpha * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * alpha * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3215,7 +3222,7 @@ void lps_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_jvp: per bond 25 add, 77 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_jvp: per bond 26 add, 81 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3229,8 +3236,6 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3291,8 +3296,8 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
-  const double p39 = 15.0 * p38 * P_mu;
-  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  const double p39 = 15.0 * p38;
+  const double p40 = 3.0 * ds_theta * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3302,6 +3307,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3309,24 +3315,26 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b41 = xi_0 * xi_0;
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * alpha * w;
-    const double b46 = p39 * dY_1 * b44 * alpha * w;
-    const double b47 = p39 * dY_2 * b44 * alpha * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * alpha * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * alpha * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * alpha * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * alpha * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
-    df[(k + 1) * 3 + 0] = -b49;
-    lane1[lane] += b49;
-    df[(k + 1) * 3 + 1] = -b50;
-    lane2[lane] += b50;
-    df[(k + 1) * 3 + 2] = -b51;
-    lane3[lane] += b51;
+    const double b49 = p40 * (Q_lambda - Q_mu);
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * alpha * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * alpha * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * alpha * w) * V;
+    df[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    df[(k + 1) * 3 + 1] = -b51;
+    lane2[lane] += b51;
+    df[(k + 1) * 3 + 2] = -b52;
+    lane3[lane] += b52;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3334,7 +3342,7 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_damaged_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_damaged_energy: per bond 18 add, 28 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3356,6 +3364,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -3366,7 +3375,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * alpha * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -3428,7 +3437,7 @@ double lps_corrected_3d_damaged_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -3748,7 +3757,7 @@ void lps_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments
   moments[9] = s_dilatation_moment_2_2;
 }
 
-// lps_corrected_3d_intact_residual: per bond 27 add, 47 mul, 1 div, 0 call; per family 54 add, 88 mul, 3 div, 0 call
+// lps_corrected_3d_intact_residual: per bond 28 add, 49 mul, 1 div, 0 call; per family 53 add, 86 mul, 3 div, 0 call
 void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3762,8 +3771,6 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3823,8 +3830,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
   const double p38 = 1.0 / s_m * V0;
-  const double p39 = 3.0 * (P_lambda - P_mu) * s_theta;
-  const double p40 = 15.0 * P_mu;
+  const double p39 = 3.0 * s_theta;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3833,6 +3839,8 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3841,10 +3849,11 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b41 = p40 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
-    const double b42 = p38 * (p39 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * w;
-    const double b43 = p38 * (p39 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
-    const double b44 = p38 * (p39 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
+    const double b40 = p39 * (Q_lambda - Q_mu);
+    const double b41 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b42 = p38 * (b40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) + b41 * xi_0) * V * w;
+    const double b43 = p38 * (b40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) + b41 * xi_1) * V * w;
+    const double b44 = p38 * (b40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) + b41 * xi_2) * V * w;
     forces[(k + 1) * 3 + 0] = -b42;
     lane1[lane] += b42;
     forces[(k + 1) * 3 + 1] = -b43;
@@ -3858,7 +3867,7 @@ void lps_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces
   forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_tangent: per bond 27 add, 72 mul, 1 div, 0 call; per family 54 add, 91 mul, 3 div, 0 call
+// lps_corrected_3d_intact_tangent: per bond 28 add, 76 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -3872,8 +3881,6 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_lambda = fam.params[0];
-  const double P_mu = fam.params[1];
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -3934,11 +3941,8 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
   const double p38 = 1.0 / s_m;
   const double p39 = p38 * V0;
-  const double p40 = 3.0 * (P_lambda - P_mu);
-  const double p41 = p40 * s_theta;
-  const double p42 = 15.0 * P_mu;
-  const double p43 = 15.0 * p38 * P_mu;
-  const double p44 = p40 * p38;
+  const double p40 = 3.0 * s_theta;
+  const double p41 = 15.0 * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -3947,6 +3951,8 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
@@ -3955,43 +3961,46 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
     const double Y_2 = fam.Y[k * 3 + 2];
     const double V = fam.V[k];
     const double w = fam.w[k];
-    const double b45 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
-    const double b46 = xi_0 * xi_0;
-    const double b47 = xi_1 * xi_1;
-    const double b48 = xi_2 * xi_2;
-    const double b49 = 1.0 / (b46 + b47 + b48);
-    const double b50 = p42 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b49;
-    const double b51 = p39 * (p41 * b45 + b50 * xi_0) * V * w;
-    const double b52 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
-    const double b53 = p39 * (p41 * b52 + b50 * xi_1) * V * w;
-    const double b54 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
-    const double b55 = p39 * (p41 * b54 + b50 * xi_2) * V * w;
-    const double b56 = p43 * b49 * w;
-    const double b57 = b56 * xi_1 * xi_0;
-    const double b58 = b56 * xi_2;
-    const double b59 = b58 * xi_0;
-    const double b60 = b58 * xi_1;
-    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b51;
-    lane1[lane] += b51;
-    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b53;
-    lane2[lane] += b53;
-    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b55;
-    lane3[lane] += b55;
-    factors.direct[k * 9 + 0] = b56 * b46;
-    factors.direct[k * 9 + 1] = b57;
-    factors.direct[k * 9 + 2] = b59;
-    factors.direct[k * 9 + 3] = b57;
-    factors.direct[k * 9 + 4] = b56 * b47;
-    factors.direct[k * 9 + 5] = b60;
-    factors.direct[k * 9 + 6] = b59;
-    factors.direct[k * 9 + 7] = b60;
-    factors.direct[k * 9 + 8] = b56 * b48;
-    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b45 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b52 * V * w;
-    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b54 * V * w;
-    factors.left[(k * 1 + 0) * 3 + 0] = p44 * b45 * w;
-    factors.left[(k * 1 + 0) * 3 + 1] = p44 * b52 * w;
-    factors.left[(k * 1 + 0) * 3 + 2] = p44 * b54 * w;
+    const double b42 = Q_lambda - Q_mu;
+    const double b43 = p40 * b42;
+    const double b44 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b45 = xi_0 * xi_0;
+    const double b46 = xi_1 * xi_1;
+    const double b47 = xi_2 * xi_2;
+    const double b48 = 1.0 / (b45 + b46 + b47);
+    const double b49 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b48;
+    const double b50 = p39 * (b43 * b44 + b49 * xi_0) * V * w;
+    const double b51 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b52 = p39 * (b43 * b51 + b49 * xi_1) * V * w;
+    const double b53 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b54 = p39 * (b43 * b53 + b49 * xi_2) * V * w;
+    const double b55 = p41 * Q_mu * b48 * w;
+    const double b56 = b55 * xi_1 * xi_0;
+    const double b57 = b55 * xi_2;
+    const double b58 = b57 * xi_0;
+    const double b59 = b57 * xi_1;
+    const double b60 = p0 * b42;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b52;
+    lane2[lane] += b52;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b54;
+    lane3[lane] += b54;
+    factors.direct[k * 9 + 0] = b55 * b45;
+    factors.direct[k * 9 + 1] = b56;
+    factors.direct[k * 9 + 2] = b58;
+    factors.direct[k * 9 + 3] = b56;
+    factors.direct[k * 9 + 4] = b55 * b46;
+    factors.direct[k * 9 + 5] = b59;
+    factors.direct[k * 9 + 6] = b58;
+    factors.direct[k * 9 + 7] = b59;
+    factors.direct[k * 9 + 8] = b55 * b47;
+    factors.right[(k * 1 + 0) * 3 + 0] = p0 * b44 * V * w;
+    factors.right[(k * 1 + 0) * 3 + 1] = p0 * b51 * V * w;
+    factors.right[(k * 1 + 0) * 3 + 2] = p0 * b53 * V * w;
+    factors.left[(k * 1 + 0) * 3 + 0] = b60 * b44 * w;
+    factors.left[(k * 1 + 0) * 3 + 1] = b60 * b51 * w;
+    factors.left[(k * 1 + 0) * 3 + 2] = b60 * b53 * w;
     }
   }
   if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -3999,7 +4008,7 @@ void lps_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces,
   if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_jvp: per bond 25 add, 68 mul, 1 div, 0 call; per family 54 add, 89 mul, 3 div, 0 call
+// lps_corrected_3d_intact_jvp: per bond 26 add, 72 mul, 1 div, 0 call; per family 53 add, 87 mul, 3 div, 0 call
 void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4013,8 +4022,6 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   const double s_dilatation_moment_1_2 = fam.moments[6];
   const double s_dilatation_moment_0_2 = fam.moments[3];
   const double V0 = fam.V0;
-  const double P_mu = fam.params[1];
-  const double P_lambda = fam.params[0];
   double ds_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
   const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
@@ -4074,8 +4081,8 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
   const double p38 = 1.0 / s_m;
-  const double p39 = 15.0 * p38 * P_mu;
-  const double p40 = 3.0 * ds_theta * (P_lambda - P_mu) * p38;
+  const double p39 = 15.0 * p38;
+  const double p40 = 3.0 * ds_theta * p38;
   double lane1[4] = {};
   double lane2[4] = {};
   double lane3[4] = {};
@@ -4085,30 +4092,33 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
     const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double xi_0 = fam.xi[k * 3 + 0];
     const double xi_1 = fam.xi[k * 3 + 1];
     const double xi_2 = fam.xi[k * 3 + 2];
     const double w = fam.w[k];
     const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
     const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
     const double V = fam.V[k];
     const double b41 = xi_0 * xi_0;
     const double b42 = xi_1 * xi_1;
     const double b43 = xi_2 * xi_2;
     const double b44 = 1.0 / (b41 + b42 + b43);
-    const double b45 = p39 * dY_0 * b44 * w;
-    const double b46 = p39 * dY_1 * b44 * w;
-    const double b47 = p39 * dY_2 * b44 * w;
+    const double b45 = p39 * dY_0 * Q_mu * b44 * w;
+    const double b46 = p39 * dY_1 * Q_mu * b44 * w;
+    const double b47 = p39 * dY_2 * Q_mu * b44 * w;
     const double b48 = b47 * xi_2;
-    const double b49 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + p40 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * w) * V;
-    const double b50 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + p40 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
-    const double b51 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + p40 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
-    df[(k + 1) * 3 + 0] = -b49;
-    lane1[lane] += b49;
-    df[(k + 1) * 3 + 1] = -b50;
-    lane2[lane] += b50;
-    df[(k + 1) * 3 + 2] = -b51;
-    lane3[lane] += b51;
+    const double b49 = p40 * (Q_lambda - Q_mu);
+    const double b50 = V0 * (b45 * b41 + b46 * xi_1 * xi_0 + b48 * xi_0 + b49 * (p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * w) * V;
+    const double b51 = V0 * (b45 * xi_1 * xi_0 + b46 * b42 + b48 * xi_1 + b49 * (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * w) * V;
+    const double b52 = V0 * (b45 * xi_2 * xi_0 + b46 * xi_2 * xi_1 + b47 * b43 + b49 * (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * w) * V;
+    df[(k + 1) * 3 + 0] = -b50;
+    lane1[lane] += b50;
+    df[(k + 1) * 3 + 1] = -b51;
+    lane2[lane] += b51;
+    df[(k + 1) * 3 + 2] = -b52;
+    lane3[lane] += b52;
     }
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
@@ -4116,7 +4126,7 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// lps_corrected_3d_intact_energy: per bond 18 add, 25 mul, 1 div, 0 call; per family 55 add, 90 mul, 3 div, 0 call
+// lps_corrected_3d_intact_energy: per bond 18 add, 26 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -4138,6 +4148,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
 #pragma omp simd
     for (int lane = 0; lane < n_lanes; ++lane) {
       const int k = k_group + lane;
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
     const double Y_0 = fam.Y[k * 3 + 0];
     const double xi_0 = fam.xi[k * 3 + 0];
     const double Y_1 = fam.Y[k * 3 + 1];
@@ -4147,7 +4158,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b0 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
-    lane0[lane] += b0 * b0 * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
+    lane0[lane] += Q_mu * (b0 * b0) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2)) * V * w;
     }
   }
   s_bond_energy += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
@@ -4208,7 +4219,7 @@ double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
     }
   }
   s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
-  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m) * P_mu;
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 7.5 * s_bond_energy * (1.0 / s_m);
   return W;
 }
 
@@ -4455,26 +4466,27 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 1;
   d.output_names = outputs;
+  d.uses_pair_params = true;
   d.scratch_per_bond = 0;
   d.n_moments = 10;
   d.n_states = 1;
   d.damaged.moments = &lps_corrected_3d_damaged_moments;
   d.damaged.residual = &lps_corrected_3d_damaged_residual;
-  d.damaged.residual_ops = {27, 51, 1, 0};
+  d.damaged.residual_ops = {28, 53, 1, 0};
   d.damaged.tangent = &lps_corrected_3d_damaged_tangent;
-  d.damaged.tangent_ops = {27, 83, 1, 0};
+  d.damaged.tangent_ops = {28, 87, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
-  d.damaged.jvp_ops = {25, 77, 1, 0};
+  d.damaged.jvp_ops = {26, 81, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_corrected_3d_damaged_form;
   d.intact.moments = &lps_corrected_3d_intact_moments;
   d.intact.residual = &lps_corrected_3d_intact_residual;
-  d.intact.residual_ops = {27, 47, 1, 0};
+  d.intact.residual_ops = {28, 49, 1, 0};
   d.intact.tangent = &lps_corrected_3d_intact_tangent;
-  d.intact.tangent_ops = {27, 72, 1, 0};
+  d.intact.tangent_ops = {28, 76, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
-  d.intact.jvp_ops = {25, 68, 1, 0};
+  d.intact.jvp_ops = {26, 72, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;

@@ -8,9 +8,14 @@
 // with C_a = 2, C_b = 16 in 2D and C_a = 3, C_b = 30 in 3D (paper 001); w plays the
 // role of the paper's kernel K(r) (the paper uses K = 1/r: influence "inv" with delta=1
 // scaled). Energy: W = C_a (lambda - mu)/(2d) theta^2 + (C_b mu / (4m)) sum w a (n . eta)^2 V.
-// Heterogeneous materials: the paper averages lambda, mu over each pair (harmonic mean,
-// eq. 2.4); the kernel ABI gives a family its center's parameters only, so here the
-// center's values are used (identical for a homogeneous body).
+// Heterogeneous materials: lambda and mu in the force are the bond's pair values, the
+// harmonic mean of eq. 2.4 (Law::pair_param), so the two families of a pair give
+// (lambda_ij - mu_ij)(theta_i + theta_j) and C_b mu_ij as eq. (2.13) has them. That force
+// has no potential when the pair values differ within a family (a bond's coefficient
+// multiplies its own family's theta only, so the tangent is not symmetric there): the
+// energy below keeps the center's lambda - mu in the dilatation term and is the
+// potential only where the family's material is uniform (the shear term, bond by bond,
+// uses mu_ij and stays exact).
 //
 // Corrected dilatation (eqs. 3.2-3.5): theta = (d/m) sum w a xi . M^+ eta V with
 // M = (d/m) sum w a xi (x) xi V (M = I for a full interior family), exact for linear
@@ -41,9 +46,10 @@ Law lps(const std::string& name, int dim, bool corrected, const std::string& sum
   }
   const Expr theta = law.sum("theta", Expr(dim) / m * wa * dot(g, eta) * law.V());
   const Expr stretch = dot(law.xi(), eta) / (r * r);  // (n . eta) / |xi|
-  law.force(wa / m * (Ca * (lambda - mu) * theta * g + Cb / 2 * mu * stretch * law.xi()));
-  const Expr shear = law.sum("bond_energy", wa * pow(dot(law.xi(), eta), 2) / (r * r) * law.V());
-  law.energy(Ca * (lambda - mu) / (2 * dim) * theta * theta + Cb * mu / (4 * m) * shear);
+  const Expr lambda_ij = law.pair_param("lambda", PairMean::harmonic), mu_ij = law.pair_param("mu", PairMean::harmonic);
+  law.force(wa / m * (Ca * (lambda_ij - mu_ij) * theta * g + Cb / 2 * mu_ij * stretch * law.xi()));
+  const Expr shear = law.sum("bond_energy", mu_ij * wa * pow(dot(law.xi(), eta), 2) / (r * r) * law.V());
+  law.energy(Ca * (lambda - mu) / (2 * dim) * theta * theta + Cb / (4 * m) * shear);
   law.output("dilatation", theta);
   return law;
 }

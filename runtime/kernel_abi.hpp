@@ -30,6 +30,10 @@ struct Family {
   double V0 = 0.0;                 // center volume
   double delta = 0.0;              // horizon of the center particle
   const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
+  // [L*n_params] the neighbours' material parameters, bond-major (bond k's at [k*n_params]),
+  // read by a law with pair parameters (LawDescriptor::uses_pair_params). Null: every
+  // neighbour has the center's (a body of one material); always valid.
+  const double* nbr_params = nullptr;
   const double* moments = nullptr; // [n_moments] output of the moments kernel (setup)
   // [L * LawDescriptor::scratch_per_bond] working memory the kernels may overwrite (per-bond
   // values one loop computes and a later loop reads); the caller owns it, one per thread.
@@ -102,6 +106,10 @@ struct LawDescriptor {
   int scratch_per_bond = 0;  // doubles per bond of Family::scratch any kernel of the law uses
   // The law claims sum_k Y_k x t_k = 0 (angular momentum balance) for every deformation.
   bool balances_angular_momentum = false;
+  // Some bond quantity is a pair mean of a material parameter (Family::nbr_params). With
+  // parameters that differ across a family the tangent is in general not symmetric
+  // (a bond's coefficient multiplies a state of one of its two families only).
+  bool uses_pair_params = false;
   // The Poisson ratio the law has whatever its parameters (bond-based: 1/4), in its 3D
   // or plane-strain form; false: any ratio the material gives.
   bool has_fixed_poisson_ratio = false;
@@ -109,6 +117,11 @@ struct LawDescriptor {
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };
+
+// The pair means a law's pair parameters use (paper 001 eq. 2.4 and the arithmetic one).
+// Equal values give that value exactly, so a body of one material is unchanged to the bit.
+inline double harmonic_mean(double a, double b) { return a == b ? a : 2.0 * a * b / (a + b); }
+inline double arithmetic_mean(double a, double b) { return a == b ? a : 0.5 * (a + b); }
 
 // Influence function w(r, delta), generated from laws/influence.cpp.
 struct InfluenceDescriptor {

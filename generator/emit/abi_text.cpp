@@ -36,6 +36,10 @@ std::string bond_vector(const std::string& field, int dim, int c) { return "fam.
 std::string bond_scalar(const std::string& field) { return "fam." + field + "[k]"; }
 std::string family_scalar(const std::string& field) { return "fam." + field; }
 std::string param(int i) { return "fam.params[" + str(i) + "]"; }
+std::string pair_param(int i, int n_params, const std::string& mean) {
+  return "(fam.nbr_params != nullptr ? pd::abi::" + mean + "(" + param(i) + ", fam.nbr_params[k * " + str(n_params) + " + " + str(i) +
+         "]) : " + param(i) + ")";
+}
 std::string moment_input(int i) { return "fam.moments[" + str(i) + "]"; }
 std::string bond_count() { return "fam.n_bonds"; }
 std::string scratch() { return "fam.scratch"; }

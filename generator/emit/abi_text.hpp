@@ -22,6 +22,9 @@ std::string bond_vector(const std::string& field, int dim, int c);
 std::string bond_scalar(const std::string& field);
 std::string family_scalar(const std::string& field);
 std::string param(int i);
+// Bond k's pair value of parameter i of n: `mean` (a function of kernel_abi.hpp) of the
+// center's and the neighbour's value, or the center's when fam.nbr_params is null.
+std::string pair_param(int i, int n_params, const std::string& mean);
 std::string moment_input(int i);
 std::string bond_count();  // L
 std::string scratch();     // the per-bond cache's storage

@@ -48,6 +48,7 @@ std::string descriptor_head(const Law& law) {
   desc << "  d.param_test_values = test_values;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
+  if (!law.pair_params().empty()) desc << "  d.uses_pair_params = true;\n";
   if (law.has_fixed_poisson_ratio())
     desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";
   return desc.str();

@@ -85,6 +85,11 @@ class Builder {
     b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
       b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)), false};
+    for (const PairParamDef& q : law_.pair_params())
+      b[symbol_index(q.symbol)] = {"Q_" + law_.param_names()[static_cast<std::size_t>(q.param)],
+                                   abi_text::pair_param(q.param, static_cast<int>(law_.params().size()),
+                                                        q.mean == PairMean::harmonic ? "harmonic_mean" : "arithmetic_mean"),
+                                   true};
     for (std::size_t i = 0; i < moments_.size(); ++i)
       b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
     for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};

@@ -62,6 +62,18 @@ Expr Law::param(const std::string& name, double test_value) {
   return p;
 }
 
+Expr Law::pair_param(const std::string& name, PairMean mean) {
+  param(name);
+  const auto index = static_cast<int>(std::find(param_names_.begin(), param_names_.end(), name) - param_names_.begin());
+  for (const PairParamDef& d : pair_params_) {
+    if (d.param != index) continue;
+    if (d.mean != mean) throw std::invalid_argument("law " + name_ + ": pair parameter '" + name + "' declared with two different means");
+    return d.symbol;
+  }
+  pair_params_.push_back({symbol("pair_" + name, SymbolKind::BondInput), index, mean});
+  return pair_params_.back().symbol;
+}
+
 void Law::fixed_poisson_ratio(double nu) {
   if (!(nu > -1.0 && nu < 0.5)) throw std::invalid_argument("law " + name_ + ": a Poisson ratio lies in (-1, 0.5)");
   has_fixed_poisson_ratio_ = true;

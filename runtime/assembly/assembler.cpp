@@ -59,6 +59,9 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
     if (static_cast<int>(p.size()) != law.n_params)
       throw std::invalid_argument(std::string("assembler: law ") + law.name + " takes " + std::to_string(law.n_params) +
                                   " parameters, got " + std::to_string(p.size()));
+  if (law.uses_pair_params)
+    for (int m : particles.material)
+      pair_jump_ = pair_jump_ || params[static_cast<std::size_t>(m)] != params[static_cast<std::size_t>(particles.material[0])];
   inputs_.particles = &particles;
   inputs_.bonds = &bonds;
   inputs_.params = std::move(params);

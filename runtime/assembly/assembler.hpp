@@ -69,9 +69,12 @@ class FamilyAssembler {
   void stiffness_diagonal(const double* u, double* diag) const;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
-  bool has_energy() const { return variant_.energy != nullptr && options_.collocation == nullptr; }
-  // False under collocation assembly: the solver needs UMFPACK or GMRES then.
-  bool symmetric() const { return options_.collocation == nullptr; }
+  // Also false for a law with pair parameters (LawDescriptor::uses_pair_params) on a body
+  // whose particles carry different parameters: its forces have no potential there.
+  bool has_energy() const { return variant_.energy != nullptr && options_.collocation == nullptr && !pair_jump_; }
+  // False under collocation assembly and for pair parameters across a material jump:
+  // the solver needs UMFPACK or GMRES then.
+  bool symmetric() const { return options_.collocation == nullptr && !pair_jump_; }
   double strain_energy(const double* u) const;
   // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
   std::vector<double> particle_outputs(const double* u) const;
@@ -96,6 +99,7 @@ class FamilyAssembler {
   const abi::LawDescriptor& law_;
   const abi::KernelVariant& variant_;
   AssemblerOptions options_;
+  bool pair_jump_ = false;  // the law uses pair parameters and the particles' parameters differ
   FamilyInputs inputs_;
   FamilyColouring colouring_;
   std::unique_ptr<SparsityPattern> pattern_;

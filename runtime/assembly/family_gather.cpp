@@ -56,6 +56,8 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   f.V0 = P.volume[p];
   f.delta = B.delta[p];
   f.params = in_->params[static_cast<std::size_t>(P.material[p])].data();
+  f.nbr_params = neighbour_params(
+      in_->params, P.material[p], L, [&](int k) { return P.material[B.neighbor[b0 + k]]; }, nbr_params_);
   f.moments = in_->n_moments > 0 && !in_->moments.empty()
                   ? in_->moments.data() + static_cast<std::ptrdiff_t>(p) * in_->n_moments
                   : nullptr;

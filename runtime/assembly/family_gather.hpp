@@ -1,6 +1,8 @@
 // Fills the kernel ABI's per-family inputs from the global particle and bond arrays.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -51,8 +53,28 @@ class FamilyGather {
  private:
   const FamilyInputs* in_;
   int max_bonds_;
-  std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_, scratch_;
+  std::vector<double> Y_, V_, local_in_, local_out_, local_matrix_, scratch_, nbr_params_;
 };
+
+// Family::nbr_params of a family whose center has material `center` and whose bond k
+// reaches a particle of material material_of(k): null when every neighbour has the
+// center's material (the kernels then take the center's values, the same numbers), else
+// `buffer` filled bond-major with each neighbour's parameter vector.
+template <class MaterialOf>
+const double* neighbour_params(const std::vector<std::vector<double>>& params, int center, int n_bonds, MaterialOf material_of,
+                               std::vector<double>& buffer) {
+  if (params.size() < 2) return nullptr;
+  int k = 0;
+  while (k < n_bonds && material_of(k) == center) ++k;
+  if (k == n_bonds) return nullptr;
+  const std::size_t n = params[static_cast<std::size_t>(center)].size();
+  buffer.resize(static_cast<std::size_t>(n_bonds) * n);
+  for (k = 0; k < n_bonds; ++k) {
+    const std::vector<double>& q = params[static_cast<std::size_t>(material_of(k))];
+    std::copy(q.begin(), q.end(), buffer.begin() + static_cast<std::ptrdiff_t>(k * n));
+  }
+  return buffer.data();
+}
 
 // False when every bond of the family is broken (alpha = 0 for all; also for a family
 // with no bonds). Such a family carries no force and no stiffness, since every law weights

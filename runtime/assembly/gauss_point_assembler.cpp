@@ -92,6 +92,9 @@ class GaussPointAssembler::Gather {
     f.V0 = P.volume[p];
     f.delta = delta;
     f.params = a_.params_[static_cast<std::size_t>(P.material[p])].data();
+    // A Gauss point has the material of the particle whose cell holds it.
+    f.nbr_params = neighbour_params(
+        a_.params_, P.material[p], L, [&](int k) { return P.material[gp.cell[gp.point[b0 + k]]]; }, nbr_params_);
     f.moments = a_.law_.n_moments > 0 && !a_.moments_.empty()
                     ? a_.moments_.data() + static_cast<std::ptrdiff_t>(p) * a_.law_.n_moments
                     : nullptr;
@@ -214,7 +217,7 @@ class GaussPointAssembler::Gather {
 
  private:
   const GaussPointAssembler& a_;
-  std::vector<double> xi_, Y_, w_, alpha_, V_, scratch_, local_, local2_, KN_, ab_, row_phi_;
+  std::vector<double> xi_, Y_, w_, alpha_, V_, scratch_, local_, local2_, KN_, ab_, row_phi_, nbr_params_;
   std::vector<int> row_node_;
   TangentScratch tangent_;
   abi::TangentFactors factors_;

@@ -43,14 +43,23 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
     // sigma_rr at r = a gives A = B (lambda_m + 2 mu_m) / (lambda_i + mu_i + mu_m) and
     // C = (A - B) a^2 (sigma_rr = 2 (lambda + mu) u_r' ... with u = A r: 2 (lambda + mu) A;
     // with C / r: -2 mu C / r^2).
+    // Or, with `inclusion_stress` P instead of `traction`, paper 001's form (eqs. 4.8-4.10,
+    // fields/manufactured.hpp): P is the stress inside the inclusion.
     T_ = param(spec, "traction", NAN);
+    const double P = param(spec, "inclusion_stress", NAN);
     a_ = param(spec, "radius", NAN);
     const IsotropicElastic mi = IsotropicElastic::from_E_nu(param(spec, "E_inclusion", NAN), param(spec, "nu_inclusion", NAN));
     const IsotropicElastic mm = IsotropicElastic::from_E_nu(E_, nu_);
-    if (!std::isfinite(T_) || !(a_ > 0)) throw std::invalid_argument("inclusion field needs traction and a positive radius");
-    outer_ = T_ / (2 * (mm.lambda + mm.G));
-    inner_ = outer_ * (mm.lambda + 2 * mm.G) / (mi.lambda + mi.G + mm.G);
-    hole_ = (inner_ - outer_) * a_ * a_;
+    if (std::isfinite(T_) == std::isfinite(P) || !(a_ > 0))
+      throw std::invalid_argument("inclusion field needs a positive radius and one of traction (remote) or inclusion_stress");
+    if (std::isfinite(P)) {
+      const InclusionCoefficients k = paper001_inclusion_coefficients(P, a_, mi.lambda, mi.G, mm.lambda, mm.G);
+      inner_ = k.A, outer_ = k.B, hole_ = k.C;
+    } else {
+      outer_ = T_ / (2 * (mm.lambda + mm.G));
+      inner_ = outer_ * (mm.lambda + 2 * mm.G) / (mi.lambda + mi.G + mm.G);
+      hole_ = (inner_ - outer_) * a_ * a_;
+    }
   } else if (name_ == "u1" || name_ == "u2") {
     manufactured_ = name_ == "u1" ? paper001_u1() : paper001_u2();
     amplitude_ = param(spec, "amplitude", 1.0);
@@ -59,7 +68,7 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
   }
   for (const auto& [k, v] : spec.parameters) {
     static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction", "angle", "stretch",
-                                  "radius", "E_inclusion", "nu_inclusion", "e11", "e22", "e33", "e12", "e13", "e23", "z0", "amplitude"};
+                                  "radius", "E_inclusion", "nu_inclusion", "inclusion_stress", "e11", "e22", "e33", "e12", "e13", "e23", "z0", "amplitude"};
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
     if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");

@@ -32,6 +32,24 @@ ManufacturedField paper001_u2_wavenumber(double k) {
   return {k == 1 ? "u2" : "u2(k=" + std::to_string(k) + ")", u, f};
 }
 
+InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1, double lambda2, double mu2) {
+  const double d = 2 * (lambda1 + mu1) * (lambda2 + 2 * mu2);
+  return {P / (2 * (lambda1 + mu1)), P * (lambda1 + mu1 + mu2) / d, -P * a * a * (lambda1 - lambda2 + mu1 - mu2) / d};
+}
+
+ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1, double lambda2,
+                                     double mu2) {
+  const InclusionCoefficients k = paper001_inclusion_coefficients(P, a, lambda1, mu1, lambda2, mu2);
+  auto u = [k, a, cx, cy](double x, double y) -> std::array<double, 2> {
+    const double dx = x - cx, dy = y - cy, r = std::hypot(dx, dy);
+    if (r == 0) return {0.0, 0.0};
+    const double ur = r < a ? k.A * r : k.B * r + k.C / r;
+    return {ur * dx / r, ur * dy / r};
+  };
+  auto f = [](double, double, double, double) -> std::array<double, 2> { return {0.0, 0.0}; };
+  return {"inclusion", u, f};
+}
+
 std::array<double, 2> lame_from_young_poisson(double E, double nu) {
   return {E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};
 }

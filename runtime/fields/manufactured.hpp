@@ -33,6 +33,23 @@ ManufacturedField paper001_u2();
 // magnitudes (docs/paper001.md).
 ManufacturedField paper001_u2_wavenumber(double k);
 
+// The hydrostatically loaded circular inclusion of paper 001 §4.3 (eqs. 4.8-4.12), plane
+// strain: radius a, inclusion (lambda1, mu1) inside, matrix (lambda2, mu2) outside,
+//   u_r = C_A r (r < a),  C_B r + C_C / r (r >= a),  u_theta = 0,
+//   C_A = P / (2 (lambda1 + mu1)),
+//   C_B = P (lambda1 + mu1 + mu2) / (2 (lambda1 + mu1) (lambda2 + 2 mu2)),
+//   C_C = -P a^2 (lambda1 - lambda2 + mu1 - mu2) / (2 (lambda1 + mu1) (lambda2 + 2 mu2)).
+// P is the stress inside the inclusion (sigma_rr = sigma_tt = 2 (lambda1 + mu1) C_A = P);
+// the paper calls it the far-field stress, but the remote sigma_rr is 2 (lambda2 + mu2) C_B.
+struct InclusionCoefficients {
+  double A = 0, B = 0, C = 0;
+};
+InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1, double lambda2, double mu2);
+// The field centred at (cx, cy); no body force (each phase is in equilibrium, and
+// displacement and traction are continuous at r = a).
+ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1, double lambda2,
+                                     double mu2);
+
 // Plane-strain Lame parameters from Young's modulus and Poisson's ratio.
 std::array<double, 2> lame_from_young_poisson(double E, double nu);
 

@@ -2,6 +2,7 @@
 #include "fields/manufactured_solve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -49,13 +50,24 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   if (!law || law->dim != 2 || law->n_params != 2)
     throw std::invalid_argument("solve_manufactured: law '" + s.law + "' is not a 2D law of (lambda, mu)");
   if (!influence) throw std::invalid_argument("solve_manufactured: no influence function '" + s.influence + "'");
-  std::vector<double> params(2);
-  for (int i = 0; i < 2; ++i) params[i] = std::string(law->param_names[i]) == "lambda" ? s.lambda : s.mu;
+  auto law_params = [&](double lambda, double mu) {
+    std::vector<double> v(2);
+    for (int i = 0; i < 2; ++i) v[i] = std::string(law->param_names[i]) == "lambda" ? lambda : mu;
+    return v;
+  };
+  std::vector<std::vector<double>> params{law_params(s.lambda, s.mu)};
+  if (s.inclusion_radius > 0) params.push_back(law_params(s.inclusion_lambda, s.inclusion_mu));
 
   const double h = (s.hi - s.lo) / s.n, delta = s.horizon_ratio * h;
   const double collar = s.collar_outside ? std::ceil(s.layer_horizons * delta / h - 1e-9) * h : 0;
   const double layer = s.collar_outside ? 0 : s.layer_horizons * delta;
-  const Particles P = square_cloud(s, collar);
+  Particles P = square_cloud(s, collar);
+  for (int p = 0; p < P.size() && s.inclusion_radius > 0; ++p) {
+    const double* x = P.position(p);
+    P.material[p] = std::hypot(x[0] - s.inclusion_centre[0], x[1] - s.inclusion_centre[1]) < s.inclusion_radius ? 1 : 0;
+  }
+  // A particle's own (lambda, mu), for the body force.
+  auto lame = [&](int p) { return P.material[p] == 1 ? std::array<double, 2>{s.inclusion_lambda, s.inclusion_mu} : std::array<double, 2>{s.lambda, s.mu}; };
   // Distance of a point from the boundary of the square (negative in an outside collar).
   auto depth = [&](const double* x) { return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]}); };
   const Bonds B = find_bonds(P, delta, influence->weight);
@@ -81,7 +93,7 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.weights_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const FamilyAssembler assembler(P, B, *law, {params}, options);
+  const FamilyAssembler assembler(P, B, *law, params, options);
   SparseMatrix K = assembler.make_matrix();
   assembler.stiffness(nullptr, K);  // linear law: K u = b
   // Reduced system on the solved dofs: K_II u_I = b_I - K_ID u_D.
@@ -96,7 +108,7 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
     const auto u = field.displacement(x[0], x[1]);
     exact[2 * p] = u[0], exact[2 * p + 1] = u[1];
     if (solved[p]) {
-      const auto b = field.body_force(x[0], x[1], s.lambda, s.mu);
+      const auto b = field.body_force(x[0], x[1], lame(p)[0], lame(p)[1]);
       rhs[index[2 * p]] = P.volume[p] * b[0];
       rhs[index[2 * p + 1]] = P.volume[p] * b[1];
     }
@@ -128,6 +140,15 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
     if (!solved[p] || depth(x) < margin) continue;
     for (int c = 0; c < 2; ++c) component_sum[c] += std::pow(u[index[2 * p + c]] - exact[2 * p + c], 2);
     ++r.measured;
+  }
+  if (s.keep_solution) {
+    r.x.resize(2 * n), r.u.resize(2 * n);
+    r.exact = exact;
+    for (int p = 0; p < n; ++p)
+      for (int c = 0; c < 2; ++c) {
+        r.x[2 * p + c] = P.position(p)[c];
+        r.u[2 * p + c] = solved[p] ? u[index[2 * p + c]] : exact[2 * p + c];
+      }
   }
   if (r.measured == 0) throw std::invalid_argument("solve_manufactured: no solved particle inside the error margin");
   sum = component_sum[0] + component_sum[1];

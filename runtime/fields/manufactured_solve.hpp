@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "fields/manufactured.hpp"
 
@@ -31,6 +32,13 @@ struct ManufacturedSetup {
   // 0: the error over all solved particles (the paper's); > 0: only over those at least
   // this far from the boundary, a region that does not change with h.
   double error_margin = 0;
+  // A circular inclusion (paper 001 §4.3) when inclusion_radius > 0: the particles closer
+  // than the radius to inclusion_centre take (inclusion_lambda, inclusion_mu), the others
+  // (lambda, mu); a law with pair parameters (LPS) averages them bond by bond (eq. 2.4).
+  double inclusion_radius = 0;
+  double inclusion_centre[2] = {0.5, 0.5};
+  double inclusion_lambda = 0, inclusion_mu = 0;
+  bool keep_solution = false;  // fill ManufacturedResult::x, u, exact
 };
 
 struct ManufacturedResult {
@@ -38,6 +46,8 @@ struct ManufacturedResult {
   double rms_component[2] = {0, 0};  // the same norm of u_x - u_x,ex and u_y - u_y,ex alone
   int particles = 0, solved = 0, measured = 0;
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
+  // With keep_solution: every particle's position, computed and exact displacement, [n*2].
+  std::vector<double> x, u, exact;
 };
 
 // Throws NotUnisolventError when a family that reaches a solved particle is not unisolvent.

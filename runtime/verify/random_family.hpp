@@ -3,6 +3,7 @@
 // bonds, under a random smooth deformation plus noise.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -19,6 +20,7 @@ struct TestFamily {
   std::vector<double> x;  // [(L+1)*dim] reference positions, center first
   std::vector<double> y;  // [(L+1)*dim] deformed positions
   std::vector<double> xi, Y, w, alpha, V, params, moments;
+  std::vector<double> nbr_params;  // [L*n_params] the neighbours' parameters; empty: Family::nbr_params null
   mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
   const abi::LawDescriptor* law = nullptr;
@@ -37,6 +39,7 @@ struct TestFamily {
     f.V0 = V0;
     f.delta = delta;
     f.params = params.data();
+    f.nbr_params = nbr_params.empty() ? nullptr : nbr_params.data();
     f.moments = moments.data();
     const auto need = static_cast<std::size_t>(bonds() * (law ? law->scratch_per_bond : 0));
     if (kernel_scratch.size() < need) kernel_scratch.resize(need);  // once: a family's bond count is fixed
@@ -101,6 +104,10 @@ struct FamilyOptions {
   bool regular = false;
   double (*weight)(double r, double delta) = nullptr;  // regular only; null: w = 1
   double strain = 0.05;  // size of the random displacement gradient
+  // A material interface through the family: the neighbours beyond the plane x_0 = x_c
+  // + h/2 take parameters 2^(3 u) times the center's (u uniform in [-1, 1], one factor
+  // per parameter, at least 3 apart), passed as Family::nbr_params.
+  bool material_jump = false;
   unsigned seed = 1;
 };
 
@@ -145,6 +152,17 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
     f.alpha.push_back(o.broken_bonds && (k % 4 == 1 || u(rng) > 0.6) ? 0.0 : 1.0);
   }
   for (int p = 0; p < law.n_params; ++p) f.params.push_back(0.5 + 0.5 * (u(rng) + 1.0));
+  if (o.material_jump) {
+    std::vector<double> other = f.params;
+    for (double& v : other) {
+      const double e = u(rng);
+      v *= std::exp2(3.0 * (e < 0 ? std::min(e, -0.5) : std::max(e, 0.5)));
+    }
+    for (int k = 0; k < L; ++k) {
+      const bool beyond = f.xi[k * d] > 0.5 * h;
+      for (int p = 0; p < law.n_params; ++p) f.nbr_params.push_back(beyond ? other[p] : f.params[p]);
+    }
+  }
   // y = x + H x + noise, with a random displacement gradient H.
   double H[9];
   for (double& e : H) e = o.strain * u(rng);

@@ -74,6 +74,16 @@ std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed)
       TestFamily f = make_family(law, o);
       out.push_back(check_family(law, f, std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : ""), true));
     }
+  // A material interface through the family (neighbours' parameters differ): what a
+  // law with pair parameters reads through Family::nbr_params.
+  for (Truncation t : {Truncation::Interior, Truncation::Corner}) {
+    FamilyOptions o = base;
+    o.truncation = t;
+    o.broken_bonds = t == Truncation::Corner;
+    o.material_jump = true;
+    TestFamily f = make_family(law, o);
+    out.push_back(check_family(law, f, std::string(names[static_cast<int>(t)]) + (o.broken_bonds ? ", broken bonds" : "") + ", material jump", true));
+  }
   FamilyOptions lattice = base;
   lattice.regular = true;
   TestFamily at_horizon = make_family(law, lattice);

@@ -29,6 +29,21 @@ struct OutputDef {
   Expr value;  // per-particle expression
 };
 
+// How a bond's pair parameter p_ij is formed from its two particles' values; each
+// satisfies p(z, z) = p(z) (paper 001 after eq. 2.3).
+enum class PairMean {
+  harmonic,    // 2 / p_ij = 1 / p_i + 1 / p_j (paper 001 eq. 2.4)
+  arithmetic,  // p_ij = (p_i + p_j) / 2
+};
+
+// A per-bond parameter: the mean of the center's and the neighbour's value of the
+// material parameter `param` (an index into Law::param_names()).
+struct PairParamDef {
+  Expr symbol;  // a per-bond input symbol
+  int param = 0;
+  PairMean mean = PairMean::harmonic;
+};
+
 class Law {
  public:
   Law(std::string name, int dim, std::string summary);
@@ -43,6 +58,11 @@ class Law {
   // (patch test, check-law) give it.
   Expr param(const std::string& name);
   Expr param(const std::string& name, double test_value);
+  // The bond's pair value of parameter `name` (declared as by param(name) if it is not
+  // yet): the mean of the center's and the neighbour's value (Family::nbr_params), so a
+  // bond across a material interface sees one value from both of its families. Where the
+  // runtime gives no neighbour parameters (a body of one material) it is the center's.
+  Expr pair_param(const std::string& name, PairMean mean);
   const Vec& xi() const { return xi_; }
   const Vec& Y() const { return Y_; }
   Expr w() const { return w_; }
@@ -80,6 +100,7 @@ class Law {
   const std::vector<std::string>& param_names() const { return param_names_; }
   const std::vector<Expr>& params() const { return params_; }
   const std::vector<double>& param_test_values() const { return param_test_values_; }  // NaN: none declared
+  const std::vector<PairParamDef>& pair_params() const { return pair_params_; }
   bool balances_angular_momentum() const { return balances_angular_momentum_; }
   bool has_fixed_poisson_ratio() const { return has_fixed_poisson_ratio_; }
   double poisson_ratio() const { return poisson_ratio_; }
@@ -99,6 +120,7 @@ class Law {
   std::vector<std::string> param_names_;
   std::vector<Expr> params_;
   std::vector<double> param_test_values_;
+  std::vector<PairParamDef> pair_params_;
   bool balances_angular_momentum_ = false;
   bool has_fixed_poisson_ratio_ = false;
   double poisson_ratio_ = 0.0;
