@@ -75,7 +75,7 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
                                 "particles of a family, not only the pairs of the pairwise pattern");
   if (options.gauss_points) {
     gauss_ = std::make_unique<GaussPointAssembler>(particles, *options.gauss_points, law, variant_, inputs_.params,
-                                                   options.matrix);
+                                                   options.matrix, options.threads);
     return;
   }
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim, coupling);

@@ -52,7 +52,10 @@ class FamilyAssembler {
 
   // Recompute the moments (after bond factors alpha changed).
   void update_moments();
-  void set_threads(int threads) { options_.threads = threads; }
+  void set_threads(int threads) {
+    options_.threads = threads;
+    if (gauss_) gauss_->set_threads(threads);
+  }
 
   // forces (may be null) += nothing: overwritten with f(u); K (may be null) overwritten
   // with -df/du in pattern(). u null means zero displacement.

@@ -1,6 +1,8 @@
 // Gauss-point families: gather, forces P^T f, tangent P^T M P, product P^T jvp(P v).
 #include "assembly/gauss_point_assembler.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -42,18 +44,6 @@ Bonds node_reach(const Particles& P, const GaussPoints& gp) {
     r.offsets.push_back(static_cast<int>(r.neighbor.size()));
   }
   return r;
-}
-// out[a] += scale * sum_g phi_a(x_g) per_point[g]: P^T applied to values per point.
-void add_mapped(const GaussPoints& gp, const double* per_point, double scale, double* out) {
-  const int d = gp.dim;
-  for (int g = 0; g < gp.points(); ++g) {
-    const double* v = per_point + static_cast<std::ptrdiff_t>(g) * d;
-    for (int e = gp.phi_start[g]; e < gp.phi_start[g + 1]; ++e) {
-      double* o = out + static_cast<std::ptrdiff_t>(gp.phi_node[e]) * d;
-      const double w = scale * gp.phi[e];
-      for (int c = 0; c < d; ++c) o[c] += w * v[c];
-    }
-  }
 }
 }  // namespace
 
@@ -180,6 +170,45 @@ class GaussPointAssembler::Gather {
     }
   }
 
+  // rows += the row sums of |c_i| |B_i|^T |D_i| |B_i| + |a_s| |b_s|^T of the mapped family
+  // (map(p) first): an entrywise bound on |P^T M P| (nodal_matrix's factors; the center's
+  // -1 and the point's own phi at node 0, when p is in the support, are counted apart,
+  // which only enlarges the bound).
+  void add_row_sum_bound(int d, int S, const abi::Family& fam, const abi::TangentFactors& fac, double* rows) {
+    const int L = fam.n_bonds, nd = static_cast<int>(nodes_.size()) * d, dd = d * d;
+    ab_.assign(static_cast<std::size_t>(2) * S * nd, 0.0);
+    for (int i = 0; i < L; ++i) {
+      const double c = fam.V0 * fam.V[i];
+      double phisum = 1.0;  // the center's |-1|
+      for (int e = entry_start_[i]; e < entry_start_[i + 1]; ++e) phisum += std::fabs(entry_phi_[e]);
+      const double* D = fac.direct + static_cast<std::ptrdiff_t>(i) * dd;
+      double dr[3] = {0, 0, 0};
+      for (int r = 0; r < d; ++r)
+        for (int q = 0; q < d; ++q) dr[r] += std::fabs(D[r * d + q]);
+      auto entry = [&](int node, double phi) {
+        const double scale = std::fabs(c * phi) * phisum;
+        double* out = rows + static_cast<std::ptrdiff_t>(nodes_[node]) * d;
+        for (int r = 0; r < d; ++r) out[r] += scale * dr[r];
+        for (int st = 0; st < S; ++st) {
+          double* a = ab_.data() + static_cast<std::ptrdiff_t>(st) * nd + node * d;
+          double* b = ab_.data() + static_cast<std::ptrdiff_t>(S + st) * nd + node * d;
+          const double* l = fac.left + static_cast<std::ptrdiff_t>(i * S + st) * d;
+          const double* rr = fac.right + static_cast<std::ptrdiff_t>(i * S + st) * d;
+          for (int r = 0; r < d; ++r) a[r] += c * phi * l[r], b[r] += phi * rr[r];
+        }
+      };
+      for (int e = entry_start_[i]; e < entry_start_[i + 1]; ++e) entry(entry_node_[e], entry_phi_[e]);
+      entry(0, -1.0);
+    }
+    for (int st = 0; st < S; ++st) {
+      const double* a = ab_.data() + static_cast<std::ptrdiff_t>(st) * nd;
+      const double* b = ab_.data() + static_cast<std::ptrdiff_t>(S + st) * nd;
+      double bsum = 0.0;
+      for (int col = 0; col < nd; ++col) bsum += std::fabs(b[col]);
+      for (int row = 0; row < nd; ++row) rows[static_cast<std::ptrdiff_t>(nodes_[row / d]) * d + row % d] += std::fabs(a[row]) * bsum;
+    }
+  }
+
   double* local() { return local_.data(); }
   double* local2() { return local2_.data(); }
   const abi::TangentFactors& factors() const { return factors_; }
@@ -202,10 +231,44 @@ namespace pd {
 
 GaussPointAssembler::GaussPointAssembler(const Particles& particles, const GaussPoints& gp, const abi::LawDescriptor& law,
                                          const abi::KernelVariant& variant, std::vector<std::vector<double>> params,
-                                         bool matrix)
-    : particles_(&particles), gp_(&gp), law_(law), variant_(variant), params_(std::move(params)) {
+                                         bool matrix, int threads)
+    : particles_(&particles), gp_(&gp), law_(law), variant_(variant), params_(std::move(params)), threads_(threads) {
   if (gp.dim != particles.dim || gp.particle_count() != particles.size())
     throw std::invalid_argument("Gauss-point assembler: the Gauss points were built for another body");
+  // Conflicts for the colouring: family p "holds" the cells of its points (two families
+  // sharing a point share its cell); delta: the farthest point, so the tiles are two
+  // reaches wide.
+  {
+    Bonds cells;
+    cells.dim = particles.dim;
+    cells.offsets.assign(1, 0);
+    cells.delta.assign(static_cast<std::size_t>(particles.size()), 0.0);
+    std::vector<int> seen(static_cast<std::size_t>(particles.size()), -1);
+    for (int p = 0; p < particles.size(); ++p) {
+      const double* xp = particles.position(p);
+      for (int b = gp.offsets[p]; b < gp.offsets[p + 1]; ++b) {
+        const int g = gp.point[b], c = gp.cell[g];
+        double r2 = 0.0;
+        for (int k = 0; k < gp.dim; ++k) r2 += (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]) * (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]);
+        cells.delta[p] = std::max(cells.delta[p], std::sqrt(r2));
+        if (c != p && seen[c] != p) seen[c] = p, cells.neighbor.push_back(c);
+      }
+      cells.offsets.push_back(static_cast<int>(cells.neighbor.size()));
+    }
+    colouring_ = std::make_unique<FamilyColouring>(particles, cells);
+  }
+  // The transpose of the MLS map, entries ascending per node (a counting sort).
+  node_entry_start_.assign(static_cast<std::size_t>(particles.size()) + 1, 0);
+  for (int a : gp.phi_node) ++node_entry_start_[a + 1];
+  for (int a = 0; a < particles.size(); ++a) node_entry_start_[a + 1] += node_entry_start_[a];
+  node_entry_.resize(gp.phi_node.size());
+  {
+    std::vector<int> fill(node_entry_start_.begin(), node_entry_start_.end() - 1);
+    for (int e = 0; e < static_cast<int>(gp.phi_node.size()); ++e) node_entry_[fill[gp.phi_node[e]]++] = e;
+  }
+  entry_point_.resize(gp.phi_node.size());
+  for (int g = 0; g < gp.points(); ++g)
+    for (int e = gp.phi_start[g]; e < gp.phi_start[g + 1]; ++e) entry_point_[e] = g;
   update_moments();
   if (matrix) pattern_ = std::make_unique<SparsityPattern>(reach_bonds(), particles.dim, Coupling::family);
 }
@@ -229,13 +292,70 @@ void GaussPointAssembler::for_each_family(const char* stage, Body&& body) const 
                                law_.name + " at particle " + std::to_string(p) + " (Gauss-point quadrature)");
 }
 
+int GaussPointAssembler::thread_count() const { return threads_ > 0 ? threads_ : omp_get_max_threads(); }
+
+template <class Body>
+void GaussPointAssembler::for_each_family_coloured(const char* stage, Body&& body) const {
+  const FamilyColouring& col = *colouring_;
+  std::string error;
+#pragma omp parallel num_threads(thread_count())
+  {
+    Gather g(*this);
+    for (int c = 0; c < col.colours(); ++c) {
+      // The implicit barrier at the end of the loop separates the colours.
+#pragma omp for schedule(dynamic, 1)
+      for (int i = col.colour_start(c); i < col.colour_start(c + 1); ++i) {
+        const int chunk = col.chunk_id(i);
+        for (int j = col.chunk_begin(chunk); j < col.chunk_end(chunk); ++j)
+          if (const int p = col.family(j); const char* failed = body(g, p)) {
+#pragma omp critical(pd_gauss_assembly_error)
+            if (error.empty())
+              error = std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed + " of law " + law_.name +
+                      " at particle " + std::to_string(p) + " (Gauss-point quadrature)";
+          }
+      }
+    }
+  }
+  if (!error.empty()) throw std::runtime_error(error);
+}
+
+// ug = P u per point: each point writes its own row.
+void GaussPointAssembler::gather_points(const double* u, double* ug) const {
+  const int d = gp_->dim, G = gp_->points();
+#pragma omp parallel for schedule(static) num_threads(thread_count())
+  for (int g = 0; g < G; ++g) {
+    double acc[3] = {0, 0, 0};
+    for (int e = gp_->phi_start[g]; e < gp_->phi_start[g + 1]; ++e) {
+      const double* ua = u + static_cast<std::ptrdiff_t>(gp_->phi_node[e]) * d;
+      for (int c = 0; c < d; ++c) acc[c] += gp_->phi[e] * ua[c];
+    }
+    for (int c = 0; c < d; ++c) ug[static_cast<std::ptrdiff_t>(g) * d + c] = acc[c];
+  }
+}
+
+// out[a] += scale * sum_g phi_a(x_g) per_point[g] (P^T), node by node through the
+// transposed map: each node its own row, its entries in ascending order.
+void GaussPointAssembler::add_mapped(const double* per_point, double scale, double* out) const {
+  const int d = gp_->dim, n = particles_->size();
+#pragma omp parallel for schedule(static) num_threads(thread_count())
+  for (int a = 0; a < n; ++a) {
+    double* o = out + static_cast<std::ptrdiff_t>(a) * d;
+    for (int k = node_entry_start_[a]; k < node_entry_start_[a + 1]; ++k) {
+      const int e = node_entry_[k];
+      const double* v = per_point + static_cast<std::ptrdiff_t>(entry_point_[e]) * d;
+      const double w = scale * gp_->phi[e];
+      for (int c = 0; c < d; ++c) o[c] += w * v[c];
+    }
+  }
+}
+
 void GaussPointAssembler::update_moments() {
   const int nm = law_.n_moments;
   moments_.clear();
   if (nm == 0) return;
   if (variant_.moments == nullptr) throw std::invalid_argument(std::string("law ") + law_.name + " has no moments kernel");
   std::vector<double> m(static_cast<std::size_t>(particles_->size()) * nm);
-  for_each_family("moments", [&](Gather& g, int p) -> const char* {
+  for_each_family_coloured("moments", [&](Gather& g, int p) -> const char* {
     double* out = m.data() + static_cast<std::ptrdiff_t>(p) * nm;
     variant_.moments(g.family(p, nullptr, nullptr), out);
     return finite(out, static_cast<std::size_t>(nm)) ? nullptr : "moments kernel";
@@ -258,12 +378,11 @@ void GaussPointAssembler::assemble(const double* u, double* forces, SparseMatrix
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * d);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
   std::vector<int> strides;
   std::vector<double> point_forces(forces ? static_cast<std::size_t>(gp_->points()) * d : 0, 0.0);
-  for_each_family(K ? "stiffness assembly (Gauss points)" : "force assembly (Gauss points)",
-                  [&](Gather& g, int p) -> const char* {
+  auto body = [&](Gather& g, int p) -> const char* {
                     const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
                     const int L = fam.n_bonds, m = (L + 1) * d;
                     double* f_loc = forces ? g.local() : nullptr;
@@ -289,10 +408,15 @@ void GaussPointAssembler::assemble(const double* u, double* forces, SparseMatrix
                       for (int c = 0; c < d; ++c) f[c] += f_loc[(k + 1) * d + c];
                     }
                     return nullptr;
-                  });
+                  };
+  // The matrix scatters into the family's MLS nodes, which the colouring does not separate.
+  if (K)
+    for_each_family("stiffness assembly (Gauss points)", body);
+  else
+    for_each_family_coloured("force assembly (Gauss points)", body);
   // f_nodes = P^T f_loc, the points' rows once per point (a point is in ~30 families at
   // delta = 3h: mapping each bond's row to the ~28 MLS nodes instead cost 4x the kernels).
-  if (forces) add_mapped(*gp_, point_forces.data(), 1.0, forces);
+  if (forces) add_mapped(point_forces.data(), 1.0, forces);
 }
 
 void GaussPointAssembler::stiffness_product(const double* u, const double* v, double* Kv) const {
@@ -300,10 +424,10 @@ void GaussPointAssembler::stiffness_product(const double* u, const double* v, do
   std::fill(Kv, Kv + dofs(), 0.0);
   const auto Gd = static_cast<std::size_t>(gp_->points()) * d;
   std::vector<double> ug(Gd), vg(Gd);
-  if (u) gauss_point_displacements(*gp_, u, ug.data());
-  gauss_point_displacements(*gp_, v, vg.data());
+  if (u) gather_points(u, ug.data());
+  gather_points(v, vg.data());
   std::vector<double> point_df(Gd, 0.0);
-  for_each_family("matrix-free product (Gauss points)", [&](Gather& g, int p) -> const char* {
+  for_each_family_coloured("matrix-free product (Gauss points)", [&](Gather& g, int p) -> const char* {
     const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
     const int L = fam.n_bonds;
     // dy_loc = P v: the center's v_p, each point's MLS value.
@@ -324,7 +448,28 @@ void GaussPointAssembler::stiffness_product(const double* u, const double* v, do
     }
     return nullptr;
   });
-  add_mapped(*gp_, point_df.data(), -1.0, Kv);
+  add_mapped(point_df.data(), -1.0, Kv);
+}
+
+void GaussPointAssembler::collocation_forces(const double* u, double* forces) const {
+  if (law_.n_states != 0)
+    throw std::invalid_argument(std::string("collocation form (eq. 3.15): law ") + law_.name +
+                                " is state-based; its force state needs the Gauss point's own family, which does not exist");
+  const int d = particles_->dim;
+  std::fill(forces, forces + dofs(), 0.0);
+  std::vector<double> ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gather_points(u, ug.data());
+  }
+  for_each_family_coloured("collocation forces (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    double* f_loc = g.local();
+    variant_.residual(fam, f_loc);
+    if (!finite(f_loc, static_cast<std::size_t>(d))) return "residual";
+    for (int c = 0; c < d; ++c) forces[static_cast<std::ptrdiff_t>(p) * d + c] = 2.0 * f_loc[c];
+    return nullptr;
+  });
 }
 
 void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) const {
@@ -334,7 +479,7 @@ void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) cons
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * d);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
   for_each_family("stiffness diagonal (Gauss points)", [&](Gather& g, int p) -> const char* {
     const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
@@ -350,19 +495,41 @@ void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) cons
   });
 }
 
+std::vector<double> GaussPointAssembler::stiffness_row_sum_bound(const double* u) const {
+  const int d = particles_->dim, S = law_.n_states;
+  std::vector<double> rows(static_cast<std::size_t>(dofs()), 0.0), ug;
+  if (u) {
+    ug.resize(static_cast<std::size_t>(gp_->points()) * d);
+    gather_points(u, ug.data());
+  }
+  // One thread: a family adds to its MLS nodes, which the colouring does not separate.
+  for_each_family("stiffness row sums (Gauss points)", [&](Gather& g, int p) -> const char* {
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    variant_.tangent(fam, nullptr, g.factors());
+    if (!factors_finite(d, S, fam, g.factors())) return "tangent (row sums)";
+    g.map(p);
+    g.add_row_sum_bound(d, S, fam, g.factors(), rows.data());
+    return nullptr;
+  });
+  return rows;
+}
+
 double GaussPointAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
-  double total = 0.0;
-  for_each_family("strain energy (Gauss points)", [&](Gather& g, int p) -> const char* {
+  std::vector<double> per_family(static_cast<std::size_t>(particles_->size()));
+  for_each_family_coloured("strain energy (Gauss points)", [&](Gather& g, int p) -> const char* {
     const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
-    total += fam.V0 * variant_.energy(fam);
+    per_family[p] = fam.V0 * variant_.energy(fam);
     return nullptr;
   });
+  // Summed in particle order: the same value for any thread count.
+  double total = 0.0;
+  for (double e : per_family) total += e;
   return total;
 }
 
@@ -371,7 +538,7 @@ double GaussPointAssembler::family_energy_density(int p, const double* u) const 
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
   Gather g(*this);
   return variant_.energy(g.family(p, u, u ? ug.data() : nullptr));
@@ -384,9 +551,9 @@ std::vector<double> GaussPointAssembler::particle_outputs(const double* u) const
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
-  for_each_family("outputs (Gauss points)", [&](Gather& g, int p) -> const char* {
+  for_each_family_coloured("outputs (Gauss points)", [&](Gather& g, int p) -> const char* {
     variant_.outputs(g.family(p, u, u ? ug.data() : nullptr), out.data() + static_cast<std::ptrdiff_t>(p) * no);
     return nullptr;
   });
@@ -399,9 +566,9 @@ std::vector<double> GaussPointAssembler::family_stresses(const double* u) const 
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * d);
-    gauss_point_displacements(*gp_, u, ug.data());
+    gather_points(u, ug.data());
   }
-  for_each_family("stress (Gauss points)", [&](Gather& g, int p) -> const char* {
+  for_each_family_coloured("stress (Gauss points)", [&](Gather& g, int p) -> const char* {
     double* s = sigma.data() + static_cast<std::ptrdiff_t>(p) * d * d;
     family_stress(variant_.residual, g.family(p, u, u ? ug.data() : nullptr), d, g.local(), s);
     return finite(s, static_cast<std::size_t>(d) * d) ? nullptr : "stress";

@@ -12,14 +12,23 @@
 //   product        K v     = P^T jvp(P v),
 // and the stiffness couples every two nodes of {i} U supports: the sparsity pattern is the
 // family pattern of those node sets (reach_bonds), wider than the bond one by r_w on each
-// side. Families are visited in index order on one thread: a family's writes reach
-// delta + h + r_w, so the node colouring of FamilyColouring does not separate them.
+// side.
+//
+// Threads: the force, product, energy and stress passes run the families colour by colour
+// (FamilyColouring over the cells whose points each family holds: two families of one
+// colour share no Gauss point, so their per-point rows never collide); the per-point rows
+// are then mapped to the nodes (P^T) and the points' displacements gathered (P u) by
+// loops that write one entry each. Every entry receives its contributions in an order
+// fixed by the colouring alone: the results are bitwise the same for any thread count.
+// The matrix and its diagonal scatter into the MLS nodes of a family (reach delta + h +
+// r_w), which the point colouring does not separate: they stay on one thread.
 #pragma once
 
 #include <memory>
 #include <mutex>
 #include <vector>
 
+#include "assembly/family_colouring.hpp"
 #include "assembly/sparsity_pattern.hpp"
 #include "discretize/gauss_points.hpp"
 #include "kernel_abi.hpp"
@@ -31,14 +40,32 @@ class GaussPointAssembler {
  public:
   // gp and particles must outlive the assembler; params: one vector per material.
   GaussPointAssembler(const Particles& particles, const GaussPoints& gp, const abi::LawDescriptor& law,
-                      const abi::KernelVariant& variant, std::vector<std::vector<double>> params, bool matrix);
+                      const abi::KernelVariant& variant, std::vector<std::vector<double>> params, bool matrix,
+                      int threads = 0);
+
+  // OpenMP threads of the coloured passes (0: OpenMP's default).
+  void set_threads(int threads) { threads_ = threads; }
 
   void update_moments();
   // Forces overwritten with f(u) (may be null); K (may be null) with -df/du in pattern().
   void assemble(const double* u, double* forces, SparseMatrix* K) const;
   void stiffness_product(const double* u, const double* v, double* Kv) const;
+  // The paper's collocation form, eq. (3.15), for a pairwise law (n_states == 0; throws
+  // otherwise): node i's force is the sum of the pairwise forces f(u_g - u_i, x_g - x_i)
+  // beta_g V_g over its own Gauss bonds, f = 2 t_i<g> (the kernel's force state is half the
+  // pairwise force), and nothing is returned to the points' nodes. Not momentum-balanced and
+  // not symmetric (docs/paper002.md measures both); for comparison with the variational
+  // form above, not reachable from a scene.
+  void collocation_forces(const double* u, double* forces) const;
   void stiffness_diagonal(const double* u, double* diag) const;
   double strain_energy(const double* u) const;
+  // An upper bound on the Gershgorin row sums S_r = sum_c |K_rc| of the stiffness at u (null:
+  // the reference configuration), without forming K: per family, |P^T M P| <= sum_i |c_i|
+  // |B_i|^T |D_i| |B_i| + sum_s |a_s| |b_s|^T entrywise (the factored tangent of
+  // nodal_matrix), whose row sums cost O(L n_phi d) per family instead of the matrix's
+  // O(L n_phi^2 d^2) and need no pattern. For the stable step of explicit dynamics
+  // (dynamics/time_step.hpp): a larger S_r gives a smaller, still stable, step.
+  std::vector<double> stiffness_row_sum_bound(const double* u) const;
   // W of particle p's Gauss family alone (the law's energy kernel; throws without one).
   double family_energy_density(int p, const double* u) const;
   std::vector<double> particle_outputs(const double* u) const;
@@ -58,6 +85,13 @@ class GaussPointAssembler {
   class Gather;
   template <class Body>
   void for_each_family(const char* stage, Body&& body) const;
+  // The same over the colouring, on thread_count() threads (bodies that write the
+  // family's own slot and its points' rows only).
+  template <class Body>
+  void for_each_family_coloured(const char* stage, Body&& body) const;
+  int thread_count() const;
+  void gather_points(const double* u, double* ug) const;
+  void add_mapped(const double* per_point, double scale, double* out) const;
 
   const Particles* particles_;
   const GaussPoints* gp_;
@@ -68,6 +102,11 @@ class GaussPointAssembler {
   mutable Bonds reach_;
   mutable std::once_flag reach_once_;
   std::unique_ptr<SparsityPattern> pattern_;
+  std::unique_ptr<FamilyColouring> colouring_;
+  // Transpose of the MLS map: for node a, the entries e of phi with phi_node[e] == a,
+  // ascending (the order the serial point loop added them in).
+  std::vector<int> node_entry_start_, node_entry_, entry_point_;
+  int threads_ = 0;
 };
 
 }  // namespace pd
