@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <string>
+
+#include <unistd.h>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -17,8 +20,18 @@
 #include "study/study.hpp"
 
 namespace {
+// One directory per test process: two suites running at once (CI's, a developer's) must not
+// share the study files or the output folders (a collision once failed the smoothing test).
+std::string scratch() {
+  static const std::string dir = [] {
+    const std::string d = testing::TempDir() + "/pd_test_study_" + std::to_string(::getpid());
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
 std::string write_study(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "/" + name;
+  const std::string path = scratch() + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -42,7 +55,7 @@ TEST(Study, FitOrderRecoversAPowerLaw) {
 TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
   const auto spec = pd::read_study(std::string(PD_SOURCE_DIR) + "/studies/constant_strain.yaml");
   ASSERT_EQ(spec.fine_points, 2);  // `fine` is then the order between the two finest resolutions
-  const std::string out = testing::TempDir() + "/pd_study_quick";
+  const std::string out = scratch() + "/pd_study_quick";
   std::filesystem::remove_all(out);
   int lines = 0;
   const auto orders = pd::run_study(spec, out, true, [&](const std::string&) { ++lines; });
@@ -117,7 +130,7 @@ TEST(Study, CrackStudyFileHasThePapersTables) {
 TEST(Study, SmoothedErrorsAreRecordedAndCached) {
   const std::string scene_path = std::string(PD_SOURCE_DIR) + "/scenes/crack.yaml";
   const std::string sweep = "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [40]\n";
-  const std::string out = testing::TempDir() + "/pd_study_smoothed";
+  const std::string out = scratch() + "/pd_study_smoothed";
   std::filesystem::remove_all(out);
   const auto plain = pd::read_study(write_study("plain.yaml", "problems: [" + scene_path + "]\n" + sweep));
   const auto first = pd::run_study(plain, out, false, [](const std::string&) {});
@@ -194,7 +207,7 @@ TEST(Study, SweepsAreUnitedAndLargePointsRunMatrixFree) {
       "matrix_free_from_bonds: 4000\n"
       "fine_points: 2\n");
   const auto spec = pd::read_study(path);
-  const std::string out = testing::TempDir() + "/pd_study_overlap";
+  const std::string out = scratch() + "/pd_study_overlap";
   std::filesystem::remove_all(out);
   const auto orders = pd::run_study(spec, out, false, [](const std::string&) {});
   ASSERT_EQ(orders.size(), 1u);
@@ -226,7 +239,7 @@ TEST(Study, PaperScaleCrackGivesTable7InTheNorm) {
   const std::string scene = std::string(PD_SOURCE_DIR) + "/scenes/crack_wide.yaml";
   const auto spec = pd::read_study(write_study("crack_wide_t7.yaml", "problems: [" + scene + "]\n"
       "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [1.5, 2.0]\ncounts: [200]\n"));
-  const std::string out = testing::TempDir() + "/pd_study_crack_wide";
+  const std::string out = scratch() + "/pd_study_crack_wide";
   std::filesystem::remove_all(out);
   const auto orders = pd::run_study(spec, out, false, [](const std::string&) {});
   ASSERT_EQ(orders.size(), 2u);
