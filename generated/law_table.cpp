@@ -28,13 +28,17 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::lps_3d_descriptor(),
       pd::generated::lps_corrected_plane_strain_descriptor(),
       pd::generated::lps_corrected_3d_descriptor(),
+      pd::generated::lps_paper_plane_strain_descriptor(),
+      pd::generated::lps_paper_3d_descriptor(),
+      pd::generated::lps_paper_corrected_plane_strain_descriptor(),
+      pd::generated::lps_paper_corrected_3d_descriptor(),
       pd::generated::oterkus_plane_strain_descriptor(),
       pd::generated::oterkus_3d_descriptor(),
       pd::generated::oterkus_paper_d_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 19);
+  return std::span<const LawDescriptor>(table, 23);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

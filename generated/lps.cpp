@@ -781,7 +781,7 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_plane_strain";
-  d.summary = "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13), plane strain; params lambda, mu";
+  d.summary = "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact bonds, plane strain; params lambda, mu";
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
@@ -1822,7 +1822,7 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_3d";
-  d.summary = "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13), 3D; params lambda, mu";
+  d.summary = "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact bonds, 3D; params lambda, mu";
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
@@ -2902,7 +2902,7 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_plane_strain";
-  d.summary = "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), plane strain; params lambda, mu";
+  d.summary = "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the force (an energy), plane strain; params lambda, mu";
   d.dim = 2;
   d.n_params = 2;
   d.param_names = params;
@@ -4534,7 +4534,7 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_3d";
-  d.summary = "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), 3D; params lambda, mu";
+  d.summary = "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the force (an energy), 3D; params lambda, mu";
   d.dim = 3;
   d.n_params = 2;
   d.param_names = params;
@@ -4566,6 +4566,4190 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;
+  return d;
+}
+
+// lps_paper_plane_strain_damaged_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void lps_paper_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// lps_paper_plane_strain_damaged_residual: per bond 11 add, 31 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p3 = 0.47746482927568606 * (p0 * p0 * p0) * V0;
+  const double p4 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b5 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b6 = p4 * (Q_lambda - Q_mu);
+    const double b7 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b8 = 1.0 / b5;
+    const double b9 = p3 * (b6 * xi_0 + b7 * xi_0) * b8 * sf * V * alpha;
+    const double b10 = p3 * (b6 * xi_1 + b7 * xi_1) * b8 * sf * V * alpha;
+    forces[(k + 1) * 2 + 0] = -b9;
+    lane1[lane] += b9;
+    forces[(k + 1) * 2 + 1] = -b10;
+    lane2[lane] += b10;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_damaged_tangent: per bond 11 add, 52 mul, 3 div, 1 call; per family 0 add, 9 mul, 1 div, 0 call
+void lps_paper_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p3 = p0 * p0 * p0;
+  const double p4 = 0.47746482927568606 * p3 * V0;
+  const double p5 = 2.0 * s_theta;
+  const double p6 = 3.8197186342054885 * p3;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b8 = Q_lambda - Q_mu;
+    const double b9 = p5 * b8;
+    const double b10 = xi_0 * xi_0;
+    const double b11 = xi_1 * xi_1;
+    const double b12 = 1.0 / (b10 + b11);
+    const double b13 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b12;
+    const double b14 = 1.0 / b7;
+    const double b15 = p4 * (b9 * xi_0 + b13 * xi_0) * b14 * sf * V * alpha;
+    const double b16 = p4 * (b9 * xi_1 + b13 * xi_1) * b14 * sf * V * alpha;
+    const double b17 = p6 * Q_mu * (b12 * b14) * sf * alpha;
+    const double b18 = b17 * xi_1 * xi_0;
+    const double b19 = p1 * b14 * sd * V * alpha;
+    const double b20 = p1 * b8 * b14 * sf * alpha;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    factors.direct[k * 4 + 0] = b17 * b10;
+    factors.direct[k * 4 + 1] = b18;
+    factors.direct[k * 4 + 2] = b18;
+    factors.direct[k * 4 + 3] = b17 * b11;
+    factors.right[(k * 1 + 0) * 2 + 0] = b19 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b19 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b20 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b20 * xi_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_damaged_jvp: per bond 8 add, 43 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    const double b3 = 1.0 / b2;
+    lane0[lane] += p1 * dY_0 * b3 * sd * V * alpha * xi_0 + p1 * dY_1 * b3 * sd * V * alpha * xi_1;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p4 = p0 * p0 * p0;
+  const double p5 = 3.8197186342054885 * p4;
+  const double p6 = 0.9549296585513721 * ds_theta * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = 1.0 / b7;
+    const double b11 = 1.0 / (b8 + b9) * b10;
+    const double b12 = p5 * dY_0 * Q_mu * b11 * sf * alpha;
+    const double b13 = p5 * dY_1 * Q_mu * b11 * sf * alpha;
+    const double b14 = p6 * (Q_lambda - Q_mu) * b10 * sf * alpha;
+    const double b15 = V0 * (b12 * b8 + b13 * xi_1 * xi_0 + b14 * xi_0) * V;
+    const double b16 = V0 * (b12 * xi_1 * xi_0 + b13 * b9 + b14 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    df[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_damaged_energy: per bond 4 add, 15 mul, 2 div, 1 call; per family 2 add, 10 mul, 1 div, 0 call
+double lps_paper_plane_strain_damaged_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  double s_bond_energy = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double b2 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b4 = std::sqrt(b3);
+    const double b5 = 1.0 / b4;
+    lane0[lane] += p1 * b2 * b5 * sd * V * alpha;
+    lane1[lane] += Q_mu * (b2 * b2) * (1.0 / b3 * b5) * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_bond_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 1.9098593171027443 * s_bond_energy * (p0 * p0 * p0);
+  return W;
+}
+
+// lps_paper_plane_strain_damaged_outputs: per bond 4 add, 9 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+// lps_paper_plane_strain_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void lps_paper_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// lps_paper_plane_strain_intact_residual: per bond 11 add, 28 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p3 = 0.47746482927568606 * (p0 * p0 * p0) * V0;
+  const double p4 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b5 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b6 = p4 * (Q_lambda - Q_mu);
+    const double b7 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b8 = 1.0 / b5;
+    const double b9 = p3 * (b6 * xi_0 + b7 * xi_0) * b8 * sf * V;
+    const double b10 = p3 * (b6 * xi_1 + b7 * xi_1) * b8 * sf * V;
+    forces[(k + 1) * 2 + 0] = -b9;
+    lane1[lane] += b9;
+    forces[(k + 1) * 2 + 1] = -b10;
+    lane2[lane] += b10;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_intact_tangent: per bond 11 add, 46 mul, 3 div, 1 call; per family 0 add, 9 mul, 1 div, 0 call
+void lps_paper_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p3 = p0 * p0 * p0;
+  const double p4 = 0.47746482927568606 * p3 * V0;
+  const double p5 = 2.0 * s_theta;
+  const double p6 = 3.8197186342054885 * p3;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b8 = Q_lambda - Q_mu;
+    const double b9 = p5 * b8;
+    const double b10 = xi_0 * xi_0;
+    const double b11 = xi_1 * xi_1;
+    const double b12 = 1.0 / (b10 + b11);
+    const double b13 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b12;
+    const double b14 = 1.0 / b7;
+    const double b15 = p4 * (b9 * xi_0 + b13 * xi_0) * b14 * sf * V;
+    const double b16 = p4 * (b9 * xi_1 + b13 * xi_1) * b14 * sf * V;
+    const double b17 = p6 * Q_mu * (b12 * b14) * sf;
+    const double b18 = b17 * xi_1 * xi_0;
+    const double b19 = p1 * b14 * sd * V;
+    const double b20 = p1 * b8 * b14 * sf;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    factors.direct[k * 4 + 0] = b17 * b10;
+    factors.direct[k * 4 + 1] = b18;
+    factors.direct[k * 4 + 2] = b18;
+    factors.direct[k * 4 + 3] = b17 * b11;
+    factors.right[(k * 1 + 0) * 2 + 0] = b19 * xi_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b19 * xi_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b20 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b20 * xi_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_intact_jvp: per bond 8 add, 38 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    const double b3 = 1.0 / b2;
+    lane0[lane] += p1 * dY_0 * b3 * sd * V * xi_0 + p1 * dY_1 * b3 * sd * V * xi_1;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p4 = p0 * p0 * p0;
+  const double p5 = 3.8197186342054885 * p4;
+  const double p6 = 0.9549296585513721 * ds_theta * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b8 = xi_0 * xi_0;
+    const double b9 = xi_1 * xi_1;
+    const double b10 = 1.0 / b7;
+    const double b11 = 1.0 / (b8 + b9) * b10;
+    const double b12 = p5 * dY_0 * Q_mu * b11 * sf;
+    const double b13 = p5 * dY_1 * Q_mu * b11 * sf;
+    const double b14 = p6 * (Q_lambda - Q_mu) * b10 * sf;
+    const double b15 = V0 * (b12 * b8 + b13 * xi_1 * xi_0 + b14 * xi_0) * V;
+    const double b16 = V0 * (b12 * xi_1 * xi_0 + b13 * b9 + b14 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    df[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_intact_energy: per bond 4 add, 13 mul, 2 div, 1 call; per family 2 add, 10 mul, 1 div, 0 call
+double lps_paper_plane_strain_intact_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  double s_bond_energy = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double b2 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1;
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b4 = std::sqrt(b3);
+    const double b5 = 1.0 / b4;
+    lane0[lane] += p1 * b2 * b5 * sd * V;
+    lane1[lane] += Q_mu * (b2 * b2) * (1.0 / b3 * b5) * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_bond_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 1.9098593171027443 * s_bond_energy * (p0 * p0 * p0);
+  return W;
+}
+
+// lps_paper_plane_strain_intact_outputs: per bond 4 add, 8 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
+  static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "lps_paper_plane_strain";
+  d.summary = "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic m(delta) = 2 pi delta^3/3 for every family, plane strain; params lambda, mu";
+  d.dim = 2;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
+  d.scratch_per_bond = 1;
+  d.n_moments = 0;
+  d.n_states = 1;
+  d.damaged.moments = &lps_paper_plane_strain_damaged_moments;
+  d.damaged.residual = &lps_paper_plane_strain_damaged_residual;
+  d.damaged.residual_ops = {11, 31, 3, 1};
+  d.damaged.tangent = &lps_paper_plane_strain_damaged_tangent;
+  d.damaged.tangent_ops = {11, 52, 3, 1};
+  d.damaged.jvp = &lps_paper_plane_strain_damaged_jvp;
+  d.damaged.jvp_ops = {8, 43, 3, 1};
+  d.damaged.energy = &lps_paper_plane_strain_damaged_energy;
+  d.damaged.outputs = &lps_paper_plane_strain_damaged_outputs;
+  d.damaged.form = &lps_paper_plane_strain_damaged_form;
+  d.intact.moments = &lps_paper_plane_strain_intact_moments;
+  d.intact.residual = &lps_paper_plane_strain_intact_residual;
+  d.intact.residual_ops = {11, 28, 3, 1};
+  d.intact.tangent = &lps_paper_plane_strain_intact_tangent;
+  d.intact.tangent_ops = {11, 46, 3, 1};
+  d.intact.jvp = &lps_paper_plane_strain_intact_jvp;
+  d.intact.jvp_ops = {8, 38, 3, 1};
+  d.intact.energy = &lps_paper_plane_strain_intact_energy;
+  d.intact.outputs = &lps_paper_plane_strain_intact_outputs;
+  d.intact.form = &lps_paper_plane_strain_intact_form;
+  return d;
+}
+
+// lps_paper_3d_damaged_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void lps_paper_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// lps_paper_3d_damaged_residual: per bond 18 add, 42 mul, 3 div, 1 call; per family 0 add, 7 mul, 1 div, 0 call
+void lps_paper_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 0.3183098861837907 * (p1 * p1) * V0;
+  const double p5 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b6 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b7 = p5 * (Q_lambda - Q_mu);
+    const double b8 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b9 = 1.0 / b6;
+    const double b10 = p4 * (b7 * xi_0 + b8 * xi_0) * b9 * sf * V * alpha;
+    const double b11 = p4 * (b7 * xi_1 + b8 * xi_1) * b9 * sf * V * alpha;
+    const double b12 = p4 * (b7 * xi_2 + b8 * xi_2) * b9 * sf * V * alpha;
+    forces[(k + 1) * 3 + 0] = -b10;
+    lane1[lane] += b10;
+    forces[(k + 1) * 3 + 1] = -b11;
+    lane2[lane] += b11;
+    forces[(k + 1) * 3 + 2] = -b12;
+    lane3[lane] += b12;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_damaged_tangent: per bond 18 add, 69 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = p1 * p1;
+  const double p5 = 0.3183098861837907 * p4 * V0;
+  const double p6 = 3.0 * s_theta;
+  const double p7 = 4.7746482927568605 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b9 = Q_lambda - Q_mu;
+    const double b10 = p6 * b9;
+    const double b11 = xi_0 * xi_0;
+    const double b12 = xi_1 * xi_1;
+    const double b13 = xi_2 * xi_2;
+    const double b14 = 1.0 / (b11 + b12 + b13);
+    const double b15 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b14;
+    const double b16 = 1.0 / b8;
+    const double b17 = p5 * (b10 * xi_0 + b15 * xi_0) * b16 * sf * V * alpha;
+    const double b18 = p5 * (b10 * xi_1 + b15 * xi_1) * b16 * sf * V * alpha;
+    const double b19 = p5 * (b10 * xi_2 + b15 * xi_2) * b16 * sf * V * alpha;
+    const double b20 = p7 * Q_mu * (b14 * b16) * sf * alpha;
+    const double b21 = b20 * xi_1 * xi_0;
+    const double b22 = b20 * xi_2;
+    const double b23 = b22 * xi_0;
+    const double b24 = b22 * xi_1;
+    const double b25 = p2 * b16 * sd * V * alpha;
+    const double b26 = p2 * b9 * b16 * sf * alpha;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
+    lane1[lane] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
+    lane2[lane] += b18;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
+    lane3[lane] += b19;
+    factors.direct[k * 9 + 0] = b20 * b11;
+    factors.direct[k * 9 + 1] = b21;
+    factors.direct[k * 9 + 2] = b23;
+    factors.direct[k * 9 + 3] = b21;
+    factors.direct[k * 9 + 4] = b20 * b12;
+    factors.direct[k * 9 + 5] = b24;
+    factors.direct[k * 9 + 6] = b23;
+    factors.direct[k * 9 + 7] = b24;
+    factors.direct[k * 9 + 8] = b20 * b13;
+    factors.right[(k * 1 + 0) * 3 + 0] = b25 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b25 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b25 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b26 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b26 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b26 * xi_2;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_damaged_jvp: per bond 16 add, 67 mul, 3 div, 1 call; per family 0 add, 7 mul, 1 div, 0 call
+void lps_paper_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    const double b4 = 1.0 / b3;
+    lane0[lane] += p2 * dY_0 * b4 * sd * V * alpha * xi_0 + p2 * dY_1 * b4 * sd * V * alpha * xi_1 + p2 * dY_2 * b4 * sd * V * alpha * xi_2;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p5 = p1 * p1;
+  const double p6 = 4.7746482927568605 * p5;
+  const double p7 = 0.954929658551372 * ds_theta * p5;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b9 = xi_0 * xi_0;
+    const double b10 = xi_1 * xi_1;
+    const double b11 = xi_2 * xi_2;
+    const double b12 = 1.0 / b8;
+    const double b13 = 1.0 / (b9 + b10 + b11) * b12;
+    const double b14 = p6 * dY_0 * Q_mu * b13 * sf * alpha;
+    const double b15 = p6 * dY_1 * Q_mu * b13 * sf * alpha;
+    const double b16 = p6 * dY_2 * Q_mu * b13 * sf * alpha;
+    const double b17 = b16 * xi_2;
+    const double b18 = p7 * (Q_lambda - Q_mu) * b12 * sf * alpha;
+    const double b19 = V0 * (b14 * b9 + b15 * xi_1 * xi_0 + b17 * xi_0 + b18 * xi_0) * V;
+    const double b20 = V0 * (b14 * xi_1 * xi_0 + b15 * b10 + b17 * xi_1 + b18 * xi_1) * V;
+    const double b21 = V0 * (b14 * xi_2 * xi_0 + b15 * xi_2 * xi_1 + b16 * b11 + b18 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b19;
+    lane1[lane] += b19;
+    df[(k + 1) * 3 + 1] = -b20;
+    lane2[lane] += b20;
+    df[(k + 1) * 3 + 2] = -b21;
+    lane3[lane] += b21;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_damaged_energy: per bond 7 add, 17 mul, 2 div, 1 call; per family 2 add, 9 mul, 1 div, 0 call
+double lps_paper_3d_damaged_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  double s_bond_energy = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double b3 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
+    const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b5 = std::sqrt(b4);
+    const double b6 = 1.0 / b5;
+    lane0[lane] += p2 * b3 * b6 * sd * V * alpha;
+    lane1[lane] += Q_mu * (b3 * b3) * (1.0 / b4 * b6) * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_bond_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 2.3873241463784303 * s_bond_energy * (p1 * p1);
+  return W;
+}
+
+// lps_paper_3d_damaged_outputs: per bond 7 add, 11 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
+}
+
+// lps_paper_3d_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void lps_paper_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// lps_paper_3d_intact_residual: per bond 18 add, 38 mul, 3 div, 1 call; per family 0 add, 7 mul, 1 div, 0 call
+void lps_paper_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p4 = 0.3183098861837907 * (p1 * p1) * V0;
+  const double p5 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b6 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b7 = p5 * (Q_lambda - Q_mu);
+    const double b8 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b9 = 1.0 / b6;
+    const double b10 = p4 * (b7 * xi_0 + b8 * xi_0) * b9 * sf * V;
+    const double b11 = p4 * (b7 * xi_1 + b8 * xi_1) * b9 * sf * V;
+    const double b12 = p4 * (b7 * xi_2 + b8 * xi_2) * b9 * sf * V;
+    forces[(k + 1) * 3 + 0] = -b10;
+    lane1[lane] += b10;
+    forces[(k + 1) * 3 + 1] = -b11;
+    lane2[lane] += b11;
+    forces[(k + 1) * 3 + 2] = -b12;
+    lane3[lane] += b12;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_intact_tangent: per bond 18 add, 62 mul, 3 div, 1 call; per family 0 add, 8 mul, 1 div, 0 call
+void lps_paper_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p4 = p1 * p1;
+  const double p5 = 0.3183098861837907 * p4 * V0;
+  const double p6 = 3.0 * s_theta;
+  const double p7 = 4.7746482927568605 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b9 = Q_lambda - Q_mu;
+    const double b10 = p6 * b9;
+    const double b11 = xi_0 * xi_0;
+    const double b12 = xi_1 * xi_1;
+    const double b13 = xi_2 * xi_2;
+    const double b14 = 1.0 / (b11 + b12 + b13);
+    const double b15 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b14;
+    const double b16 = 1.0 / b8;
+    const double b17 = p5 * (b10 * xi_0 + b15 * xi_0) * b16 * sf * V;
+    const double b18 = p5 * (b10 * xi_1 + b15 * xi_1) * b16 * sf * V;
+    const double b19 = p5 * (b10 * xi_2 + b15 * xi_2) * b16 * sf * V;
+    const double b20 = p7 * Q_mu * (b14 * b16) * sf;
+    const double b21 = b20 * xi_1 * xi_0;
+    const double b22 = b20 * xi_2;
+    const double b23 = b22 * xi_0;
+    const double b24 = b22 * xi_1;
+    const double b25 = p2 * b16 * sd * V;
+    const double b26 = p2 * b9 * b16 * sf;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b17;
+    lane1[lane] += b17;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b18;
+    lane2[lane] += b18;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b19;
+    lane3[lane] += b19;
+    factors.direct[k * 9 + 0] = b20 * b11;
+    factors.direct[k * 9 + 1] = b21;
+    factors.direct[k * 9 + 2] = b23;
+    factors.direct[k * 9 + 3] = b21;
+    factors.direct[k * 9 + 4] = b20 * b12;
+    factors.direct[k * 9 + 5] = b24;
+    factors.direct[k * 9 + 6] = b23;
+    factors.direct[k * 9 + 7] = b24;
+    factors.direct[k * 9 + 8] = b20 * b13;
+    factors.right[(k * 1 + 0) * 3 + 0] = b25 * xi_0;
+    factors.right[(k * 1 + 0) * 3 + 1] = b25 * xi_1;
+    factors.right[(k * 1 + 0) * 3 + 2] = b25 * xi_2;
+    factors.left[(k * 1 + 0) * 3 + 0] = b26 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b26 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b26 * xi_2;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_intact_jvp: per bond 16 add, 60 mul, 3 div, 1 call; per family 0 add, 7 mul, 1 div, 0 call
+void lps_paper_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    const double b4 = 1.0 / b3;
+    lane0[lane] += p2 * dY_0 * b4 * sd * V * xi_0 + p2 * dY_1 * b4 * sd * V * xi_1 + p2 * dY_2 * b4 * sd * V * xi_2;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p5 = p1 * p1;
+  const double p6 = 4.7746482927568605 * p5;
+  const double p7 = 0.954929658551372 * ds_theta * p5;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b9 = xi_0 * xi_0;
+    const double b10 = xi_1 * xi_1;
+    const double b11 = xi_2 * xi_2;
+    const double b12 = 1.0 / b8;
+    const double b13 = 1.0 / (b9 + b10 + b11) * b12;
+    const double b14 = p6 * dY_0 * Q_mu * b13 * sf;
+    const double b15 = p6 * dY_1 * Q_mu * b13 * sf;
+    const double b16 = p6 * dY_2 * Q_mu * b13 * sf;
+    const double b17 = b16 * xi_2;
+    const double b18 = p7 * (Q_lambda - Q_mu) * b12 * sf;
+    const double b19 = V0 * (b14 * b9 + b15 * xi_1 * xi_0 + b17 * xi_0 + b18 * xi_0) * V;
+    const double b20 = V0 * (b14 * xi_1 * xi_0 + b15 * b10 + b17 * xi_1 + b18 * xi_1) * V;
+    const double b21 = V0 * (b14 * xi_2 * xi_0 + b15 * xi_2 * xi_1 + b16 * b11 + b18 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b19;
+    lane1[lane] += b19;
+    df[(k + 1) * 3 + 1] = -b20;
+    lane2[lane] += b20;
+    df[(k + 1) * 3 + 2] = -b21;
+    lane3[lane] += b21;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_intact_energy: per bond 7 add, 15 mul, 2 div, 1 call; per family 2 add, 9 mul, 1 div, 0 call
+double lps_paper_3d_intact_energy(const pd::abi::Family& fam) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double P_lambda = fam.params[0];
+  const double P_mu = fam.params[1];
+  double s_theta = 0.0;
+  double s_bond_energy = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double b3 = (Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2;
+    const double b4 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b5 = std::sqrt(b4);
+    const double b6 = 1.0 / b5;
+    lane0[lane] += p2 * b3 * b6 * sd * V;
+    lane1[lane] += Q_mu * (b3 * b3) * (1.0 / b4 * b6) * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_bond_energy += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double W = 0.5 * (P_lambda - P_mu) * (s_theta * s_theta) + 2.3873241463784303 * s_bond_energy * (p1 * p1);
+  return W;
+}
+
+// lps_paper_3d_intact_outputs: per bond 7 add, 10 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
+}
+
+pd::abi::LawDescriptor lps_paper_3d_descriptor() {
+  static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "lps_paper_3d";
+  d.summary = "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic m(delta) = pi delta^4 for every family, 3D; params lambda, mu";
+  d.dim = 3;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
+  d.scratch_per_bond = 1;
+  d.n_moments = 0;
+  d.n_states = 1;
+  d.damaged.moments = &lps_paper_3d_damaged_moments;
+  d.damaged.residual = &lps_paper_3d_damaged_residual;
+  d.damaged.residual_ops = {18, 42, 3, 1};
+  d.damaged.tangent = &lps_paper_3d_damaged_tangent;
+  d.damaged.tangent_ops = {18, 69, 3, 1};
+  d.damaged.jvp = &lps_paper_3d_damaged_jvp;
+  d.damaged.jvp_ops = {16, 67, 3, 1};
+  d.damaged.energy = &lps_paper_3d_damaged_energy;
+  d.damaged.outputs = &lps_paper_3d_damaged_outputs;
+  d.damaged.form = &lps_paper_3d_damaged_form;
+  d.intact.moments = &lps_paper_3d_intact_moments;
+  d.intact.residual = &lps_paper_3d_intact_residual;
+  d.intact.residual_ops = {18, 38, 3, 1};
+  d.intact.tangent = &lps_paper_3d_intact_tangent;
+  d.intact.tangent_ops = {18, 62, 3, 1};
+  d.intact.jvp = &lps_paper_3d_intact_jvp;
+  d.intact.jvp_ops = {16, 60, 3, 1};
+  d.intact.energy = &lps_paper_3d_intact_energy;
+  d.intact.outputs = &lps_paper_3d_intact_outputs;
+  d.intact.form = &lps_paper_3d_intact_form;
+  return d;
+}
+
+// lps_paper_corrected_plane_strain_damaged_moments: per bond 1 add, 9 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_dilatation_moment_0_0 = 0.0;
+  double s_dilatation_moment_0_1 = 0.0;
+  double s_dilatation_moment_1_0 = 0.0;
+  double s_dilatation_moment_1_1 = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0;
+    const double b3 = xi_1 * xi_1;
+    const double b4 = std::sqrt(b2 + b3);
+    const double b5 = p1 * (1.0 / b4) * V * alpha;
+    const double b6 = b5 * xi_1 * xi_0;
+    lane0[lane] += b5 * b2;
+    lane1[lane] += b6;
+    lane2[lane] += b6;
+    lane3[lane] += b5 * b3;
+    }
+  }
+  s_dilatation_moment_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_dilatation_moment_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  moments[0] = s_dilatation_moment_0_0;
+  moments[1] = s_dilatation_moment_0_1;
+  moments[2] = s_dilatation_moment_1_0;
+  moments[3] = s_dilatation_moment_1_1;
+}
+
+// lps_paper_corrected_plane_strain_damaged_residual: per bond 13 add, 35 mul, 3 div, 1 call; per family 12 add, 31 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p19 = 0.47746482927568606 * (p0 * p0 * p0) * V0;
+  const double p20 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b21 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b22 = p20 * (Q_lambda - Q_mu);
+    const double b23 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b24 = 1.0 / b21;
+    const double b25 = p19 * (b22 * xi_0 + b23 * xi_0) * b24 * sf * V * alpha;
+    const double b26 = p19 * (b22 * xi_1 + b23 * xi_1) * b24 * sf * V * alpha;
+    forces[(k + 1) * 2 + 0] = -b25;
+    lane1[lane] += b25;
+    forces[(k + 1) * 2 + 1] = -b26;
+    lane2[lane] += b26;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_damaged_tangent: per bond 15 add, 64 mul, 3 div, 1 call; per family 12 add, 32 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p19 = p0 * p0 * p0;
+  const double p20 = 0.47746482927568606 * p19 * V0;
+  const double p21 = 2.0 * s_theta;
+  const double p22 = 3.8197186342054885 * p19;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b24 = Q_lambda - Q_mu;
+    const double b25 = p21 * b24;
+    const double b26 = xi_0 * xi_0;
+    const double b27 = xi_1 * xi_1;
+    const double b28 = 1.0 / (b26 + b27);
+    const double b29 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b28;
+    const double b30 = 1.0 / b23;
+    const double b31 = p20 * (b25 * xi_0 + b29 * xi_0) * b30 * sf * V * alpha;
+    const double b32 = p20 * (b25 * xi_1 + b29 * xi_1) * b30 * sf * V * alpha;
+    const double b33 = p22 * Q_mu * (b28 * b30) * sf * alpha;
+    const double b34 = b33 * xi_1 * xi_0;
+    const double b35 = p1 * b24 * b30 * sf * alpha;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b31;
+    lane1[lane] += b31;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b32;
+    lane2[lane] += b32;
+    factors.direct[k * 4 + 0] = b33 * b26;
+    factors.direct[k * 4 + 1] = b34;
+    factors.direct[k * 4 + 2] = b34;
+    factors.direct[k * 4 + 3] = b33 * b27;
+    factors.right[(k * 1 + 0) * 2 + 0] = p1 * (p12 * xi_0 + p15 * xi_1) * b30 * sd * V * alpha;
+    factors.right[(k * 1 + 0) * 2 + 1] = p1 * (p16 * xi_0 + p17 * xi_1) * b30 * sd * V * alpha;
+    factors.left[(k * 1 + 0) * 2 + 0] = b35 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b35 * xi_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_damaged_jvp: per bond 10 add, 47 mul, 3 div, 1 call; per family 12 add, 31 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    const double b19 = 1.0 / b18;
+    lane0[lane] += p1 * dY_0 * (p12 * xi_0 + p15 * xi_1) * b19 * sd * V * alpha + p1 * dY_1 * (p16 * xi_0 + p17 * xi_1) * b19 * sd * V * alpha;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p20 = p0 * p0 * p0;
+  const double p21 = 3.8197186342054885 * p20;
+  const double p22 = 0.9549296585513721 * ds_theta * p20;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / b23;
+    const double b27 = 1.0 / (b24 + b25) * b26;
+    const double b28 = p21 * dY_0 * Q_mu * b27 * sf * alpha;
+    const double b29 = p21 * dY_1 * Q_mu * b27 * sf * alpha;
+    const double b30 = p22 * (Q_lambda - Q_mu) * b26 * sf * alpha;
+    const double b31 = V0 * (b28 * b24 + b29 * xi_1 * xi_0 + b30 * xi_0) * V;
+    const double b32 = V0 * (b28 * xi_1 * xi_0 + b29 * b25 + b30 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b31;
+    lane1[lane] += b31;
+    df[(k + 1) * 2 + 1] = -b32;
+    lane2[lane] += b32;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_damaged_outputs: per bond 6 add, 13 mul, 1 div, 1 call; per family 12 add, 26 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_corrected_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_corrected_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+// lps_paper_corrected_plane_strain_intact_moments: per bond 1 add, 8 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_corrected_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_dilatation_moment_0_0 = 0.0;
+  double s_dilatation_moment_0_1 = 0.0;
+  double s_dilatation_moment_1_0 = 0.0;
+  double s_dilatation_moment_1_1 = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0;
+    const double b3 = xi_1 * xi_1;
+    const double b4 = std::sqrt(b2 + b3);
+    const double b5 = p1 * (1.0 / b4) * V;
+    const double b6 = b5 * xi_1 * xi_0;
+    lane0[lane] += b5 * b2;
+    lane1[lane] += b6;
+    lane2[lane] += b6;
+    lane3[lane] += b5 * b3;
+    }
+  }
+  s_dilatation_moment_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_dilatation_moment_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  moments[0] = s_dilatation_moment_0_0;
+  moments[1] = s_dilatation_moment_0_1;
+  moments[2] = s_dilatation_moment_1_0;
+  moments[3] = s_dilatation_moment_1_1;
+}
+
+// lps_paper_corrected_plane_strain_intact_residual: per bond 13 add, 32 mul, 3 div, 1 call; per family 12 add, 31 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p19 = 0.47746482927568606 * (p0 * p0 * p0) * V0;
+  const double p20 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b21 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b22 = p20 * (Q_lambda - Q_mu);
+    const double b23 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b24 = 1.0 / b21;
+    const double b25 = p19 * (b22 * xi_0 + b23 * xi_0) * b24 * sf * V;
+    const double b26 = p19 * (b22 * xi_1 + b23 * xi_1) * b24 * sf * V;
+    forces[(k + 1) * 2 + 0] = -b25;
+    lane1[lane] += b25;
+    forces[(k + 1) * 2 + 1] = -b26;
+    lane2[lane] += b26;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_intact_tangent: per bond 15 add, 57 mul, 3 div, 1 call; per family 12 add, 32 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p19 = p0 * p0 * p0;
+  const double p20 = 0.47746482927568606 * p19 * V0;
+  const double p21 = 2.0 * s_theta;
+  const double p22 = 3.8197186342054885 * p19;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b24 = Q_lambda - Q_mu;
+    const double b25 = p21 * b24;
+    const double b26 = xi_0 * xi_0;
+    const double b27 = xi_1 * xi_1;
+    const double b28 = 1.0 / (b26 + b27);
+    const double b29 = 8.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * b28;
+    const double b30 = 1.0 / b23;
+    const double b31 = p20 * (b25 * xi_0 + b29 * xi_0) * b30 * sf * V;
+    const double b32 = p20 * (b25 * xi_1 + b29 * xi_1) * b30 * sf * V;
+    const double b33 = p22 * Q_mu * (b28 * b30) * sf;
+    const double b34 = b33 * xi_1 * xi_0;
+    const double b35 = p1 * b24 * b30 * sf;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b31;
+    lane1[lane] += b31;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b32;
+    lane2[lane] += b32;
+    factors.direct[k * 4 + 0] = b33 * b26;
+    factors.direct[k * 4 + 1] = b34;
+    factors.direct[k * 4 + 2] = b34;
+    factors.direct[k * 4 + 3] = b33 * b27;
+    factors.right[(k * 1 + 0) * 2 + 0] = p1 * (p12 * xi_0 + p15 * xi_1) * b30 * sd * V;
+    factors.right[(k * 1 + 0) * 2 + 1] = p1 * (p16 * xi_0 + p17 * xi_1) * b30 * sd * V;
+    factors.left[(k * 1 + 0) * 2 + 0] = b35 * xi_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b35 * xi_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_intact_jvp: per bond 10 add, 42 mul, 3 div, 1 call; per family 12 add, 31 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    const double b19 = 1.0 / b18;
+    lane0[lane] += p1 * dY_0 * (p12 * xi_0 + p15 * xi_1) * b19 * sd * V + p1 * dY_1 * (p16 * xi_0 + p17 * xi_1) * b19 * sd * V;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p20 = p0 * p0 * p0;
+  const double p21 = 3.8197186342054885 * p20;
+  const double p22 = 0.9549296585513721 * ds_theta * p20;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b24 = xi_0 * xi_0;
+    const double b25 = xi_1 * xi_1;
+    const double b26 = 1.0 / b23;
+    const double b27 = 1.0 / (b24 + b25) * b26;
+    const double b28 = p21 * dY_0 * Q_mu * b27 * sf;
+    const double b29 = p21 * dY_1 * Q_mu * b27 * sf;
+    const double b30 = p22 * (Q_lambda - Q_mu) * b26 * sf;
+    const double b31 = V0 * (b28 * b24 + b29 * xi_1 * xi_0 + b30 * xi_0) * V;
+    const double b32 = V0 * (b28 * xi_1 * xi_0 + b29 * b25 + b30 * xi_1) * V;
+    df[(k + 1) * 2 + 0] = -b31;
+    lane1[lane] += b31;
+    df[(k + 1) * 2 + 1] = -b32;
+    lane2[lane] += b32;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_intact_outputs: per bond 6 add, 12 mul, 1 div, 1 call; per family 12 add, 26 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_corrected_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_corrected_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
+  static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "lps_paper_corrected_plane_strain";
+  d.summary = "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation only; no energy): K = 1/r built in, analytic m(delta), plane strain; params lambda, mu";
+  d.dim = 2;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
+  d.scratch_per_bond = 1;
+  d.n_moments = 4;
+  d.n_states = 1;
+  d.damaged.moments = &lps_paper_corrected_plane_strain_damaged_moments;
+  d.damaged.residual = &lps_paper_corrected_plane_strain_damaged_residual;
+  d.damaged.residual_ops = {13, 35, 3, 1};
+  d.damaged.tangent = &lps_paper_corrected_plane_strain_damaged_tangent;
+  d.damaged.tangent_ops = {15, 64, 3, 1};
+  d.damaged.jvp = &lps_paper_corrected_plane_strain_damaged_jvp;
+  d.damaged.jvp_ops = {10, 47, 3, 1};
+  d.damaged.outputs = &lps_paper_corrected_plane_strain_damaged_outputs;
+  d.damaged.form = &lps_paper_corrected_plane_strain_damaged_form;
+  d.intact.moments = &lps_paper_corrected_plane_strain_intact_moments;
+  d.intact.residual = &lps_paper_corrected_plane_strain_intact_residual;
+  d.intact.residual_ops = {13, 32, 3, 1};
+  d.intact.tangent = &lps_paper_corrected_plane_strain_intact_tangent;
+  d.intact.tangent_ops = {15, 57, 3, 1};
+  d.intact.jvp = &lps_paper_corrected_plane_strain_intact_jvp;
+  d.intact.jvp_ops = {10, 42, 3, 1};
+  d.intact.outputs = &lps_paper_corrected_plane_strain_intact_outputs;
+  d.intact.form = &lps_paper_corrected_plane_strain_intact_form;
+  return d;
+}
+
+// lps_paper_corrected_3d_damaged_moments: per bond 2 add, 14 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_corrected_3d_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_dilatation_moment_0_0 = 0.0;
+  double s_dilatation_moment_0_1 = 0.0;
+  double s_dilatation_moment_0_2 = 0.0;
+  double s_dilatation_moment_1_0 = 0.0;
+  double s_dilatation_moment_1_1 = 0.0;
+  double s_dilatation_moment_1_2 = 0.0;
+  double s_dilatation_moment_2_0 = 0.0;
+  double s_dilatation_moment_2_1 = 0.0;
+  double s_dilatation_moment_2_2 = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = xi_0 * xi_0;
+    const double b4 = xi_1 * xi_1;
+    const double b5 = xi_2 * xi_2;
+    const double b6 = std::sqrt(b3 + b4 + b5);
+    const double b7 = p2 * (1.0 / b6) * V * alpha;
+    const double b8 = b7 * xi_1 * xi_0;
+    const double b9 = b7 * xi_2;
+    const double b10 = b9 * xi_0;
+    const double b11 = b9 * xi_1;
+    lane0[lane] += b7 * b3;
+    lane1[lane] += b8;
+    lane2[lane] += b10;
+    lane3[lane] += b8;
+    lane4[lane] += b7 * b4;
+    lane5[lane] += b11;
+    lane6[lane] += b10;
+    lane7[lane] += b11;
+    lane8[lane] += b7 * b5;
+    }
+  }
+  s_dilatation_moment_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_dilatation_moment_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_dilatation_moment_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_dilatation_moment_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_dilatation_moment_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_dilatation_moment_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  moments[0] = s_dilatation_moment_0_0;
+  moments[1] = s_dilatation_moment_0_1;
+  moments[2] = s_dilatation_moment_0_2;
+  moments[3] = s_dilatation_moment_1_0;
+  moments[4] = s_dilatation_moment_1_1;
+  moments[5] = s_dilatation_moment_1_2;
+  moments[6] = s_dilatation_moment_2_0;
+  moments[7] = s_dilatation_moment_2_1;
+  moments[8] = s_dilatation_moment_2_2;
+}
+
+// lps_paper_corrected_3d_damaged_residual: per bond 24 add, 51 mul, 3 div, 1 call; per family 53 add, 90 mul, 2 div, 0 call
+void lps_paper_corrected_3d_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p41 = 0.3183098861837907 * (p1 * p1) * V0;
+  const double p42 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b43 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b44 = p42 * (Q_lambda - Q_mu);
+    const double b45 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b46 = 1.0 / b43;
+    const double b47 = p41 * (b44 * xi_0 + b45 * xi_0) * b46 * sf * V * alpha;
+    const double b48 = p41 * (b44 * xi_1 + b45 * xi_1) * b46 * sf * V * alpha;
+    const double b49 = p41 * (b44 * xi_2 + b45 * xi_2) * b46 * sf * V * alpha;
+    forces[(k + 1) * 3 + 0] = -b47;
+    lane1[lane] += b47;
+    forces[(k + 1) * 3 + 1] = -b48;
+    lane2[lane] += b48;
+    forces[(k + 1) * 3 + 2] = -b49;
+    lane3[lane] += b49;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_damaged_tangent: per bond 30 add, 95 mul, 3 div, 1 call; per family 53 add, 91 mul, 2 div, 0 call
+void lps_paper_corrected_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p41 = p1 * p1;
+  const double p42 = 0.3183098861837907 * p41 * V0;
+  const double p43 = 3.0 * s_theta;
+  const double p44 = 4.7746482927568605 * p41;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b46 = Q_lambda - Q_mu;
+    const double b47 = p43 * b46;
+    const double b48 = xi_0 * xi_0;
+    const double b49 = xi_1 * xi_1;
+    const double b50 = xi_2 * xi_2;
+    const double b51 = 1.0 / (b48 + b49 + b50);
+    const double b52 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b51;
+    const double b53 = 1.0 / b45;
+    const double b54 = p42 * (b47 * xi_0 + b52 * xi_0) * b53 * sf * V * alpha;
+    const double b55 = p42 * (b47 * xi_1 + b52 * xi_1) * b53 * sf * V * alpha;
+    const double b56 = p42 * (b47 * xi_2 + b52 * xi_2) * b53 * sf * V * alpha;
+    const double b57 = p44 * Q_mu * (b51 * b53) * sf * alpha;
+    const double b58 = b57 * xi_1 * xi_0;
+    const double b59 = b57 * xi_2;
+    const double b60 = b59 * xi_0;
+    const double b61 = b59 * xi_1;
+    const double b62 = p2 * b46 * b53 * sf * alpha;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b54;
+    lane1[lane] += b54;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b55;
+    lane2[lane] += b55;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b56;
+    lane3[lane] += b56;
+    factors.direct[k * 9 + 0] = b57 * b48;
+    factors.direct[k * 9 + 1] = b58;
+    factors.direct[k * 9 + 2] = b60;
+    factors.direct[k * 9 + 3] = b58;
+    factors.direct[k * 9 + 4] = b57 * b49;
+    factors.direct[k * 9 + 5] = b61;
+    factors.direct[k * 9 + 6] = b60;
+    factors.direct[k * 9 + 7] = b61;
+    factors.direct[k * 9 + 8] = b57 * b50;
+    factors.right[(k * 1 + 0) * 3 + 0] = p2 * (p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * b53 * sd * V * alpha;
+    factors.right[(k * 1 + 0) * 3 + 1] = p2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * b53 * sd * V * alpha;
+    factors.right[(k * 1 + 0) * 3 + 2] = p2 * (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * b53 * sd * V * alpha;
+    factors.left[(k * 1 + 0) * 3 + 0] = b62 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b62 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b62 * xi_2;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_damaged_jvp: per bond 22 add, 76 mul, 3 div, 1 call; per family 53 add, 90 mul, 2 div, 0 call
+void lps_paper_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    const double b41 = 1.0 / b40;
+    lane0[lane] += p2 * dY_0 * (p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * b41 * sd * V * alpha + p2 * dY_1 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * b41 * sd * V * alpha + p2 * dY_2 * (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * b41 * sd * V * alpha;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p42 = p1 * p1;
+  const double p43 = 4.7746482927568605 * p42;
+  const double p44 = 0.954929658551372 * ds_theta * p42;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b46 = xi_0 * xi_0;
+    const double b47 = xi_1 * xi_1;
+    const double b48 = xi_2 * xi_2;
+    const double b49 = 1.0 / b45;
+    const double b50 = 1.0 / (b46 + b47 + b48) * b49;
+    const double b51 = p43 * dY_0 * Q_mu * b50 * sf * alpha;
+    const double b52 = p43 * dY_1 * Q_mu * b50 * sf * alpha;
+    const double b53 = p43 * dY_2 * Q_mu * b50 * sf * alpha;
+    const double b54 = b53 * xi_2;
+    const double b55 = p44 * (Q_lambda - Q_mu) * b49 * sf * alpha;
+    const double b56 = V0 * (b51 * b46 + b52 * xi_1 * xi_0 + b54 * xi_0 + b55 * xi_0) * V;
+    const double b57 = V0 * (b51 * xi_1 * xi_0 + b52 * b47 + b54 * xi_1 + b55 * xi_1) * V;
+    const double b58 = V0 * (b51 * xi_2 * xi_0 + b52 * xi_2 * xi_1 + b53 * b48 + b55 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b56;
+    lane1[lane] += b56;
+    df[(k + 1) * 3 + 1] = -b57;
+    lane2[lane] += b57;
+    df[(k + 1) * 3 + 2] = -b58;
+    lane3[lane] += b58;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_damaged_outputs: per bond 13 add, 20 mul, 1 div, 1 call; per family 53 add, 86 mul, 2 div, 0 call
+void lps_paper_corrected_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_corrected_3d_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_corrected_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
+}
+
+// lps_paper_corrected_3d_intact_moments: per bond 2 add, 13 mul, 1 div, 1 call; per family 0 add, 3 mul, 1 div, 0 call
+void lps_paper_corrected_3d_intact_moments(const pd::abi::Family& fam, double* moments) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_dilatation_moment_0_0 = 0.0;
+  double s_dilatation_moment_0_1 = 0.0;
+  double s_dilatation_moment_0_2 = 0.0;
+  double s_dilatation_moment_1_0 = 0.0;
+  double s_dilatation_moment_1_1 = 0.0;
+  double s_dilatation_moment_1_2 = 0.0;
+  double s_dilatation_moment_2_0 = 0.0;
+  double s_dilatation_moment_2_1 = 0.0;
+  double s_dilatation_moment_2_2 = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double V = fam.V[k];
+    const double b3 = xi_0 * xi_0;
+    const double b4 = xi_1 * xi_1;
+    const double b5 = xi_2 * xi_2;
+    const double b6 = std::sqrt(b3 + b4 + b5);
+    const double b7 = p2 * (1.0 / b6) * V;
+    const double b8 = b7 * xi_1 * xi_0;
+    const double b9 = b7 * xi_2;
+    const double b10 = b9 * xi_0;
+    const double b11 = b9 * xi_1;
+    lane0[lane] += b7 * b3;
+    lane1[lane] += b8;
+    lane2[lane] += b10;
+    lane3[lane] += b8;
+    lane4[lane] += b7 * b4;
+    lane5[lane] += b11;
+    lane6[lane] += b10;
+    lane7[lane] += b11;
+    lane8[lane] += b7 * b5;
+    }
+  }
+  s_dilatation_moment_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_dilatation_moment_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_dilatation_moment_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_dilatation_moment_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_dilatation_moment_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_dilatation_moment_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_dilatation_moment_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_dilatation_moment_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_dilatation_moment_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  moments[0] = s_dilatation_moment_0_0;
+  moments[1] = s_dilatation_moment_0_1;
+  moments[2] = s_dilatation_moment_0_2;
+  moments[3] = s_dilatation_moment_1_0;
+  moments[4] = s_dilatation_moment_1_1;
+  moments[5] = s_dilatation_moment_1_2;
+  moments[6] = s_dilatation_moment_2_0;
+  moments[7] = s_dilatation_moment_2_1;
+  moments[8] = s_dilatation_moment_2_2;
+}
+
+// lps_paper_corrected_3d_intact_residual: per bond 24 add, 47 mul, 3 div, 1 call; per family 53 add, 90 mul, 2 div, 0 call
+void lps_paper_corrected_3d_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; 
+  const double p41 = 0.3183098861837907 * (p1 * p1) * V0;
+  const double p42 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b43 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b44 = p42 * (Q_lambda - Q_mu);
+    const double b45 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b46 = 1.0 / b43;
+    const double b47 = p41 * (b44 * xi_0 + b45 * xi_0) * b46 * sf * V;
+    const double b48 = p41 * (b44 * xi_1 + b45 * xi_1) * b46 * sf * V;
+    const double b49 = p41 * (b44 * xi_2 + b45 * xi_2) * b46 * sf * V;
+    forces[(k + 1) * 3 + 0] = -b47;
+    lane1[lane] += b47;
+    forces[(k + 1) * 3 + 1] = -b48;
+    lane2[lane] += b48;
+    forces[(k + 1) * 3 + 2] = -b49;
+    lane3[lane] += b49;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_intact_tangent: per bond 30 add, 86 mul, 3 div, 1 call; per family 53 add, 91 mul, 2 div, 0 call
+void lps_paper_corrected_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; forces[2] = 0.0; }
+  const double p41 = p1 * p1;
+  const double p42 = 0.3183098861837907 * p41 * V0;
+  const double p43 = 3.0 * s_theta;
+  const double p44 = 4.7746482927568605 * p41;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b46 = Q_lambda - Q_mu;
+    const double b47 = p43 * b46;
+    const double b48 = xi_0 * xi_0;
+    const double b49 = xi_1 * xi_1;
+    const double b50 = xi_2 * xi_2;
+    const double b51 = 1.0 / (b48 + b49 + b50);
+    const double b52 = 15.0 * Q_mu * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * b51;
+    const double b53 = 1.0 / b45;
+    const double b54 = p42 * (b47 * xi_0 + b52 * xi_0) * b53 * sf * V;
+    const double b55 = p42 * (b47 * xi_1 + b52 * xi_1) * b53 * sf * V;
+    const double b56 = p42 * (b47 * xi_2 + b52 * xi_2) * b53 * sf * V;
+    const double b57 = p44 * Q_mu * (b51 * b53) * sf;
+    const double b58 = b57 * xi_1 * xi_0;
+    const double b59 = b57 * xi_2;
+    const double b60 = b59 * xi_0;
+    const double b61 = b59 * xi_1;
+    const double b62 = p2 * b46 * b53 * sf;
+    if (forces != nullptr) forces[(k + 1) * 3 + 0] = -b54;
+    lane1[lane] += b54;
+    if (forces != nullptr) forces[(k + 1) * 3 + 1] = -b55;
+    lane2[lane] += b55;
+    if (forces != nullptr) forces[(k + 1) * 3 + 2] = -b56;
+    lane3[lane] += b56;
+    factors.direct[k * 9 + 0] = b57 * b48;
+    factors.direct[k * 9 + 1] = b58;
+    factors.direct[k * 9 + 2] = b60;
+    factors.direct[k * 9 + 3] = b58;
+    factors.direct[k * 9 + 4] = b57 * b49;
+    factors.direct[k * 9 + 5] = b61;
+    factors.direct[k * 9 + 6] = b60;
+    factors.direct[k * 9 + 7] = b61;
+    factors.direct[k * 9 + 8] = b57 * b50;
+    factors.right[(k * 1 + 0) * 3 + 0] = p2 * (p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * b53 * sd * V;
+    factors.right[(k * 1 + 0) * 3 + 1] = p2 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * b53 * sd * V;
+    factors.right[(k * 1 + 0) * 3 + 2] = p2 * (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * b53 * sd * V;
+    factors.left[(k * 1 + 0) * 3 + 0] = b62 * xi_0;
+    factors.left[(k * 1 + 0) * 3 + 1] = b62 * xi_1;
+    factors.left[(k * 1 + 0) * 3 + 2] = b62 * xi_2;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  if (forces != nullptr) forces[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_intact_jvp: per bond 22 add, 69 mul, 3 div, 1 call; per family 53 add, 90 mul, 2 div, 0 call
+void lps_paper_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    const double b41 = 1.0 / b40;
+    lane0[lane] += p2 * dY_0 * (p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * b41 * sd * V + p2 * dY_1 * (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * b41 * sd * V + p2 * dY_2 * (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * b41 * sd * V;
+    }
+  }
+  ds_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  df[0] = 0.0; df[1] = 0.0; df[2] = 0.0; 
+  const double p42 = p1 * p1;
+  const double p43 = 4.7746482927568605 * p42;
+  const double p44 = 0.954929658551372 * ds_theta * p42;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double dY_0 = dy[(k + 1) * 3 + 0] - dy[0];
+    const double Q_mu = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[1], fam.nbr_params[k * 2 + 1]) : fam.params[1]);
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double dY_1 = dy[(k + 1) * 3 + 1] - dy[1];
+    const double dY_2 = dy[(k + 1) * 3 + 2] - dy[2];
+    const double Q_lambda = (fam.nbr_params != nullptr ? pd::abi::harmonic_mean(fam.params[0], fam.nbr_params[k * 2 + 0]) : fam.params[0]);
+    const double V = fam.V[k];
+    const double b46 = xi_0 * xi_0;
+    const double b47 = xi_1 * xi_1;
+    const double b48 = xi_2 * xi_2;
+    const double b49 = 1.0 / b45;
+    const double b50 = 1.0 / (b46 + b47 + b48) * b49;
+    const double b51 = p43 * dY_0 * Q_mu * b50 * sf;
+    const double b52 = p43 * dY_1 * Q_mu * b50 * sf;
+    const double b53 = p43 * dY_2 * Q_mu * b50 * sf;
+    const double b54 = b53 * xi_2;
+    const double b55 = p44 * (Q_lambda - Q_mu) * b49 * sf;
+    const double b56 = V0 * (b51 * b46 + b52 * xi_1 * xi_0 + b54 * xi_0 + b55 * xi_0) * V;
+    const double b57 = V0 * (b51 * xi_1 * xi_0 + b52 * b47 + b54 * xi_1 + b55 * xi_1) * V;
+    const double b58 = V0 * (b51 * xi_2 * xi_0 + b52 * xi_2 * xi_1 + b53 * b48 + b55 * xi_2) * V;
+    df[(k + 1) * 3 + 0] = -b56;
+    lane1[lane] += b56;
+    df[(k + 1) * 3 + 1] = -b57;
+    lane2[lane] += b57;
+    df[(k + 1) * 3 + 2] = -b58;
+    lane3[lane] += b58;
+    }
+  }
+  df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_intact_outputs: per bond 13 add, 19 mul, 1 div, 1 call; per family 53 add, 86 mul, 2 div, 0 call
+void lps_paper_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// lps_paper_corrected_3d_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 9 multiply-adds per d x d block (9 without the structure); 0 structurally zero factor entries skipped
+void lps_paper_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 3;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  double rs_0_2 = 0.0;
+  double ls_0_2 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 3 + 0];
+    ls_0_0 += c * factors.left[k * 3 + 0];
+    rs_0_1 += factors.right[k * 3 + 1];
+    ls_0_1 += c * factors.left[k * 3 + 1];
+    rs_0_2 += factors.right[k * 3 + 2];
+    ls_0_2 += c * factors.left[k * 3 + 2];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_0_2 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  double center_1_2 = 0.0;
+  double center_2_0 = 0.0;
+  double center_2_1 = 0.0;
+  double center_2_2 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 0) * n;
+      const double a_0 = -c * factors.left[i * 3 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 0];
+      {
+        const double v = c * (factors.direct[i * 9 + 0] + factors.left[i * 3 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 1];
+      {
+        const double v = c * (factors.direct[i * 9 + 1] + factors.left[i * 3 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 2];
+      {
+        const double v = c * (factors.direct[i * 9 + 2] + factors.left[i * 3 + 0] * rs_0_2);
+        row[2] = v;
+        center_0_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 1) * n;
+      const double a_0 = -c * factors.left[i * 3 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 3];
+      {
+        const double v = c * (factors.direct[i * 9 + 3] + factors.left[i * 3 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 4];
+      {
+        const double v = c * (factors.direct[i * 9 + 4] + factors.left[i * 3 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 5];
+      {
+        const double v = c * (factors.direct[i * 9 + 5] + factors.left[i * 3 + 1] * rs_0_2);
+        row[2] = v;
+        center_1_2 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 3 + 2) * n;
+      const double a_0 = -c * factors.left[i * 3 + 2];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[3 + k * 3 + 0] = a_0 * factors.right[k * 3 + 0];
+        row[3 + k * 3 + 1] = a_0 * factors.right[k * 3 + 1];
+        row[3 + k * 3 + 2] = a_0 * factors.right[k * 3 + 2];
+      }
+      row[(i + 1) * 3 + 0] -= c * factors.direct[i * 9 + 6];
+      {
+        const double v = c * (factors.direct[i * 9 + 6] + factors.left[i * 3 + 2] * rs_0_0);
+        row[0] = v;
+        center_2_0 -= v;
+      }
+      row[(i + 1) * 3 + 1] -= c * factors.direct[i * 9 + 7];
+      {
+        const double v = c * (factors.direct[i * 9 + 7] + factors.left[i * 3 + 2] * rs_0_1);
+        row[1] = v;
+        center_2_1 -= v;
+      }
+      row[(i + 1) * 3 + 2] -= c * factors.direct[i * 9 + 8];
+      {
+        const double v = c * (factors.direct[i * 9 + 8] + factors.left[i * 3 + 2] * rs_0_2);
+        row[2] = v;
+        center_2_2 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+    row[2] = center_0_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 0] + ls_0_0 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 1] + ls_0_0 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 2] + ls_0_0 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+    row[2] = center_1_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 3] + ls_0_1 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 4] + ls_0_1 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 5] + ls_0_1 * factors.right[k * 3 + 2];
+    }
+  }
+  {
+    double* __restrict row = M + 2 * n;
+    row[0] = center_2_0;
+    row[1] = center_2_1;
+    row[2] = center_2_2;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 3 + 0] = c * factors.direct[k * 9 + 6] + ls_0_2 * factors.right[k * 3 + 0];
+      row[(k + 1) * 3 + 1] = c * factors.direct[k * 9 + 7] + ls_0_2 * factors.right[k * 3 + 1];
+      row[(k + 1) * 3 + 2] = c * factors.direct[k * 9 + 8] + ls_0_2 * factors.right[k * 3 + 2];
+    }
+  }
+}
+
+pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
+  static const char* const params[] = {"lambda", "mu", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "lps_paper_corrected_3d";
+  d.summary = "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation only; no energy): K = 1/r built in, analytic m(delta), 3D; params lambda, mu";
+  d.dim = 3;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.has_dilatation_sum = true;
+  d.uses_pair_params = true;
+  d.scratch_per_bond = 1;
+  d.n_moments = 9;
+  d.n_states = 1;
+  d.damaged.moments = &lps_paper_corrected_3d_damaged_moments;
+  d.damaged.residual = &lps_paper_corrected_3d_damaged_residual;
+  d.damaged.residual_ops = {24, 51, 3, 1};
+  d.damaged.tangent = &lps_paper_corrected_3d_damaged_tangent;
+  d.damaged.tangent_ops = {30, 95, 3, 1};
+  d.damaged.jvp = &lps_paper_corrected_3d_damaged_jvp;
+  d.damaged.jvp_ops = {22, 76, 3, 1};
+  d.damaged.outputs = &lps_paper_corrected_3d_damaged_outputs;
+  d.damaged.form = &lps_paper_corrected_3d_damaged_form;
+  d.intact.moments = &lps_paper_corrected_3d_intact_moments;
+  d.intact.residual = &lps_paper_corrected_3d_intact_residual;
+  d.intact.residual_ops = {24, 47, 3, 1};
+  d.intact.tangent = &lps_paper_corrected_3d_intact_tangent;
+  d.intact.tangent_ops = {30, 86, 3, 1};
+  d.intact.jvp = &lps_paper_corrected_3d_intact_jvp;
+  d.intact.jvp_ops = {22, 69, 3, 1};
+  d.intact.outputs = &lps_paper_corrected_3d_intact_outputs;
+  d.intact.form = &lps_paper_corrected_3d_intact_form;
   return d;
 }
 

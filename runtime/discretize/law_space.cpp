@@ -76,7 +76,13 @@ ReproducingSpace law_reproducing_space(std::string_view law, int dim, double (*w
     space.terms.insert(space.terms.end(), t.begin(), t.end());
   };
   std::string radial = std::string(influence);
-  if (starts_with(law, "silling_") || starts_with(law, "lps_")) {
+  if (starts_with(law, "lps_paper_")) {
+    // Paper 001's LPS as written has its kernel K = 1/r built in (laws/lps.cpp): the
+    // scene's influence does not enter its sums. K = (r/delta)^-1 up to a constant.
+    add(3, 4, 2);
+    space.weight = {{1.0, -1}};
+    radial = "its built-in kernel K = 1/r";
+  } else if (starts_with(law, "silling_") || starts_with(law, "lps_")) {
     add(3, 4, 2);
     space.weight = influence_power_series(weight, influence);
   } else if (starts_with(law, "oterkus_")) {

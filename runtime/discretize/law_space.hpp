@@ -11,7 +11,8 @@
 //
 //  - silling_*, lps_* (also lps_corrected_*): m = S w r^2 and theta ~ S w xi(x)xi : eps are
 //    traces of the stress sum S w xi^4/r^2 : eps; the force sum needs w xi^3/r^2 (and
-//    w xi, its trace). Space: w xi^b / r^2, |b| = 3 and 4.
+//    w xi, its trace). Space: w xi^b / r^2, |b| = 3 and 4. lps_paper_* (paper 001 as
+//    written) have K = 1/r built in: xi^b / r^3 whatever the scene's influence.
 //  - oterkus_*: e = xi . eps xi / r, n (x) xi = xi (x) xi / r: theta ~ S w xi(x)xi/r : eps,
 //    d = dim / S w r (its trace), stress ~ S w xi^4/r^2 : eps, a from S w r^2 and b from
 //    S w xi1^2 xi2^2/r^2 (both in that span), force sum S w xi/r and S w xi^3/r^2.

@@ -75,7 +75,7 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
 INSTANTIATE_TEST_SUITE_P(AllLawsAllInfluences, Patch, testing::ValuesIn(cases()), name);
 
 TEST(CorrectedDilatation, ExactForLinearFieldsOnTruncatedAndDamagedFamilies) {
-  for (const char* lname : {"lps_corrected_plane_strain", "lps_corrected_3d"}) {
+  for (const char* lname : {"lps_corrected_plane_strain", "lps_corrected_3d", "lps_paper_corrected_plane_strain", "lps_paper_corrected_3d"}) {
     const auto* law = pd::abi::find_law(lname);
     ASSERT_NE(law, nullptr);
     for (auto t : {pd::verify::Truncation::Interior, pd::verify::Truncation::Edge, pd::verify::Truncation::Corner}) {
