@@ -1,8 +1,9 @@
 // Paper 001 Table 2: the hydrostatically loaded circular inclusion (§4.3, eqs. 4.8-4.12)
 // on uniform and perturbed unit-square grids, beside the paper's numbers, with the time
 // each run costs.
-//   build/bin/paper001_table2 [--only COLUMN] [--P value] [--perturbation p] [--seed s] [n ...]
-// (default grids 16 32 64 128; --perturbation replaces the perturbed columns' 0.2 h)
+//   build/bin/paper001_table2 [--only COLUMN] [--P value] [--perturbation p] [--seed s] [--law LAW] [n ...]
+// (default grids 16 32 64 128; --perturbation replaces the perturbed columns' 0.2 h; --law:
+// another LPS of (lambda, mu), e.g. lps_paper_plane_strain with paper 001's analytic m(delta))
 // Set-up as paper 001 §4 and Table 1: lattice spacing h = 1/n (perturbed by 0.2 h in the
 // "perturbed" columns), delta = 3.5 h, the exact field imposed on a Dirichlet layer of
 // width delta, OBQ weights with paper001_space, LPS with the harmonic pair means of eq.
@@ -40,7 +41,7 @@ std::array<double, 2> lame_from_bulk(double K, double nu) {
 
 int main(int argc, char** argv) {
   std::vector<int> grids;
-  std::string only;
+  std::string only, law = "lps_plane_strain";
   double P = 1.0, perturbation = 0.2;
   int seed = 1;
   for (int i = 1; i < argc; ++i) {
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     else if (std::string(argv[i]) == "--P" && i + 1 < argc) P = std::atof(argv[++i]);
     else if (std::string(argv[i]) == "--perturbation" && i + 1 < argc) perturbation = std::atof(argv[++i]);
     else if (std::string(argv[i]) == "--seed" && i + 1 < argc) seed = std::atoi(argv[++i]);
+    else if (std::string(argv[i]) == "--law" && i + 1 < argc) law = argv[++i];
     else grids.push_back(std::atoi(argv[i]));
   }
   if (grids.empty()) grids = {16, 32, 64, 128};
@@ -72,6 +74,7 @@ int main(int argc, char** argv) {
     for (int n : grids) {
       pd::ManufacturedSetup s;
       s.n = n;
+      s.law = law;
       s.perturbation = col.perturbation > 0 ? perturbation : 0.0;
       s.seed = seed;
       s.lambda = out[0], s.mu = out[1];

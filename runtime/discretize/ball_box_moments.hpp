@@ -25,4 +25,13 @@ double ball_box_moment_2d(const BondMonomial& f, double delta, const double* cen
 // True when the ball B_delta(center) lies inside the box (the closed-form ball moment holds).
 bool ball_inside_box(double delta, const double* center, const Box2& box);
 
+// int over the part of B_delta(center) that the centre sees past a disk (disk centre
+// `disk`, radius a, the centre outside it) of f(y - center) dy: the points y whose segment
+// from the centre does not meet the disk, which are the bonds a hole leaves intact when it
+// breaks every bond crossing its circle (paper 001 §4.2). Polar form as above, with R(t)
+// the distance to the circle where the ray meets it; Gauss-Legendre on the arcs between
+// the tangent directions and the circle's crossings of the horizon, in a variable that
+// smooths R's square-root edge at a tangent.
+double ball_disk_shadow_moment_2d(const BondMonomial& f, double delta, const double* center, const double* disk, double a);
+
 }  // namespace pd

@@ -23,21 +23,29 @@ std::string where(int dim, const double* center) {
 std::vector<double> obq_family_weights(const ReproducingSpace& space, const double* xi, int n, double delta,
                                        int particle, const double* center, const Box2* body) {
   const int dim = space.dim;
-  const int m = static_cast<int>(space.terms.size());
-  // Scaled bonds xi/delta keep A of order one at any h: sum_j f(xi_j/delta) omega_j
-  // = delta^d I_unit[f] for a monomial f (the delta^(|b|-s) of both sides cancels).
-  Eigen::MatrixXd At(n, m);  // A^T: row j is bond j
-  Eigen::VectorXd b(m);
   // Cut ball: the moments of the unit ball about center/delta in the body scaled by 1/delta.
   const bool cut = body && dim == 2 && !ball_inside_box(delta, center, *body);
   const double unit_center[2] = {cut ? center[0] / delta : 0, cut ? center[1] / delta : 0};
   Box2 unit_body;
   if (cut)
     for (int a = 0; a < 2; ++a) unit_body.lo[a] = body->lo[a] / delta, unit_body.hi[a] = body->hi[a] / delta;
+  return obq_family_weights_over(space, xi, n, delta, particle, center, [&](const BondMonomial& f) {
+    return cut ? ball_box_moment_2d(f, 1.0, unit_center, unit_body) : ball_moment(dim, f, 1.0);
+  });
+}
+
+std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n, double delta,
+                                            int particle, const double* center,
+                                            const std::function<double(const BondMonomial&)>& unit_moment) {
+  const int dim = space.dim;
+  const int m = static_cast<int>(space.terms.size());
+  // Scaled bonds xi/delta keep A of order one at any h: sum_j f(xi_j/delta) omega_j
+  // = delta^d I_unit[f] for a monomial f (the delta^(|b|-s) of both sides cancels).
+  Eigen::MatrixXd At(n, m);  // A^T: row j is bond j
+  Eigen::VectorXd b(m);
   for (int t = 0; t < m; ++t) {
     b[t] = 0;
-    for (const auto& [c, f] : weighted_term(space, space.terms[t]))
-      b[t] += c * std::pow(delta, dim) * (cut ? ball_box_moment_2d(f, 1.0, unit_center, unit_body) : ball_moment(dim, f, 1.0));
+    for (const auto& [c, f] : weighted_term(space, space.terms[t])) b[t] += c * std::pow(delta, dim) * unit_moment(f);
   }
   for (int j = 0; j < n; ++j) {
     double scaled[3] = {0, 0, 0};

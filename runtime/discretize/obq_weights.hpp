@@ -7,6 +7,7 @@
 // equations). The weights are not symmetric: omega_{j,i} != omega_{i,j} in general.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -34,6 +35,12 @@ class NotUnisolventError : public std::runtime_error {
 // cover near a free surface.
 std::vector<double> obq_family_weights(const ReproducingSpace& space, const double* xi, int n, double delta,
                                        int particle, const double* center, const Box2* body = nullptr);
+// The same over any region of the ball: unit_moment(f) is the integral of f over the
+// region scaled by 1/delta (the unit ball's moment for the whole ball). Used for the
+// families a hole cut (ball_disk_shadow_moment_2d), over their intact bonds.
+std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n, double delta,
+                                            int particle, const double* center,
+                                            const std::function<double(const BondMonomial&)>& unit_moment);
 
 // The weights of every family, one per bond in the compressed rows of `bonds`. Every bond
 // counts whatever its alpha: paper 001 (§4) computes the weights on the perturbed points

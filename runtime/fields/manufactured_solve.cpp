@@ -52,6 +52,41 @@ bool meets_circle(const double* xa, const double* xb, const double* c, double R)
   const double farthest = std::max(std::hypot(f[0], f[1]), std::hypot(xb[0] - c[0], xb[1] - c[1]));
   return nearest <= R && farthest >= R;
 }
+// The families outside the hole that lost bonds to it: new weights over their intact
+// bonds, exact for the space over the part of the ball the centre sees past the disk
+// (ball_disk_shadow_moment_2d). A family left with too few intact bonds for the space
+// keeps its whole-ball weights and is counted. Every broken bond then weighs 0 in both
+// directions (collocation needs a pair's two weights zero together; a broken bond
+// carries no force whatever its weight).
+void reweigh_cut_families(const Particles& P, const Bonds& B, const ReproducingSpace& space, const std::vector<char>& needed,
+                          const ManufacturedSetup& s, std::vector<double>& w, ManufacturedResult& r) {
+  for (std::size_t b = 0; b < w.size(); ++b)
+    if (B.alpha[b] == 0) w[b] = 0;
+  for (int p = 0; p < P.size(); ++p) {
+    const double* x = P.position(p);
+    if (!needed[p] || std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) <= s.hole_radius) continue;
+    std::vector<double> xi;
+    std::vector<int> intact;
+    for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b)
+      if (B.alpha[b] != 0) {
+        intact.push_back(b);
+        xi.insert(xi.end(), B.xi.begin() + 2 * b, B.xi.begin() + 2 * b + 2);
+      }
+    if (static_cast<int>(intact.size()) == B.family_size(p)) continue;
+    const double delta = B.delta[p];
+    const double unit_x[2] = {x[0] / delta, x[1] / delta}, unit_c[2] = {s.hole_center[0] / delta, s.hole_center[1] / delta};
+    try {
+      const std::vector<double> v =
+          obq_family_weights_over(space, xi.data(), static_cast<int>(intact.size()), delta, p, x, [&](const BondMonomial& f) {
+            return ball_disk_shadow_moment_2d(f, 1.0, unit_x, unit_c, s.hole_radius / delta);
+          });
+      for (std::size_t k = 0; k < intact.size(); ++k) w[intact[k]] = v[k];
+      ++r.cut_weight_families;
+    } catch (const NotUnisolventError&) {
+      ++r.cut_weight_fallbacks;
+    }
+  }
+}
 }  // namespace
 
 ManufacturedResult solve_manufactured(const ManufacturedField& field, const ManufacturedSetup& s) {
@@ -96,13 +131,10 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   Collocation collocation;
   AssemblerOptions options;
   options.intact = true;
-  if (s.obq) {
-    std::vector<double> w =
-        obq_weights(P, B, s.odd_terms ? paper001_odd_space(2) : paper001_space(2), families_reaching(B, solved));
-    if (s.symmetric_weights) w = symmetric_pair_weights(P, B, w);
-    collocation = make_collocation(P, B, std::move(w));
-    options.collocation = &collocation;
-  }
+  std::vector<double> w;
+  const ReproducingSpace space = s.odd_terms ? paper001_odd_space(2) : paper001_space(2);
+  const std::vector<char> needed = families_reaching(B, solved);
+  if (s.obq) w = obq_weights(P, B, space, needed);
   r.weights_seconds = seconds_since(t0);
   if (s.hole_radius > 0) {  // the weights above saw the whole cloud (§4: "before bonds are broken")
     for (int p = 0; p < n; ++p)
@@ -112,6 +144,16 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
           ++r.broken_bonds;
         }
     options.intact = r.broken_bonds == 0;
+  }
+  if (s.obq && s.hole_radius > 0 && s.hole_cut_weights) {
+    t0 = std::chrono::steady_clock::now();
+    reweigh_cut_families(P, B, space, needed, s, w, r);
+    r.weights_seconds += seconds_since(t0);
+  }
+  if (s.obq) {
+    if (s.symmetric_weights) w = symmetric_pair_weights(P, B, w);
+    collocation = make_collocation(P, B, std::move(w));
+    options.collocation = &collocation;
   }
 
   t0 = std::chrono::steady_clock::now();
@@ -148,7 +190,9 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.assembly_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  r.symmetric_matrix = assembler.symmetric();
+  // Cholesky needs a symmetric K: collocation and pair jumps make it non-symmetric, and so
+  // does a law with no energy (Oterkus, lps_paper_corrected_*) on any quadrature.
+  r.symmetric_matrix = assembler.has_energy();
   auto solver = make_sparse_solver(r.symmetric_matrix ? LinearMethod::cholmod : LinearMethod::umfpack, {});
   solver->analyse(A);
   if (!solver->factor(A)) throw std::runtime_error("solve_manufactured: " + solver->failure());

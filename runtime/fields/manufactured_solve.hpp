@@ -41,6 +41,11 @@ struct ManufacturedSetup {
   // > 0: the error only over particles at least this far from the hole's circle (a region
   // that does not change with h), to tell the hole's surface layer from the rest.
   double hole_error_margin = 0;
+  // Not the paper's (§4 keeps the whole-ball weights, a broken bond weighing 0): the
+  // families that lost bonds to the hole get new weights over their intact bonds, exact
+  // over the part of the ball they see past the hole. A test of what the whole-ball
+  // weights of a cut family cost (docs/paper001.md, Fig. 1).
+  bool hole_cut_weights = false;
   bool symmetric_weights = false;  // symmetric_pair_weights (collocation.hpp) on the OBQ weights
   // A circular inclusion (paper 001 §4.3) when inclusion_radius > 0: the particles closer
   // than the radius to inclusion_centre take (inclusion_lambda, inclusion_mu), the others
@@ -56,6 +61,9 @@ struct ManufacturedResult {
   double rms_component[2] = {0, 0};  // the same norm of u_x - u_x,ex and u_y - u_y,ex alone
   int particles = 0, solved = 0, measured = 0;
   int broken_bonds = 0;  // by the hole, each direction counted
+  // hole_cut_weights: the families reweighed over their cut ball, and those that kept the
+  // whole-ball weights (too few intact bonds for the space).
+  int cut_weight_families = 0, cut_weight_fallbacks = 0;
   bool symmetric_matrix = false;  // the solver used: CHOLMOD when true, UMFPACK otherwise
   double weights_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
   // With keep_solution: every particle's position, computed and exact displacement, [n*2].
