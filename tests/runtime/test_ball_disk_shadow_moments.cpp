@@ -12,31 +12,12 @@
 #include <vector>
 
 #include "discretize/ball_box_moments.hpp"
+#include "polar_quadrature.hpp"
 
 namespace {
-// Gauss-Legendre by Newton on P_n (independent of the library's Golub-Welsch rule).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.assign(n, 0), w.assign(n, 0);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1, p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::fabs(dz) < 1e-15) break;
-    }
-    x[i] = z, w[i] = 2 / ((1 - z * z) * dp * dp);
-  }
-}
-
 double reference(const pd::BondMonomial& f, double delta, const double* c, const double* disk, double a) {
   std::vector<double> x, w;
-  gauss_legendre(40, x, w);
+  pd_test::gauss_legendre(40, x, w);  // Newton on P_n: not the library's Golub-Welsch rule
   const double g[2] = {disk[0] - c[0], disk[1] - c[1]}, dist = std::hypot(g[0], g[1]), phi = std::atan2(g[1], g[0]);
   const double L = std::sqrt(dist * dist - a * a);
   auto half_width = [&](double r) {
