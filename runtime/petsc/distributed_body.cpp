@@ -142,9 +142,9 @@ void DistributedBody::tangent_product(const FamilyAssembler& a, const std::vecto
                          });
 }
 
-Mat DistributedBody::create_matrix(const Bonds& bonds) const {
+Mat DistributedBody::create_matrix(const FamilyAssembler& a) const {
   std::vector<int> diagonal, off;
-  block_row_counts(part_, bonds, diagonal, off);
+  block_row_counts(part_, *a.inputs().bonds, coupling_of_law(a.law().n_states), diagonal, off);
   std::vector<PetscInt> d_nnz(diagonal.begin(), diagonal.end()), o_nnz(off.begin(), off.end());
   Mat K;
   const PetscInt m = static_cast<PetscInt>(part_.owned()) * dim_;
@@ -163,6 +163,28 @@ Mat DistributedBody::create_matrix(const Bonds& bonds) const {
   return K;
 }
 
+// A law without states: of the dense local matrix M ((L+1) dim square, row-major) only
+// the center's block row and the blocks (k, 0) and (k, k) are nonzero; those go in, so the
+// matrix keeps create_matrix's one-horizon pattern.
+void DistributedBody::add_pair_blocks(const double* M, int L, const std::vector<PetscInt>& ids,
+                                      std::vector<PetscScalar>& values, Mat K) const {
+  const int d = dim_, m = (L + 1) * d;
+  values.resize(static_cast<std::size_t>(d) * m);
+  for (int r = 0; r < d; ++r)
+    for (int c = 0; c < m; ++c) values[static_cast<std::size_t>(r) * m + c] = -M[static_cast<std::size_t>(r) * m + c];
+  check(MatSetValuesBlocked(K, 1, ids.data(), L + 1, ids.data(), values.data(), ADD_VALUES), "MatSetValuesBlocked");
+  for (int k = 1; k <= L; ++k) {
+    const PetscInt cols[2] = {ids[0], ids[k]};
+    for (int r = 0; r < d; ++r)
+      for (int q = 0; q < d; ++q) {
+        const std::size_t row = static_cast<std::size_t>(k * d + r) * m;
+        values[static_cast<std::size_t>(r) * 2 * d + q] = -M[row + q];
+        values[static_cast<std::size_t>(r) * 2 * d + d + q] = -M[row + k * d + q];
+      }
+    check(MatSetValuesBlocked(K, 1, &ids[k], 2, cols, values.data(), ADD_VALUES), "MatSetValuesBlocked");
+  }
+}
+
 void DistributedBody::assemble_matrix(const FamilyAssembler& a, const std::vector<double>& u, Mat K) const {
   check(MatZeroEntries(K), "MatZeroEntries");
   FamilyGather g(a.inputs());
@@ -172,6 +194,7 @@ void DistributedBody::assemble_matrix(const FamilyAssembler& a, const std::vecto
   const Collocation* coll = a.inputs().collocation;
   std::vector<PetscInt> ids;
   std::vector<PetscScalar> values;
+  const bool pairwise = coupling_of_law(S) == Coupling::pairwise;
   int bad = -1;
   for (int i = 0; i < part_.owned() && bad < 0; ++i) {
     const int p = part_.owned_particle(i);
@@ -190,6 +213,10 @@ void DistributedBody::assemble_matrix(const FamilyAssembler& a, const std::vecto
     // layout for MatSetValuesBlocked over the family's particles.
     ids.resize(static_cast<std::size_t>(L) + 1);
     for (int k = 0; k <= L; ++k) ids[k] = part_.order.position[g.particle(p, k)];
+    if (pairwise) {
+      add_pair_blocks(M, L, ids, values, K);
+      continue;
+    }
     values.resize(static_cast<std::size_t>(m) * m);
     for (std::size_t e = 0; e < values.size(); ++e) values[e] = -M[e];  // K = -df/du
     check(MatSetValuesBlocked(K, L + 1, ids.data(), L + 1, ids.data(), values.data(), ADD_VALUES),

@@ -51,13 +51,17 @@ class DistributedBody {
   void tangent_product(const FamilyAssembler& a, const std::vector<double>& u, const std::vector<double>& v,
                        std::vector<double>& Kv) const;
   // A matrix of dim x dim blocks (MATAIJ with block size dim; -mat_type may change it) preallocated
-  // exactly for the two-horizon pattern of `bonds` (its families).
-  Mat create_matrix(const Bonds& bonds) const;
+  // exactly for a's pattern: its bonds, two horizons for a law with states and one for a law
+  // without (Coupling::pairwise: a bond-based law's 3D tangent at delta = 2h has 33 blocks a
+  // row instead of 257).
+  Mat create_matrix(const FamilyAssembler& a) const;
   // K = -df/du of a's families at u (full-length), off-process blocks sent by PETSc.
   void assemble_matrix(const FamilyAssembler& a, const std::vector<double>& u, Mat K) const;
 
  private:
   void agree_finite(int bad_particle, const char* stage, const FamilyAssembler& a) const;
+  void add_pair_blocks(const double* M, int L, const std::vector<PetscInt>& ids, std::vector<PetscScalar>& values,
+                       Mat K) const;
   template <class Kernel>
   void scatter_family_vectors(const FamilyAssembler& a, const char* stage, double sign,
                               const std::vector<double>& u, std::vector<double>& out, Kernel&& kernel) const;

@@ -71,7 +71,7 @@ Partition make_partition(const Particles& particles, const Bonds& bonds, int ran
   return part;
 }
 
-void block_row_counts(const Partition& part, const Bonds& bonds, std::vector<int>& diagonal,
+void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling, std::vector<int>& diagonal,
                       std::vector<int>& off) {
   const int n = bonds.particle_count();
   diagonal.assign(static_cast<std::size_t>(part.owned()), 0);
@@ -91,6 +91,7 @@ void block_row_counts(const Partition& part, const Bonds& bonds, std::vector<int
       for (int b = bonds.offsets[f]; b < bonds.offsets[f + 1]; ++b) visit(bonds.neighbor[b]);
     };
     family(row);
+    if (coupling == Coupling::pairwise) continue;  // T_ik = 0 for i != k: no two-horizon blocks
     for (int b = bonds.offsets[row]; b < bonds.offsets[row + 1]; ++b) family(bonds.neighbor[b]);
   }
 }

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "assembly/sparsity_pattern.hpp"
 #include "particles.hpp"
 
 namespace pd {
@@ -36,10 +37,12 @@ struct Partition {
 };
 Partition make_partition(const Particles& particles, const Bonds& bonds, int rank, int ranks);
 
-// Block (particle) nonzeros of the owned rows of the two-horizon pattern of `bonds` in
-// the partition's order: row i couples to every particle of every family that holds i
-// (i's own and its neighbours'). diagonal: columns owned by this rank; off: the others.
-void block_row_counts(const Partition& part, const Bonds& bonds, std::vector<int>& diagonal,
+// Block (particle) nonzeros of the owned rows of the pattern of `bonds` in the
+// partition's order. Coupling::family (two horizons): row i couples to every particle of
+// every family that holds i (i's own and its neighbours'); Coupling::pairwise (one
+// horizon, a law without states): to i and its own neighbours only.
+// diagonal: columns owned by this rank; off: the others.
+void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling, std::vector<int>& diagonal,
                       std::vector<int>& off);
 
 }  // namespace pd

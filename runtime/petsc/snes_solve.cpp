@@ -83,7 +83,7 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
       }
 
   Vec x = body.create_vector(), r = body.create_vector();
-  Mat P = body.create_matrix(*pb.preconditioner->inputs().bonds), J;
+  Mat P = body.create_matrix(*pb.preconditioner), J;
   const PetscInt m = static_cast<PetscInt>(part.owned()) * d;
   check(MatCreateShell(PETSC_COMM_WORLD, m, m, PETSC_DETERMINE, PETSC_DETERMINE, &c, &J), "MatCreateShell");
   check(MatShellSetOperation(J, MATOP_MULT, reinterpret_cast<void (*)(void)>(shell_mult)),
