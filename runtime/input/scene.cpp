@@ -567,7 +567,14 @@ Scene read(const YAML::Node& root, const std::string& file) {
     }
   }
   if (m.has("body_force")) s.body_force = read_body_force(m.get("body_force"), s);
-  if (m.has("solver")) s.solver = read_solver(m.get("solver"));
+  if (m.has("solver")) {
+    s.solver = read_solver(m.get("solver"));
+    // The distributed families run the bond kernels; the Gauss families' assembler is serial.
+    if (s.solver.backend == Backend::petsc && s.gauss_points > 0)
+      MapReader(m.get("solver")).get("backend").fail(
+          "backend petsc does not integrate over Gauss points (domain.gauss_points): its ranks run the bond families "
+          "only; use the serial backend");
+  }
   if (m.has("output")) {
     MapReader o(m.get("output"));
     s.output.directory = o.text("directory", "out");

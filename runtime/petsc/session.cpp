@@ -19,6 +19,12 @@ DistributedSession::DistributedSession(const std::vector<std::string>& options) 
   check(PetscInitializeNoArguments(), "PetscInitialize");
   for (const std::string& o : options)
     if (!o.empty()) check(PetscOptionsInsertString(nullptr, o.c_str()), ("options '" + o + "'").c_str());
+  // PetscInitialize starts the event log only for a -log_view it saw itself (argv,
+  // PETSC_OPTIONS); given here, PetscFinalize would fail on it after the run ("Must use
+  // -log_view or PetscLogDefaultBegin() before calling this routine").
+  PetscBool log_view = PETSC_FALSE;
+  check(PetscOptionsHasName(nullptr, nullptr, "-log_view", &log_view), "PetscOptionsHasName");
+  if (log_view) check(PetscLogDefaultBegin(), "PetscLogDefaultBegin");
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
   g_session = this;

@@ -24,7 +24,7 @@ def displacement(path):
 
 s = run([pd, "run", serial_scene, "--out", os.path.join(work, "serial")])
 p = run([mpiexec, "-n", "2", "--oversubscribe", pd, "run", petsc_scene, "--out", os.path.join(work, "petsc"),
-         "--petsc-options=-ksp_converged_reason"])
+         "--petsc-options=-ksp_converged_reason -log_view"])
 if s.returncode != 0 or p.returncode != 0:
     sys.exit(f"runs failed: serial {s.returncode}, mpirun {p.returncode}\n{s.stderr}\n{p.stdout}\n{p.stderr}")
 files_s = sorted(os.listdir(os.path.join(work, "serial")))
@@ -44,6 +44,8 @@ if p.stdout.count("PETSc backend on 2 MPI process(es)") != 1:
 if "Linear solve converged" not in p.stdout:
     failures.append("--petsc-options did not reach PETSc (-ksp_converged_reason printed nothing)")
 r = run([mpiexec, "-n", "2", "--oversubscribe", pd, "run", serial_scene, "--out", os.path.join(work, "refused")])
+if "PETSc Performance Summary" not in p.stdout:
+    failures.append("-log_view from --petsc-options printed no performance summary")
 if r.returncode != 2 or "solver.backend is serial" not in r.stderr:
     failures.append(f"serial scene under mpirun: exit {r.returncode}, stderr {r.stderr!r}")
 if failures:

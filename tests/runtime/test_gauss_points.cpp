@@ -344,6 +344,26 @@ TEST(GaussPointScene, ErrorsNameTheKey) {
   EXPECT_NE(scene_error(", gauss_points: {per_axis: 2, bogus: 1}").find("bogus"), std::string::npos);
 }
 
+// The PETSc backend's ranks run the bond families: with Gauss points it would solve the
+// volume rule's problem instead (6.8 % off on a 10 x 10 plate before this was refused).
+TEST(GaussPointScene, ThePetscBackendIsRefusedNamingTheKey) {
+  const std::string yaml = R"(dimension: 2
+domain: {box: {min: [0, 0], max: [1, 1]}, count: 10, gauss_points: {per_axis: 2}}
+horizon: {ratio: 3.0}
+law: lps_plane_strain
+materials: [{E: 1.0, nu: 0.25}]
+solver: {backend: petsc}
+)";
+  try {
+    pd::parse_scene(yaml, "g.yaml");
+    FAIL() << "gauss_points with backend petsc was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("g.yaml:6: solver.backend: backend petsc does not integrate over Gauss points"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // `pd run`'s static driver with domain.gauss_points: a plate held on u = eps x over a
 // collar of three horizons, correspondence law (exact for an affine
 // field under any quadrature). The affine field is then the discrete equilibrium of the
