@@ -53,7 +53,9 @@ TEST(SurfaceCorrectionScene, BuildModelPutsTheBondMeansOnTheBonds) {
     for (int e = on.bonds.offsets[i]; e < on.bonds.offsets[i + 1]; ++e) {
       const int j = on.bonds.neighbor[e];
       for (int f = on.bonds.offsets[j]; f < on.bonds.offsets[j + 1]; ++f)
-        if (on.bonds.neighbor[f] == i) ASSERT_DOUBLE_EQ(on.bonds.surface_force[f], on.bonds.surface_force[e]);
+        if (on.bonds.neighbor[f] == i) {
+          ASSERT_DOUBLE_EQ(on.bonds.surface_force[f], on.bonds.surface_force[e]);
+        }
     }
   // A law without a dilatation sum gets the force factor only.
   const pd::Model bb = pd::build_model(pd::parse_scene(plate("  surface_correction: terms\n", "bond_based_constant_2d"), "s.yaml"));
