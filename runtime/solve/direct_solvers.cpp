@@ -43,18 +43,26 @@ class CholmodSolver final : public SparseSolver {
   bool analysed_ = false;
 };
 
+// UMFPACK's 64-bit-index interface (umfpack_dl_*), on a copy of the matrix with long
+// indices: the 32-bit one (umfpack_di_*) bounds its work space by INT_MAX and reported
+// "out of memory" for paper 001's 256^2 collocation system at 4 GB resident with 19 GB free.
+// The same algorithm and ordering, so the same factors; the copy costs 12 bytes a nonzero.
+using LongSparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>;
+
 class UmfpackSolver final : public SparseSolver {
  public:
   std::string name() const override { return std::string(name_of(LinearMethod::umfpack)); }
   void analyse(const SparseMatrix& A) override {
-    lu_.analyzePattern(A);
+    long_ = A;
+    lu_.analyzePattern(long_);
     analysed_ = true;
   }
   bool factor(const SparseMatrix& A) override {
     if (!analysed_) analyse(A);
+    long_ = A;  // the values (same pattern); UMFPACK's solve reads the matrix again
     {
       const ProgressPhase phase("UMFPACK factorisation of " + std::to_string(A.rows()) + " unknowns");
-      lu_.factorize(A);
+      lu_.factorize(long_);
     }
     if (lu_.info() == Eigen::Success) return true;
     // Eigen reports every failure alike; UMFPACK's status says which it was (an
@@ -73,7 +81,8 @@ class UmfpackSolver final : public SparseSolver {
   }
 
  private:
-  Eigen::UmfPackLU<SparseMatrix> lu_;
+  LongSparseMatrix long_;
+  Eigen::UmfPackLU<LongSparseMatrix> lu_;
   bool analysed_ = false;
 };
 }  // namespace
