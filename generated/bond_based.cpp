@@ -537,6 +537,7 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.ignores_influence = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
   d.scratch_per_bond = 0;
@@ -1097,6 +1098,7 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.ignores_influence = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
   d.scratch_per_bond = 0;
@@ -1865,6 +1867,7 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.ignores_influence = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
   d.scratch_per_bond = 0;
@@ -2637,6 +2640,7 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
+  d.ignores_influence = true;
   d.has_fixed_poisson_ratio = true;
   d.poisson_ratio = 0.25;
   d.scratch_per_bond = 0;

@@ -5327,6 +5327,7 @@ pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.ignores_influence = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 1;
   d.n_moments = 0;
@@ -6348,6 +6349,7 @@ pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.ignores_influence = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 1;
   d.n_moments = 0;
@@ -7289,6 +7291,7 @@ pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.ignores_influence = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 1;
   d.n_moments = 4;
@@ -8728,6 +8731,7 @@ pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
+  d.ignores_influence = true;
   d.uses_pair_params = true;
   d.scratch_per_bond = 1;
   d.n_moments = 9;

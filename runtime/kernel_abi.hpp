@@ -123,6 +123,9 @@ struct LawDescriptor {
   // The law marks a dilatation sum (pdgen Law::dilatation_sum) that reads
   // Family::dilatation_factor; false: only Family::force_factor acts.
   bool has_dilatation_sum = false;
+  // The force never reads Family::w (bond-based laws, a kernel built into the law): the
+  // scene's influence function does not change the law's forces.
+  bool ignores_influence = false;
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };

@@ -49,6 +49,7 @@ std::string descriptor_head(const Law& law) {
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
   if (law.has_dilatation_sum()) desc << "  d.has_dilatation_sum = true;\n";
+  if (!law.reads_influence()) desc << "  d.ignores_influence = true;\n";
   if (!law.pair_params().empty()) desc << "  d.uses_pair_params = true;\n";
   if (law.has_fixed_poisson_ratio())
     desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";

@@ -103,6 +103,16 @@ Expr Law::sum(const std::string& name, Expr body) {
   return def.symbol;
 }
 
+bool Law::reads_influence() const {
+  const int w = symbol_index(w_);
+  const auto is_w = [w](int s) { return s == w; };
+  for (int c = 0; c < force_.dim(); ++c)
+    if (depends_on(force_[c], is_w)) return true;
+  for (const SumDef& def : sums_)  // the force reads a sum through its symbol
+    if (depends_on(def.body, is_w)) return true;
+  return false;
+}
+
 Expr Law::dilatation_sum(const std::string& name, Expr body) {
   if (has_dilatation_sum_) throw std::invalid_argument("law " + name_ + ": a second dilatation_sum '" + name + "'");
   has_dilatation_sum_ = true;

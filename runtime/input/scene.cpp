@@ -509,6 +509,10 @@ Scene read(const YAML::Node& root, const std::string& file) {
     m.get("domain").fail("compensation: law " + s.law + " has no energy kernel, and the compensation factor is a ratio of energy densities (paper 002 eq. 3.61)");
   s.influence = m.text("influence", "const");
   if (abi::find_influence(s.influence) == nullptr) m.get("influence").fail("unknown influence function '" + s.influence + "' (pd laws lists them)");
+  if (law->ignores_influence && s.influence != "const")  // the generator found no path from w to the force
+    s.warnings.push_back(m.get("influence").location() + ": law " + s.law + " does not read the influence function (its "
+                         "micromodulus or kernel is built in): '" + s.influence + "' leaves its forces unchanged and only "
+                         "weights the family checks and the bonds a short-horizon preconditioner keeps");
 
   {
     const YamlAt mats = m.get("materials");

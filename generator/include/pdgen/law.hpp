@@ -94,6 +94,10 @@ class Law {
   // output "dilatation", which the surface correction reads.
   Expr dilatation_sum(const std::string& name, Expr body);
   bool has_dilatation_sum() const { return has_dilatation_sum_; }
+  // Whether the force reads w (directly or through a horizon sum). Bond-based laws and
+  // laws with a kernel built in (paper 001's lps_paper_*) do not: the scene's influence
+  // function then leaves their forces unchanged, and the runtime says so.
+  bool reads_influence() const;
 
   void force(const Vec& t);
   bool has_force() const { return force_.dim() == dim_; }

@@ -101,6 +101,8 @@ warn_cases = [
  ("warn_crack_outside", "output:", "cracks:\n  - segment: [[3, 3], [4, 3]]\noutput:", "  - segment", r"cracks\[0\]", "the crack crosses no bond"),
  ("warn_traction_on_fixed_particles", "region: {side: top}", "region: {side: bottom}", "region: {side: bottom}\n    traction", r"boundary\[1\]",
   "the traction acts only on components whose displacement is prescribed: the constraints take it and it does no work"),
+ ("warn_influence_ignored", "law: silling_plane_strain\ninfluence: const", "law: bond_based_constant_2d\ninfluence: cubic",
+  "influence: cubic", "influence", "law bond_based_constant_2d does not read the influence function"),
  ("warn_unused_parameter", "{E: 1, nu: 0.25}", "{E: 1, nu: 0.25, parameters: {stabb: 1}}", None, r"materials\[0\]\.parameters\.stabb",
   "law silling_plane_strain takes no parameter 'stabb'"),
 ]
