@@ -17,6 +17,25 @@
 namespace pd {
 
 namespace {
+// What the Krylov solve reported, and what to try: algebraic multigrid is not a
+// preconditioner for every peridynamic system (measured on scenes/: GAMG's smoothed
+// aggregation is indefinite on the 1000:1 inclusion, where hypre or unsmoothed aggregation
+// converge; no AMG converges on paper 001's OBQ collocation operator, a direct factor does).
+std::string linear_failure_hint(KSP ksp) {
+  KSPConvergedReason why;
+  PetscInt its = 0;
+  KSPGetConvergedReason(ksp, &why);
+  KSPGetIterationNumber(ksp, &its);
+  return fmt::format(
+      " (the Krylov solve: {} after {} iterations). The preconditioner does not suit this system; try "
+      "--petsc-options='-pc_type hypre' or '-pc_gamg_agg_nsmooths 0' (high stiffness contrast), a parallel direct "
+      "factor '-pc_type lu -pc_factor_mat_solver_type mumps' (a non-symmetric or indefinite system such as "
+      "quadrature: obq), or the serial backend",
+      KSPConvergedReasons[why], its);
+}
+}  // namespace
+
+namespace {
 // The whole solution on every rank, in the model's order.
 void gather_all(DistributedBody& body, Vec x, Eigen::VectorXd& u) {
   VecScatter scatter;
@@ -168,6 +187,7 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
       if (reason <= 0) {
         result.message = fmt::format("PETSc SNES did not converge at load {:.3g} (step {}/{}): {}", c.load,
                                      step, s.load_steps, SNESConvergedReasons[reason]);
+        if (reason == SNES_DIVERGED_LINEAR_SOLVE) result.message += linear_failure_hint(ksp);
         break;
       }
       if (!s.after_step) break;

@@ -30,6 +30,9 @@ StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
   // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
   if (run.plan.short_horizon_preconditioner() && !(run.plan.backend == Backend::petsc && short_delta >= scene.delta()))
     attach_short_horizon(model, scene, short_delta);
+  if (run.plan.short_horizon_preconditioner() && model.collocation)
+    summary.solver_path += "; with quadrature obq the preconditioner is the collocation tangent itself (a shorter "
+                           "horizon's volume-rule stiffness does not approximate it)";
   const AssemblerOptions options = attach_assembler(model, scene, !run.plan.matrix_free());
   attach_effects(model, scene);
   if (model.collocation) summary.effects.push_back(model.collocation_description);
