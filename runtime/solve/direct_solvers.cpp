@@ -58,8 +58,10 @@ class UmfpackSolver final : public SparseSolver {
     analysed_ = true;
   }
   bool factor(const SparseMatrix& A) override {
-    if (!analysed_) analyse(A);
-    long_ = A;  // the values (same pattern); UMFPACK's solve reads the matrix again
+    if (!analysed_)
+      analyse(A);  // copies A
+    else
+      long_ = A;  // the new values (same pattern); UMFPACK's solve reads the matrix again
     {
       const ProgressPhase phase("UMFPACK factorisation of " + std::to_string(A.rows()) + " unknowns");
       lu_.factorize(long_);
