@@ -23,6 +23,7 @@ difference step, so the convergence is visible.
 import argparse
 
 import numpy as np
+import sfepy_ready  # noqa: F401  (before SfePy: ~/.sfepy created race-free, issue 34)
 from sfepy.base.base import IndexedStruct
 from sfepy.discrete import Equation, Equations, FieldVariable, Integral, Material, Problem
 from sfepy.discrete.conditions import Conditions, EssentialBC

@@ -31,6 +31,7 @@ import time
 
 import numpy as np
 import scipy.sparse.linalg as spla
+import sfepy_ready  # noqa: F401  (before SfePy: ~/.sfepy created race-free, issue 34)
 from sfepy.discrete import Equation, Equations, FieldVariable, Integral, Material, Problem
 from sfepy.discrete.conditions import Conditions, EssentialBC
 from sfepy.discrete.fem import FEDomain, Field

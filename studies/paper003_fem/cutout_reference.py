@@ -35,10 +35,14 @@ of the load, and the dynamic energy stays constant to 1e-9 relative.
 """
 import argparse
 import os
+import sys
 import time
 
 import numpy as np
 import scipy.sparse.linalg as spla
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scripts', 'fem'))
+import sfepy_ready  # noqa: E402,F401  (before SfePy: ~/.sfepy created race-free, issue 34)
 from sfepy.discrete import Equation, Equations, FieldVariable, Integral, Material, Problem
 from sfepy.discrete.conditions import Conditions, EssentialBC
 from sfepy.discrete.fem import FEDomain, Field, Mesh
