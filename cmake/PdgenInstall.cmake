@@ -16,7 +16,7 @@ if(PD_SANITIZE)
 endif()
 set_target_properties(pd_runtime PROPERTIES EXPORT_NAME runtime)
 set_target_properties(pd_kernels PROPERTIES EXPORT_NAME kernels)
-install(TARGETS pd_runtime pd_kernels EXPORT pdgenTargets
+install(TARGETS pd_runtime ${PD_RUNTIME_LAYERS} pd_kernels EXPORT pdgenTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION include/pdgen)
 if(TARGET pd)

@@ -39,7 +39,7 @@ struct Family {
   // values one loop computes and a later loop reads); the caller owns it, one per thread.
   // May be null when the law's scratch_per_bond is 0.
   double* scratch = nullptr;
-  // Surface correction (paper 003 eq. 19; discretize/surface_correction.hpp), per bond,
+  // Surface correction (paper 003 eq. 19; assembly/surface_correction.hpp), per bond,
   // null meaning 1 for every bond. force_factor multiplies the bond's force state (and
   // so its tangent and JVP); dilatation_factor multiplies the bond's term in the law's
   // dilatation sum (laws that declare one: LawDescriptor::has_dilatation_sum).

@@ -31,7 +31,7 @@ struct Bonds {
   // [nb] share of the neighbour's volume inside the horizon (domain.quadrature, paper 002);
   // empty: every neighbour counts whole.
   std::vector<double> volume_factor;
-  // [nb] surface correction (domain.surface_correction, discretize/surface_correction.hpp):
+  // [nb] surface correction (domain.surface_correction, assembly/surface_correction.hpp):
   // the bond's factor on the law's dilatation sum and on its force state; empty: 1.
   std::vector<double> surface_dilatation, surface_force;
 

@@ -10,8 +10,13 @@
 # Scenes are run from a temporary copy in which `count:` is capped at PD_COMPARE_MAX_COUNT
 # (default 40, rounded down to an even number so that crack scenes keep their crack between
 # two rows), so that the whole comparison takes well under a minute; PD_COMPARE_MAX_STEPS, when
-# set, caps `steps:` too (not by default: for relaxation scenes it is an iteration limit). PD_COMPARE_RTOL overrides the tolerance. Exit status: 0 when every
-# scene agrees, 1 otherwise.
+# set, caps `steps:` too (not by default: for relaxation scenes it is an iteration limit).
+# PD_COMPARE_RTOL overrides the tolerance (0: bit for bit). result.csv and energies.csv are
+# compared too, every number to the same tolerance.
+#
+# PD_COMPARE_RANKS=N runs every copy with `solver.backend: petsc` under
+# `mpirun -n N --oversubscribe` (both binaries alike), so the distributed paths are compared.
+# Exit status: 0 when every scene agrees, 1 otherwise.
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
@@ -25,6 +30,12 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 if [[ $# -gt 0 ]]; then scenes=("$@"); else scenes=("$repo"/scenes/*.yaml); fi
 max_count=${PD_COMPARE_MAX_COUNT:-40}
 max_steps=${PD_COMPARE_MAX_STEPS:-0}
+ranks=${PD_COMPARE_RANKS:-0}
+launch=()
+if [[ $ranks -gt 0 ]]; then
+    launch=(mpirun -n "$ranks" --oversubscribe)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+fi
 rtol=${PD_COMPARE_RTOL:-1e-12}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -43,6 +54,14 @@ prepare() {
         }
         { print }' "$scene" > "$work/$name.yaml"
     [[ -n $extra ]] && printf '%s\n' "$extra" >> "$work/$name.yaml"
+    if [[ $ranks -gt 0 ]]; then  # solver.backend: petsc, merged into the scene's own solver section
+        /usr/bin/python3 -c '
+import sys, yaml
+path = sys.argv[1]
+scene = yaml.safe_load(open(path))
+scene.setdefault("solver", {})["backend"] = "petsc"
+yaml.safe_dump(scene, open(path, "w"), sort_keys=False)' "$work/$name.yaml"
+    fi
     names+=("$name"); sources+=("$scene")
 }
 names=(); sources=()
@@ -90,17 +109,27 @@ for i in "${!names[@]}"; do
     name=${names[$i]}
     scene=${sources[$i]}
     copy="$work/$name.yaml"
+    declare -A rcs=()
     for side in before after; do
         pd=$before; [[ $side == after ]] && pd=$after
         rc=0
-        (cd "$(dirname "$scene")" && "$pd" run "$copy" --out "$work/$name.$side") \
+        (cd "$(dirname "$scene")" && "${launch[@]}" "$pd" run "$copy" --out "$work/$name.$side") \
             > "$work/$name.$side.log" 2>&1 || rc=$?
-        if [[ $rc -ne 0 ]]; then
-            echo "$name: $side run failed (exit status $rc); log:"; tail -5 "$work/$name.$side.log"
-            status=1
-            continue 2
-        fi
+        rcs[$side]=$rc
     done
+    if [[ ${rcs[before]} -ne 0 || ${rcs[after]} -ne 0 ]]; then
+        # Both refusing the same scene with the same message (e.g. a solver path the PETSc
+        # backend does not take) is agreement; anything else is a difference.
+        if [[ ${rcs[before]} -eq ${rcs[after]} ]] &&
+           [[ "$(grep -v '^pd ' "$work/$name.before.log" | tail -1)" == "$(grep -v '^pd ' "$work/$name.after.log" | tail -1)" ]]; then
+            echo "$name: both refused alike (exit status ${rcs[after]}): $(tail -1 "$work/$name.after.log")"
+        else
+            echo "$name: exit status ${rcs[before]} before, ${rcs[after]} after; logs:"
+            tail -3 "$work/$name.before.log" "$work/$name.after.log"
+            status=1
+        fi
+        continue
+    fi
     if ! /usr/bin/python3 - "$work/$name.before/summary.json" "$work/$name.after/summary.json" \
             "$rtol" "$name" <<'EOF'
 import json, sys
@@ -127,6 +156,19 @@ def walk(x, y, path):
         worst[0] = max(worst[0], rel)
         if rel > rtol: diffs.append(f"{path}: {x!r} vs {y!r} (relative {rel:.2e})")
 walk(a, b, "")
+# The result files: every number to the same tolerance, every other cell exactly.
+import os
+for table in ("result.csv", "energies.csv"):
+    pa, pb = (os.path.join(os.path.dirname(p), table) for p in sys.argv[1:3])
+    if os.path.exists(pa) != os.path.exists(pb):
+        diffs.append(f"{table}: written by one run only"); continue
+    if not os.path.exists(pa): continue
+    la, lb = open(pa).read().splitlines(), open(pb).read().splitlines()
+    if len(la) != len(lb): diffs.append(f"{table}: {len(la)} vs {len(lb)} lines"); continue
+    for row, (ra, rb) in enumerate(zip(la, lb)):
+        for col, (x, y) in enumerate(zip(ra.split(","), rb.split(","))):
+            try: walk(float(x), float(y), f"{table}[{row}][{col}]")
+            except ValueError: walk(x, y, f"{table}[{row}][{col}]")
 path = a.get("linear_solver", {}).get("method", a.get("method", "-"))
 if diffs:
     print(f"{name}: DIFFERENT ({len(diffs)} of {count[0]} numbers / {count[1]} strings)")

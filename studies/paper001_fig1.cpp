@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 #include "fields/michell.hpp"
 
 int main(int argc, char** argv) {

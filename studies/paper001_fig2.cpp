@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 int main(int argc, char** argv) {
   int n = 64;

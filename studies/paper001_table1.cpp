@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 // Table 1 of paper 001: ||u - u_ex||_l2 for u1, u2, u2,inc.

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 const std::map<int, std::array<double, 2>> kPaper{

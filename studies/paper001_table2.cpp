@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 // Table 2 of paper 001: RMS error for uniform (nu 0.25, 0.49) then nonuniform (0.25, 0.49).

@@ -10,7 +10,7 @@
 
 #include "assembly/scatter.hpp"
 #include "local_matrix.hpp"
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 
 namespace pd {
 

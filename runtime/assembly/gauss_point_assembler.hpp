@@ -64,12 +64,12 @@ class GaussPointAssembler {
   // |B_i|^T |D_i| |B_i| + sum_s |a_s| |b_s|^T entrywise (the factored tangent of
   // nodal_matrix), whose row sums cost O(L n_phi d) per family instead of the matrix's
   // O(L n_phi^2 d^2) and need no pattern. For the stable step of explicit dynamics
-  // (dynamics/time_step.hpp): a larger S_r gives a smaller, still stable, step.
+  // (effects/time_step.hpp): a larger S_r gives a smaller, still stable, step.
   std::vector<double> stiffness_row_sum_bound(const double* u) const;
   // W of particle p's Gauss family alone (the law's energy kernel; throws without one).
   double family_energy_density(int p, const double* u) const;
   std::vector<double> particle_outputs(const double* u) const;
-  // Pairwise force-state sum sigma_i of eq. (2.13) over the Gauss family (post/peridynamic_stress.hpp's
+  // Pairwise force-state sum sigma_i of eq. (2.13) over the Gauss family (assembly/peridynamic_stress.hpp's
   // family_stress on each family): [n*dim*dim].
   std::vector<double> family_stresses(const double* u) const;
 

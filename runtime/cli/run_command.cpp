@@ -17,7 +17,6 @@
 #include "output/output_directory.hpp"
 #include "output/staging.hpp"
 #include "model/model.hpp"
-#include "petsc/distributed_dynamics.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
@@ -149,7 +148,7 @@ int run_scene(const RunOptions& options) {
     Model model = build_model(scene);
     if (scene.dynamics) {
       DynamicRun run = prepare_dynamic_run(model, scene, log);
-      s = session ? run_distributed_dynamics(run, true) : run_dynamic(run, true);
+      s = run_dynamic(run, true);  // serially or over the ranks, as the solver plan says
     } else {
       StaticRun run = plan_static_run(model, scene, log);
       run_static(run, model, scene, log);

@@ -40,7 +40,7 @@ class CriticalStretchDamage {
   // broke (each counted once, not per family). Deterministic and thread-count independent.
   int break_bonds(const double* u);
   // The same rule on the bonds of the listed families only (a rank's own families under
-  // MPI: runtime/petsc/distributed_explicit.cpp). Returns the bond entries broken, each
+  // MPI: the damage effect with a FamilyScope, petsc/rank_steps.cpp). Returns the bond entries broken, each
   // family's copy counted (its partner copy is in another family, maybe on another rank).
   int break_family_bonds(const double* u, const std::vector<int>& families);
   double s0() const { return s0_; }

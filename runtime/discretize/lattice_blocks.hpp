@@ -17,22 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "discretize/quadrature.hpp"
-#include "input/region.hpp"  // Point
+#include "input/lattice_block_cloud.hpp"  // LatticeBlock, lattice_blocks: the particles
+#include "input/quadrature.hpp"
 #include "particles.hpp"
 
 namespace pd {
-
-struct LatticeBlock {
-  Point lo{}, hi{};
-  double spacing = 0;
-  std::string where;  // "file:line: domain.blocks[i]" for messages
-};
-
-// The union of the blocks' cell-centred lattices, block by block; spacing[i] is particle
-// i's lattice spacing. Throws std::invalid_argument naming the block when a block's
-// sides are not whole multiples of its spacing (to 1e-9) or two blocks overlap.
-Particles lattice_blocks(const std::vector<LatticeBlock>& blocks, int dim, std::vector<double>& spacing);
 
 // Families with a horizon per particle: q is in p's family when |x_q - x_p| <= delta[p]
 // (1 + 1e-12, as find_bonds), w = influence(|xi|, delta[p]); bonds.delta = delta. Every

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "discretize/quadrature.hpp"
+#include "input/quadrature.hpp"
 #include "kernel_abi.hpp"
 
 namespace pd {

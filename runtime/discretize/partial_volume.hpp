@@ -3,7 +3,7 @@
 // moments, the force, the tangent and the JVP all see the same quadrature.
 #pragma once
 
-#include "discretize/quadrature.hpp"
+#include "input/quadrature.hpp"
 #include "particles.hpp"
 
 namespace pd {

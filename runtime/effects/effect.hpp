@@ -9,10 +9,20 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "assembly/sparsity_pattern.hpp"
 
 namespace pd {
+
+// The families an after_step may change: every family (one process holds the whole body),
+// or the families of the particles this process owns (an MPI rank holds u only at its own
+// particles and their ghosts; each family is changed by its owner, and the owners' results
+// are what rank 0 gathers).
+struct FamilyScope {
+  const std::vector<int>* owned = nullptr;  // null: every family
+  bool every_family() const { return owned == nullptr; }
+};
 
 class Effect {
  public:
@@ -34,8 +44,9 @@ class Effect {
   virtual bool is_load() const { return false; }
   // Called with the solution of every converged step (a static load step, a time step,
   // a relaxation iteration); returns how many changes it made to the model (bonds
-  // broken). Non-zero: a static run solves the same load step again.
-  virtual long long after_step(const double* u);
+  // broken). Non-zero: a static run solves the same load step again. `scope`: the
+  // families it may change (u is current at their particles and bonds' ends).
+  virtual long long after_step(const double* u, FamilyScope scope);
 };
 
 }  // namespace pd

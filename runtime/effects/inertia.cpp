@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "dynamics/time_step.hpp"
+#include "effects/time_step.hpp"
 
 namespace pd {
 

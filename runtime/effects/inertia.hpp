@@ -35,7 +35,7 @@ class Inertia final : public Effect {
 
 // Explicit dynamics: m = rho V per dof (rho of each particle's material), and the time
 // step: the scene's dt, or safety_factor x the stable estimate from the stiffness row
-// sums S_r = sum_c |K_rc| (dynamics/time_step.hpp).
+// sums S_r = sum_c |K_rc| (effects/time_step.hpp).
 std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p, const std::vector<double>& row_sums);
 
 // Adaptive dynamic relaxation: the fictitious density D_ii = S_i / 4 (the largest row sum

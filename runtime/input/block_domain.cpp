@@ -5,7 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "discretize/lattice_blocks.hpp"
+#include "input/lattice_block_cloud.hpp"
 
 namespace pd {
 

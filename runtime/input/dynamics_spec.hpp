@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "input/region.hpp"
-#include "solve/solver_spec.hpp"  // all_values
+#include "input/solver_spec.hpp"  // all_values
 
 namespace pd {
 

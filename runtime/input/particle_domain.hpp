@@ -1,11 +1,11 @@
 // `domain: {particles: FILE, spacing: h}`: a body given as a point cloud
-// (runtime/discretize/particle_file.hpp) instead of a box lattice.
+// (runtime/input/particle_file.hpp) instead of a box lattice.
 #pragma once
 
 #include <memory>
 #include <optional>
 
-#include "discretize/particle_file.hpp"
+#include "input/particle_file.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 

@@ -10,7 +10,7 @@
 #include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
-#include "post/smoothing.hpp"
+#include "input/smoothing_influence.hpp"
 
 namespace pd {
 

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "discretize/quadrature.hpp"
+#include "input/quadrature.hpp"
 #include "input/dynamics_spec.hpp"
 #include "input/region.hpp"
 #include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
 #include "particles.hpp"
-#include "solve/solver_spec.hpp"
+#include "input/solver_spec.hpp"
 
 namespace pd {
 
@@ -98,14 +98,14 @@ struct OutputSpec {
   // influence function (and its field error). Empty: no smoothing.
   std::string smoothing_influence;
   std::vector<JContour> j_integral;  // static 2D runs: J on each contour (paper 004)
-  bool stress = false;  // the peridynamic stress field (paper 002 eq. 2.13, post/peridynamic_stress.hpp)
+  bool stress = false;  // the peridynamic stress field (paper 002 eq. 2.13, assembly/peridynamic_stress.hpp)
 };
 
 struct Probe {
   std::string name;
   Region region;
   // What is averaged: a displacement component, or a component (row, column) of the
-  // peridynamic stress (post/peridynamic_stress.hpp; `quantity: stress`, `component: xy`).
+  // peridynamic stress (assembly/peridynamic_stress.hpp; `quantity: stress`, `component: xy`).
   enum class Quantity { displacement, stress } quantity = Quantity::displacement;
   int component = 0;      // displacement component, or the stress row (force component)
   int stress_column = 0;  // stress column (bond component)
@@ -128,8 +128,8 @@ struct Scene {
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
   std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
   bool obq_symmetric = false;                 // domain.obq_symmetric
-  bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, discretize/compensation.hpp)
-  bool surface_correction = false;             // domain.surface_correction (paper 003 eq. 19, discretize/surface_correction.hpp)
+  bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, assembly/compensation.hpp)
+  bool surface_correction = false;             // domain.surface_correction (paper 003 eq. 19, assembly/surface_correction.hpp)
   bool surface_match_responses = false;        // ... : responses (else terms)
   // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
   // each cell (0: off, the quadrature above) and the MLS support in units of h.

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "input/yaml_keys.hpp"
-#include "solve/solver_spec.hpp"
+#include "input/solver_spec.hpp"
 
 namespace pd {
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <stdexcept>
 
-#include "discretize/compensation.hpp"
-#include "discretize/surface_correction.hpp"
+#include "assembly/compensation.hpp"
+#include "assembly/surface_correction.hpp"
 #include "discretize/crack_cut.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
@@ -17,8 +17,8 @@
 #include "discretize/law_space.hpp"
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
-#include "run/constraints.hpp"
-#include "solve/stopwatch.hpp"
+#include "constraints/constraints.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 
@@ -104,11 +104,6 @@ Model build_model(const Scene& scene) {
   m.dofs = scene_constraints(scene, m.particles);
   m.build_seconds = seconds_since(t0);
   return m;
-}
-
-ProblemSize Model::size(const Scene& scene, double short_family_size) const {
-  return {particles.size(), 2.0 * static_cast<double>(bond_count) / particles.size(), particles.dim,
-          scene.delta() / scene.h, short_family_size, coupling_of_law(law->n_states) == Coupling::pairwise};
 }
 
 AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads) {

@@ -12,14 +12,13 @@
 
 #include "assembly/assembler.hpp"
 #include "assembly/collocation.hpp"
+#include "constraints/dof_map.hpp"
 #include "discretize/family_quality.hpp"
 #include "discretize/gauss_points.hpp"
 #include "effects/effect.hpp"
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
-#include "solve/dof_map.hpp"
-#include "solve/solver_plan.hpp"
 
 namespace pd {
 
@@ -35,7 +34,7 @@ struct Model {
   std::vector<std::vector<double>> params;  // per material, in law.param_names order
   FamilyQualityReport quality;
   double build_seconds = 0;  // build_model's time (the run's setup time starts with it)
-  // The constrained dofs and their values at full load (run/constraints.hpp), with the
+  // The constrained dofs and their values at full load (constraints/constraints.hpp), with the
   // load path of a rotation and each dof's function of time (DofMap::apply_motion).
   DofMap dofs;
   long long bond_count = 0;    // each bond once (not per direction)
@@ -61,9 +60,6 @@ struct Model {
   const CriticalStretchDamage* damage = nullptr;  // the damage effect's rule (null without `damage`)
   const Inertia* inertia = nullptr;          // dynamic runs: rho V (explicit) or the fictitious density (relaxation)
   const ViscousDamping* damping = nullptr;   // explicit dynamics with dynamics.damping > 0
-
-  // What the solver plan needs of the model (mean family size: bonds per particle).
-  ProblemSize size(const Scene& scene, double short_family_size = -1) const;
 };
 
 // Throws std::invalid_argument on an unknown law or influence, std::runtime_error

@@ -2,7 +2,7 @@
 // A new effect is one file in effects/ plus one line here (and its scene key).
 #include <fmt/core.h>
 
-#include "dynamics/time_step.hpp"
+#include "effects/time_step.hpp"
 #include "effects/damage_evolution.hpp"
 #include "effects/inertia.hpp"
 #include "effects/loads.hpp"
@@ -73,7 +73,8 @@ void attach_effects(Model& m, const Scene& s) {
   if (s.dynamics) add_timed_loads(m, s);
   else add_static_loads(m, s);
   add(m.effects, make_pre_cracks(m.cut_by_cracks));
-  DamageEffect damage = make_damage_evolution(s, m, m.bonds, *m.assembler, m.approximation ? &m.short_bonds : nullptr,
+  DamageEffect damage = make_damage_evolution(s, DamageBody{m.particles, *m.law, m.params[0], *m.influence}, m.bonds,
+                                              *m.assembler, m.approximation ? &m.short_bonds : nullptr,
                                               m.approximation.get());
   m.damage = damage.rule;
   add(m.effects, std::move(damage.effect));

@@ -1,6 +1,8 @@
 // One rank's share of a distributed dynamic step (rank_steps.hpp).
 #include "petsc/rank_steps.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -8,18 +10,19 @@
 #include "interrupt.hpp"
 #include "petsc/petsc_check.hpp"
 #include "petsc/rank_gather.hpp"
-#include "run/dynamic_run.hpp"
+#include "petsc/rank_steps_factory.hpp"
 
 namespace pd {
 
-RankSteps::RankSteps(DynamicRun& run)
-    : s_(run), body_(run.model.particles, run.model.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
-  if (s_.model.dofs.tied_count() > 0)
-    throw SceneError(run.scene.file + ": solver.backend: the PETSc backend does not take fictitious layers (multipoint "
+RankSteps::RankSteps(StepState state)
+    : s_(state), body_(state.model.particles, state.model.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
+  const Model& model = s_.model;
+  if (model.dofs.tied_count() > 0)
+    throw SceneError(s_.scene_file + ": solver.backend: the PETSc backend does not take fictitious layers (multipoint "
                      "constraints) in dynamics: a layer's dof reads a master another rank may not hold; use the serial backend");
-  const int d = s_.model.particles.dim;
+  const int d = model.particles.dim;
   std::vector<char> constrained(s_.u.size(), 0);
-  for (int i : s_.model.dofs.constrained_dofs()) constrained[i] = 1;
+  for (int i : model.dofs.constrained_dofs()) constrained[i] = 1;
   for (int i = 0; i < part_.owned(); ++i) {
     const int p = part_.owned_particle(i);
     owned_families_.push_back(p);
@@ -34,8 +37,6 @@ RankSteps::RankSteps(DynamicRun& run)
   for (int dof : owned_dofs_) owned[dof] = 1;
   for (std::size_t i = 0; i < owned.size(); ++i)
     if (!owned[i]) foreign_dofs_.push_back(static_cast<int>(i));
-  if (s_.model.damage)
-    damage_.emplace(s_.model.particles, s_.model.bonds, s_.model.damage->s0(), s_.model.damage->tension_only());
   x_ = body_.create_vector();
   F_ = body_.create_vector();
 }
@@ -45,7 +46,14 @@ RankSteps::~RankSteps() {
   VecDestroy(&F_);
 }
 
-void RankSteps::ghost_update() {
+std::string RankSteps::describe(const std::string& method, const std::string& per_update,
+                                const std::string& global_sums) const {
+  return fmt::format("distributed: {} over {} MPI ranks (PETSc), rank 0 owns {} particles and {} ghosts; one ghost "
+                     "update per {}{}",
+                     method, part_.ranks, part_.owned(), part_.ghosts.size(), per_update, global_sums);
+}
+
+void RankSteps::sync() {
   PetscScalar* a;
   check(VecGetArray(x_, &a), "VecGetArray");
   for (std::size_t k = 0; k < owned_dofs_.size(); ++k) a[k] = s_.u[owned_dofs_[k]];
@@ -68,21 +76,27 @@ void RankSteps::forces(double t, std::vector<double>& f, std::vector<double>& g)
   for (int i : owned_constrained_) g[i] = g[i] - f[i];
 }
 
-bool RankSteps::break_bonds() {
-  if (!damage_ || damage_->break_family_bonds(s_.u.data(), owned_families_) == 0) return false;
-  s_.model.assembler->update_moments();
-  return true;
+// The serial after_step would read u at particles this rank does not hold: each effect
+// acts on the rank's own families (their particles and bonds' ends are owned or ghosts).
+bool RankSteps::after_step() {
+  long long changes = 0;
+  for (const auto& e : s_.model.effects) changes += e->after_step(s_.u.data(), FamilyScope{&owned_families_});
+  long long all = 0;
+  MPI_Allreduce(&changes, &all, 1, MPI_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  return all > 0;
 }
 
-void RankSteps::gather() {
-  const int d = s_.model.particles.dim;
+void RankSteps::gather(const std::vector<std::vector<double>*>& extra) {
+  const Model& model = s_.model;
+  const int d = model.particles.dim;
   gather_particle_values(part_, d, s_.u, PETSC_COMM_WORLD);
   if (!s_.v.empty()) gather_particle_values(part_, d, s_.v, PETSC_COMM_WORLD);
-  if (!s_.model.assembler->intact()) {
+  for (std::vector<double>* values : extra) gather_particle_values(part_, d, *values, PETSC_COMM_WORLD);
+  if (!model.assembler->intact()) {
     gather_family_alpha(part_, s_.model.bonds, PETSC_COMM_WORLD);
     // Rank 0's other families now have their owners' broken bonds: their moments too
     // (the strain energy of a series row reads every family's).
-    if (root()) s_.model.assembler->update_moments();
+    if (root()) model.assembler->update_moments();
   }
 }
 
@@ -92,13 +106,26 @@ double RankSteps::sum(double local) const {
   return global;
 }
 
+void RankSteps::sum_in_place(double* values, int count) const {
+  MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+}
+
 double RankSteps::free_square_sum(const std::vector<double>& values) const {
   double s = 0;
   for (int i : owned_free_) s += values[i] * values[i];
   return sum(s);
 }
 
-void RankSteps::agree_on_interrupt(const std::string& where) const {
+void RankSteps::check_agrees(double value, const std::string& what) const {
+  double high = 0, low = 0;
+  MPI_Allreduce(&value, &high, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  MPI_Allreduce(&value, &low, 1, MPI_DOUBLE, MPI_MIN, PETSC_COMM_WORLD);
+  if (high != low) throw std::logic_error(fmt::format("the ranks' {} differ ({:.17g} .. {:.17g})", what, low, high));
+}
+
+// The ranks agree on a signal every step (one integer all-reduce), so all stop at the
+// same step instead of one rank leaving the others waiting in the next ghost update.
+void RankSteps::check_interrupt(const std::string& where) const {
   int local_signal = interrupt_signal(), signal = 0;
   MPI_Allreduce(&local_signal, &signal, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
   if (signal == 0) return;
@@ -112,5 +139,7 @@ void RankSteps::check_finite(const std::string& message) const {
   MPI_Allreduce(&finite, &all_finite, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
   if (!all_finite) throw std::runtime_error(message);
 }
+
+std::unique_ptr<StepExecutor> make_rank_steps(StepState state) { return std::make_unique<RankSteps>(state); }
 
 }  // namespace pd

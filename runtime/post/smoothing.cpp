@@ -6,13 +6,6 @@
 
 namespace pd {
 
-bool can_smooth_with(InfluenceWeight w) {
-  // The weights scale with delta only through r/delta (or a power of delta that the
-  // ratio in eq. 49 cancels), so delta = 1 decides.
-  const double w0 = w(0.0, 1.0);
-  return std::isfinite(w0) && w0 > 0;
-}
-
 std::vector<double> smooth_field(const Particles& particles, const Bonds& bonds, InfluenceWeight w,
                                  const std::vector<double>& field, int components) {
   const int n = particles.size();

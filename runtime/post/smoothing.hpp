@@ -3,11 +3,10 @@
 
 #include <vector>
 
+#include "input/smoothing_influence.hpp"  // InfluenceWeight, can_smooth_with: what smooth_field accepts
 #include "particles.hpp"
 
 namespace pd {
-
-using InfluenceWeight = double (*)(double r, double delta);
 
 // The discrete form of paper 000 eq. (49),
 //   u_s(x_i) = sum_j w(|x_j - x_i|) u_j V_j / sum_j w(|x_j - x_i|) V_j,
@@ -19,8 +18,5 @@ using InfluenceWeight = double (*)(double r, double delta);
 // the self term of eq. (49) is then undefined.
 std::vector<double> smooth_field(const Particles& particles, const Bonds& bonds, InfluenceWeight w,
                                  const std::vector<double>& field, int components);
-
-// True when w(0, delta) is finite and positive, i.e. when smooth_field accepts w.
-bool can_smooth_with(InfluenceWeight w);
 
 }  // namespace pd

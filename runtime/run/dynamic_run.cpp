@@ -11,9 +11,11 @@
 
 #include "discretize/discretization.hpp"
 #include "effects/inertia.hpp"
+#include "exec/serial_steps.hpp"
+#include "petsc/rank_steps_factory.hpp"
 #include "input/yaml_keys.hpp"
 #include "run/run_outputs.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 
@@ -91,23 +93,26 @@ void DynamicRun::apply_initial_conditions() {
   }
 }
 
-bool DynamicRun::after_step() {
-  long long changes = 0;
-  for (const auto& e : model.effects) changes += e->after_step(u.data());
-  return changes > 0;
+std::unique_ptr<StepExecutor> DynamicRun::make_steps() {
+  const StepState state{model, u, v, scene.file};
+  switch (scene.solver.backend) {
+    case Backend::serial:
+      return std::make_unique<SerialSteps>(state);
+    case Backend::petsc:
+      return make_rank_steps(state);
+  }
+  throw std::logic_error("DynamicRun::make_steps: unknown backend");
 }
 
-void DynamicRun::forces(double t, std::vector<double>& f, std::vector<double>& g) const {
-  f.resize(u.size());
-  g.assign(u.size(), 0.0);
-  model.assembler->internal_forces(u.data(), f.data());
-  // Each load at its time function's value (effects/timed_effect.cpp); relaxation has no
-  // time functions (the reader refuses them), so its loads are in full. Inertia and
-  // damping add no force here.
-  for (const auto& e : model.effects) e->add_forces(u.data(), t, g.data());
-  for (std::size_t i = 0; i < f.size(); ++i) f[i] += g[i];
-  // The reaction of a constraint, R = -(f_int + load), plus the load there: -f_int.
-  for (int i : model.dofs.constrained_dofs()) g[i] = g[i] - f[i];
+void DynamicRun::add_effect_line(const std::string& line) {
+  if (line.empty()) return;
+  summary.effects.push_back(line);
+  log("  effect: " + line);
+}
+
+RunSummary DynamicRun::finish_elsewhere(std::chrono::steady_clock::time_point t0) {
+  summary.solve_seconds = seconds_since(t0);
+  return summary;
 }
 
 }  // namespace pd

@@ -10,10 +10,12 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "exec/step_executor.hpp"
 #include "input/scene.hpp"
 #include "model/model.hpp"
 #include "output/particle_fields.hpp"
@@ -48,11 +50,12 @@ struct DynamicRun {
   DynamicsReport& start_report();  // summary.dynamics, new, with the method
   void apply_initial_conditions();
   void prescribe(double t) { model.dofs.apply_motion(t, u, v); }
-  // Every effect's after_step at the current u (damage: bonds break); true when any changed the model.
-  bool after_step();
-  // f = f_int(u) + loads(t); g = the external forces for the work (loads on free dofs,
-  // reactions -f_int on constrained ones).
-  void forces(double t, std::vector<double>& f, std::vector<double>& g) const;
+  // The steps of this run on this process (forces, after-step effects, sums, gathers),
+  // for the backend the scene's solver plan names (exec/step_executor.hpp). It reads u and
+  // v in place: make it where the run will not move.
+  std::unique_ptr<StepExecutor> make_steps();
+  // Adds `line` (when not empty) to the summary's effects and logs it.
+  void add_effect_line(const std::string& line);
   SeriesRow make_row(int step, double t, double residual_ratio) const;
   std::string series_csv_header() const;
   std::string series_csv_row(const SeriesRow& r) const;
@@ -66,6 +69,8 @@ struct DynamicRun {
   // The end of either run: bonds broken since broken_start, the probes, the solve time
   // since t0, the result files (write), the summary's log text. Returns the summary.
   RunSummary finish(long long broken_start, std::chrono::steady_clock::time_point t0, bool write);
+  // The end on a process other than rank 0 (which alone reports and writes): the solve time.
+  RunSummary finish_elsewhere(std::chrono::steady_clock::time_point t0);
 };
 
 // Refuses (std::invalid_argument) what the dynamic runs do not implement: obq quadrature.
@@ -77,7 +82,9 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
 
 // Run from t = 0, or from scene.dynamics->restart when set, to the scene's last step
 // (or `stop_after` > 0: ends after that step, as an interrupted run would, after writing
-// the checkpoints due); write: the result files. Throw on failure.
+// the checkpoints due); write: the result files (rank 0's). Serially or over the MPI ranks
+// as scene.solver.backend says (one loop each: explicit_run.cpp, relaxation_run.cpp).
+// Throw on failure.
 RunSummary run_explicit(DynamicRun& run, bool write, int stop_after);
 RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after);
 inline RunSummary run_dynamic(DynamicRun& run, bool write = true, int stop_after = 0) {

@@ -1,87 +1,107 @@
-// Explicit dynamics: velocity Verlet from t = 0 (or a checkpoint) to the last step.
-#include "run/dynamic_run.hpp"
-
+// Explicit dynamics: velocity Verlet from t = 0 (or a checkpoint) to the last step, one
+// loop for every backend (exec/step_executor.hpp). Per step: the first half step on the
+// free dofs this process steps, the prescribed motion, the ghost update of u (nothing
+// serially), every effect's after_step (damage: bonds over the limit break), the forces,
+// the second half step. Under PETSc each rank steps its own particles, and rank 0 gathers
+// u, v and the bond factors when a series row, snapshot, checkpoint or the end reads them,
+// and writes through the serial run's functions.
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <stdexcept>
 
 #include "damage/critical_stretch.hpp"
 #include "dynamics/energies.hpp"
 #include "dynamics/progress.hpp"
 #include "dynamics/verlet_integrator.hpp"
-#include "interrupt.hpp"
-#include "run/run_outputs.hpp"
-#include "solve/stopwatch.hpp"
+#include "exec/step_executor.hpp"
+#include "run/dynamic_run.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 
 RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   const Model& model = run.model;
   std::vector<double>& u = run.u;
-  const double dt = run.dt();
+  const auto steps = run.make_steps();
+  StepExecutor& exec = *steps;
+  const bool root = exec.root();
+  write = write && root;
   const auto t0 = std::chrono::steady_clock::now();
   const DynamicsSpec& dyn = *run.scene.dynamics;
   DynamicsReport& rep = run.start_report();
+  const double dt = run.dt();
+  exec.check_agrees(dt, "time steps");  // the set-up ran on every process from the same scene
+  run.add_effect_line(exec.describe("velocity Verlet", "step", ""));
   rep.dt = dt, rep.dt_stable = model.inertia->dt_stable, rep.damping = dyn.damping;
   rep.dt_rule = dyn.dt > 0 ? "fixed" : fmt::format("{} x the stable estimate", dyn.safety_factor);
-  ExternalWork work;
+  ExternalWork work;  // over this process's dofs; summed when a row, checkpoint or the end reads it
   int step = 0;
   long long broken_start = broken_bond_count(model.bonds);
-  std::vector<double> scalars;
   if (!dyn.restart.empty()) {
-    run.restore(dyn.restart, step, scalars);
+    std::vector<double> scalars;
+    run.restore(dyn.restart, step, scalars);  // every process reads the whole (serial-format) state
     if (scalars.size() < 2) throw std::runtime_error(dyn.restart + ": the checkpoint has no energy accumulators");
-    work.restore(scalars[0]);
+    if (root) work.restore(scalars[0]);
     broken_start = static_cast<long long>(scalars[1]);
   } else {
     run.apply_initial_conditions();
     run.prescribe(0.0);
-    run.after_step();
+    exec.after_step();
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  const VerletIntegrator verlet(*model.inertia, model.damping, model.dofs.free_dofs(), dt);
-  std::vector<double> f, g, f_old, g_old, u_old;
+  const VerletIntegrator verlet(*model.inertia, model.damping, exec.free_dofs(), dt);
+  std::vector<double> f, g, g_old, u_old;
   double t = step * dt;
-  run.forces(t, f, g);
+  exec.forces(t, f, g);
   auto record = [&](int s) {
+    const double w = exec.sum(work.value());
+    if (!root) return;
     SeriesRow r = run.make_row(s, t, 0.0);
-    r.external_work = work.value();
+    r.external_work = w;
     run.series.push_back(r);
   };
   if (step == 0) {
+    exec.gather();
     record(0);
     if (dyn.snapshot_every > 0 && write) run.write_snapshot(0, 0.0);
   }
   Progress progress(run.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int s = step + 1; s <= last; ++s) {
-    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at time step {} of {}", s, last));
+    exec.check_interrupt(fmt::format("at time step {} of {}", s, last));
     u_old = u;
     g_old = g;
     verlet.first_half(u, run.v, f);
     t = s * dt;
     run.prescribe(t);
-    run.after_step();
-    run.forces(t, f, g);
+    exec.sync();
+    exec.after_step();
+    exec.forces(t, f, g);
     verlet.second_half(run.v, f);
     work.add(g_old, g, u_old, u);
-    if (s % dyn.output_every == 0 || s == dyn.steps) record(s);
-    if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || s == dyn.steps)) run.write_snapshot(s, t);
-    if (dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0) run.save_checkpoint(s, {work.value(), static_cast<double>(broken_start)});
+    const bool row = s % dyn.output_every == 0 || s == dyn.steps;
+    const bool snapshot = dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || s == dyn.steps);
+    const bool checkpoint = dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0;
+    if (row || snapshot || checkpoint) exec.gather();
+    if (row) record(s);
+    if (write && snapshot) run.write_snapshot(s, t);
+    if (checkpoint) {
+      const double w = exec.sum(work.value());
+      if (root) run.save_checkpoint(s, {w, static_cast<double>(broken_start)});
+    }
     progress.update(s, t);
   }
-  for (double x : u)
-    if (!std::isfinite(x)) throw std::runtime_error(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
+  exec.gather();
+  exec.check_finite(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
   rep.last_step = last;
   rep.time = last * dt;
+  rep.external_work = exec.sum(work.value());
+  rep.strain_available = model.assembler->has_energy();
+  if (!root) return run.finish_elsewhere(t0);
   const SeriesRow end = run.make_row(last, rep.time, 0.0);
   rep.kinetic = end.kinetic;
-  rep.strain_available = model.assembler->has_energy();
   rep.strain = end.strain;
-  rep.external_work = work.value();
   return run.finish(broken_start, t0, write);
 }
 

@@ -1,6 +1,13 @@
-// Adaptive dynamic relaxation to the static answer.
-#include "run/dynamic_run.hpp"
-
+// Adaptive dynamic relaxation to the static answer, one loop for every backend
+// (exec/step_executor.hpp). Per iteration: the ADR update of the free dofs this process
+// moves (its damping's two sums summed over the processes), the fictitious layers
+// following the body, the ghost update of u, every effect's after_step, the forces, and
+// the out-of-balance norm for the convergence test (summed over the processes, so every
+// one stops at the same iteration). The fictitious density comes from the set-up, which
+// every process runs on the whole model: the processes check that theirs agree. Rank 0
+// gathers u and the bond factors when a series row, snapshot or checkpoint is due; a
+// checkpoint also gathers ADR's velocity and previous force, so it is the serial format
+// and restarts with any process count.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -12,19 +19,19 @@
 #include "dynamics/dynamic_relaxation.hpp"
 #include "dynamics/progress.hpp"
 #include "effects/inertia.hpp"
-#include "interrupt.hpp"
-#include "run/constraints.hpp"
+#include "exec/step_executor.hpp"
+#include "constraints/constraints.hpp"
+#include "run/dynamic_run.hpp"
 #include "run/relaxation_state.hpp"
-#include "run/run_outputs.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 
 namespace {
-double norm_over(const std::vector<double>& v, const std::vector<int>& dofs) {
+double density_sum(const std::vector<double>& density) {
   double s = 0;
-  for (int i : dofs) s += v[i] * v[i];
-  return std::sqrt(s);
+  for (double d : density) s += d;  // the same order on every process: equal bits when equal densities
+  return s;
 }
 }  // namespace
 
@@ -37,58 +44,78 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   DynamicsReport& rep = run.start_report();
   rep.dt = 1;
   check_scene_holds_body(scene, model.particles, model.bonds, model.dofs);
-  AdaptiveDynamicRelaxation adr(model.inertia->mass(), model.dofs.free_dofs());
+  const auto steps = run.make_steps();
+  StepExecutor& exec = *steps;
+  const bool root = exec.root();
+  write = write && root;
+  exec.check_agrees(density_sum(model.inertia->mass()), "fictitious densities (sums)");
+  run.add_effect_line(exec.describe("adaptive dynamic relaxation", "iteration",
+                                    ", the damping and the residual norm summed over the ranks"));
+  AdaptiveDynamicRelaxation adr(model.inertia->mass(), exec.free_dofs(),
+                                [&exec](double* values, int count) { exec.sum_in_place(values, count); });
   int step = 0;
   long long broken_start = broken_bond_count(model.bonds);
   std::vector<double> f, g;
   double reference = 0;
+  const auto norm = [&](const std::vector<double>& v) { return std::sqrt(exec.free_square_sum(v)); };
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
-    run.restore(dyn.restart, step, scalars);
+    run.restore(dyn.restart, step, scalars);  // every process reads the whole (serial-format) state
     RelaxationRestart state = relaxation_restart(scalars, u.size(), dyn.restart);
     adr.restore(state.iterations, std::move(state.v), std::move(state.f_prev));
     reference = state.reference;
     broken_start = state.broken_start;
-    run.forces(0.0, f, g);
+    exec.forces(0.0, f, g);
   } else {
     run.apply_initial_conditions();
     run.prescribe(0.0);
-    run.forces(0.0, f, g);
-    reference = relaxation_reference(model, u, f, [&](const std::vector<double>& v) { return norm_over(v, model.dofs.free_dofs()); });
+    exec.forces(0.0, f, g);
+    reference = relaxation_reference(model, u, f, norm);
   }
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
-  double ratio = norm_over(f, model.dofs.free_dofs()) / reference;
-  if (step == 0) run.series.push_back(run.make_row(0, 0, ratio));
+  double ratio = norm(f) / reference;
+  if (step == 0) {
+    exec.gather();
+    if (root) run.series.push_back(run.make_row(0, 0, ratio));
+  }
   Progress progress(run.log, write ? dyn.progress_seconds : 0.0, step, last);
   int s = step;
   while (ratio > dyn.tolerance && s < last) {
-    if (interrupt_signal() != 0) throw_if_interrupted(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
+    exec.check_interrupt(fmt::format("at relaxation iteration {} of at most {}", s + 1, last));
     ++s;
     adr.step(f, u);
     model.dofs.apply_ties(u.data(), 1.0);  // a fictitious layer follows the body's update
-    run.after_step();
-    run.forces(0.0, f, g);
-    ratio = norm_over(f, model.dofs.free_dofs()) / reference;
+    exec.sync();
+    exec.after_step();
+    exec.forces(0.0, f, g);
+    ratio = norm(f) / reference;  // the same on every process: all stop together
     if (!std::isfinite(ratio)) throw std::runtime_error(fmt::format("adaptive dynamic relaxation diverged at iteration {}", s));
     const bool done = ratio <= dyn.tolerance;
-    if (s % dyn.output_every == 0 || done) run.series.push_back(run.make_row(s, s, ratio));
-    if (write && dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done)) run.write_snapshot(s, s);
-    if (dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0) {
-      run.save_checkpoint(s, relaxation_scalars({adr.iterations(), reference, broken_start, adr.velocity(), adr.previous_force()}));
+    const bool row = s % dyn.output_every == 0 || done;
+    const bool snapshot = dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done);
+    const bool checkpoint = dyn.checkpoint_every > 0 && s % dyn.checkpoint_every == 0;
+    if (row || snapshot || checkpoint) exec.gather();
+    if (row && root) run.series.push_back(run.make_row(s, s, ratio));
+    if (write && snapshot) run.write_snapshot(s, s);
+    if (checkpoint) {
+      RelaxationRestart state{adr.iterations(), reference, broken_start, adr.velocity(), adr.previous_force()};
+      exec.gather({&state.v, &state.f_prev});
+      if (root) run.save_checkpoint(s, relaxation_scalars(state));
     }
     progress.update(s, s, fmt::format(", |r|/ref = {:.3e}", ratio));
   }
+  exec.gather();
   rep.last_step = s;
   rep.time = s;
   rep.converged = ratio <= dyn.tolerance;
   rep.residual_ratio = ratio;
   rep.damping = adr.damping();
   rep.strain_available = model.assembler->has_energy();
-  if (rep.strain_available) rep.strain = model.assembler->strain_energy(u.data());
+  if (rep.strain_available && root) rep.strain = model.assembler->strain_energy(u.data());
   run.summary.newton.converged = rep.converged;
   run.log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
-  RunSummary summary = run.finish(broken_start, t0, write);
+  RunSummary summary = root ? run.finish(broken_start, t0, write) : run.finish_elsewhere(t0);
   if (!rep.converged && stop_after == 0)
     throw std::runtime_error(fmt::format("adaptive dynamic relaxation did not converge in {} iterations (|r|/ref = {:.3e} > {:.3g})", s,
                                          ratio, dyn.tolerance));

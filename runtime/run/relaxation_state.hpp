@@ -1,7 +1,6 @@
-// What the serial and the distributed relaxation loops (run/relaxation_run.cpp,
-// petsc/distributed_relaxation.cpp) share besides the ADR update: the reference force of
-// the convergence test and the checkpoint's scalars, so a checkpoint written by either
-// loop restarts the other.
+// What the relaxation loop (run/relaxation_run.cpp, serial or over the ranks) needs besides
+// the ADR update: the reference force of the convergence test and the checkpoint's scalars,
+// so a checkpoint written on any number of processes restarts on any other.
 #pragma once
 
 #include <functional>

@@ -10,7 +10,7 @@
 #include "output/particle_fields.hpp"
 #include "particles.hpp"
 #include "run/run_summary.hpp"
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 namespace pd {
 

@@ -9,7 +9,7 @@
 #include "output/vtu_writer.hpp"
 #include "run/run_outputs.hpp"
 #include "run/static_run.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 

@@ -8,16 +8,16 @@
 
 #include "damage/critical_stretch.hpp"
 #include "effects/loads.hpp"
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
 #include "input/yaml_keys.hpp"
-#include "run/constraints.hpp"
+#include "constraints/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
 #include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 
@@ -76,7 +76,7 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
 long long after_load_step(const Model& model, const Scene& scene, const RunLog& log, int step, double load,
                           const Eigen::VectorXd& u) {
   long long changes = 0;
-  for (const auto& e : model.effects) changes += e->after_step(u.data());
+  for (const auto& e : model.effects) changes += e->after_step(u.data(), FamilyScope{});
   if (changes == 0) return 0;
   log(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
                   scene.solver.load_steps, changes, broken_bond_count(model.bonds)));

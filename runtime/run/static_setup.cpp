@@ -7,9 +7,18 @@
 #include "assembly/strain_modes.hpp"
 #include "discretize/discretization.hpp"
 #include "run/static_run.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
+
+namespace {
+// What the solver plan needs of the model (mean family size: bonds per particle).
+ProblemSize problem_size(const Model& model, const Scene& scene, double short_family_size) {
+  return {model.particles.size(), 2.0 * static_cast<double>(model.bond_count) / model.particles.size(),
+          model.particles.dim, scene.delta() / scene.h, short_family_size,
+          coupling_of_law(model.law->n_states) == Coupling::pairwise};
+}
+}  // namespace
 
 StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -25,7 +34,7 @@ StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
   // Only `auto` sizes the preconditioner before choosing (a pass over every bond).
   const double short_family =
       plan_needs_short_family_size(scene.solver) ? mean_short_family_size(model.bonds, short_delta, influence->weight) : -1;
-  run.plan = plan_solver(scene.solver, model.size(scene, short_family));
+  run.plan = plan_solver(scene.solver, problem_size(model, scene, short_family));
   summary.solver_path = run.plan.reason;
   // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
   if (run.plan.short_horizon_preconditioner() && !(run.plan.backend == Backend::petsc && short_delta >= scene.delta()))

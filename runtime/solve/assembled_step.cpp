@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "solve/linear_step.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 

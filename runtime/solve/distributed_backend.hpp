@@ -1,7 +1,7 @@
 // The distributed backend (`solver.backend: petsc`), as the serial runtime sees it: an
 // MPI/PETSc session for the run and one static solve over the model. No PETSc type
 // appears here, so the serial runtime compiles the same with or without PETSc; the
-// implementation is runtime/petsc/ (or solve/without_petsc.cpp, which refuses clearly).
+// implementation is runtime/petsc/ (or petsc/without_petsc.cpp, which refuses clearly).
 #pragma once
 
 #include <Eigen/Core>
@@ -12,7 +12,7 @@
 
 #include "assembly/assembler.hpp"
 #include "effects/effect.hpp"
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 #include "solve/newton.hpp"
 
 namespace pd {

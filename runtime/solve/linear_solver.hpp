@@ -9,7 +9,7 @@
 
 #include "assembly/sparsity_pattern.hpp"
 #include "solve/solver_plan.hpp"
-#include "solve/solver_spec.hpp"
+#include "input/solver_spec.hpp"
 
 namespace pd {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 #include "solve/newton.hpp"
 
 namespace pd {

@@ -9,7 +9,7 @@
 
 #include "solve/linear_step.hpp"
 #include "solve/matrix_free_krylov.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 

@@ -11,7 +11,7 @@
 #include "interrupt.hpp"
 #include "solve/linear_step.hpp"
 #include "solve/progress.hpp"
-#include "solve/stopwatch.hpp"
+#include "stopwatch.hpp"
 
 namespace pd {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "assembly/sparsity_pattern.hpp"
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 #include "solve/linear_solver.hpp"
 
 namespace pd {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "solve/solver_spec.hpp"
+#include "input/solver_spec.hpp"
 
 namespace pd {
 

@@ -25,7 +25,7 @@
 #include "discretize/gauss_points.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 40;

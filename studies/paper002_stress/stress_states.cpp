@@ -3,7 +3,7 @@
 // bond_based_constant_3d law: c = 18K / (pi delta^4)), E = 1e5 N/h^2, nu = 1/4,
 // delta = 18h, dx = delta/m, the displacement of every node u = eps x (eq. 2.54).
 //
-// The stress is the areal force density of eq. (2.12) (post/peridynamic_stress.hpp; on
+// The stress is the areal force density of eq. (2.12) (assembly/peridynamic_stress.hpp; on
 // the lattice the column form of eq. 2.12 and the horizon sum are the same number, tested
 // in PeridynamicStress.EqualsTheArealForceDensityOfALatticePlane): the source's family is
 // built from the lattice and its stress taken by family_stress with the generated kernel.
@@ -34,7 +34,7 @@
 #include "discretize/gauss_points.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 
 namespace {
 constexpr double kDelta = 18.0, kE = 1e5, kNu = 0.25;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "input/scene.hpp"
-#include "run/constraints.hpp"
+#include "constraints/constraints.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/simulation.hpp"

@@ -2,7 +2,7 @@
 // manufactured u2 imposed on a one-horizon Dirichlet layer of the perturbed unit square,
 // its body force b = -div sigma on every particle, OBQ quadrature. The static run must
 // give the same interior solution as the hand-written reduced solve of
-// fields/manufactured_solve.cpp (an independent path to the same discrete problem) and
+// run/manufactured_solve.cpp (an independent path to the same discrete problem) and
 // converge to the analytic u2 at second order.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fields/manufactured.hpp"
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 #include "input/scene.hpp"
 #include "run/simulation.hpp"
 

@@ -22,7 +22,7 @@
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "model/model.hpp"
-#include "run/constraints.hpp"
+#include "constraints/constraints.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/simulation.hpp"

@@ -1,4 +1,4 @@
-// domain.particles: a body read from a .vtu point cloud (discretize/particle_vtu.hpp).
+// domain.particles: a body read from a .vtu point cloud (input/particle_vtu.hpp).
 // Our own VTU writer's file of a box lattice gives the same particles and solution as the
 // box scene; hand-written ASCII files cover each refusal, naming the scene key, the file,
 // the element's line and the point id. Files written by VTK itself in every encoding are

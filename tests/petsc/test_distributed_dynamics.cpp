@@ -12,8 +12,8 @@
 #include <string>
 
 #include "damage/critical_stretch.hpp"
+#include "exec/serial_steps.hpp"
 #include "input/scene.hpp"
-#include "petsc/distributed_dynamics.hpp"
 #include "petsc/partition.hpp"
 #include "model/model.hpp"
 #include "run/dynamic_run.hpp"
@@ -39,6 +39,12 @@ Scene notched_plate() {
                                       {"snapshot_every: 10", "snapshot_every: 0"}, {"checkpoint_every: 50", "checkpoint_every: 0"}});
 }
 
+// The same scene on the PETSc backend: run_dynamic then steps each rank's own particles.
+Scene on_ranks(Scene scene) {
+  scene.solver.backend = Backend::petsc;
+  return scene;
+}
+
 double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double diff = 0, norm = 0;
   for (std::size_t i = 0; i < a.size(); ++i) diff += std::pow(a[i] - b[i], 2), norm += a[i] * a[i];
@@ -51,13 +57,13 @@ void expect_same_fracture(MakeScene make, long long min_broken) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  const Scene scene_s = make(), scene_d = make();
+  const Scene scene_s = make(), scene_d = on_ranks(make());
   check_dynamic_scene(scene_s);
   Model model_s = build_model(scene_s), model_d = build_model(scene_d);
   DynamicRun serial = prepare_dynamic_run(model_s, scene_s, [](const std::string&) {});
   const RunSummary ss = run_dynamic(serial, false);
   DynamicRun distributed = prepare_dynamic_run(model_d, scene_d, [](const std::string&) {});
-  const RunSummary s = run_distributed_dynamics(distributed, false);
+  const RunSummary s = run_dynamic(distributed, false);
 
   // Each rank's own families hold the serial run's factors, bit for bit.
   const Bonds& bs = model_s.bonds;
@@ -119,12 +125,12 @@ TEST(DistributedDynamics, NotchedBar3DFractureEqualsSerial) {
 // uniaxial scene, 5.0e-13 to 4.8e-10 on the cube).
 template <class MakeScene>
 void expect_same_relaxation(MakeScene make) {
-  const Scene scene_s = make(), scene_d = make();
+  const Scene scene_s = make(), scene_d = on_ranks(make());
   Model model_s = build_model(scene_s), model_d = build_model(scene_d);
   DynamicRun serial = prepare_dynamic_run(model_s, scene_s, [](const std::string&) {});
   const RunSummary ss = run_dynamic(serial, false);
   DynamicRun distributed = prepare_dynamic_run(model_d, scene_d, [](const std::string&) {});
-  const RunSummary s = run_distributed_dynamics(distributed, false);
+  const RunSummary s = run_dynamic(distributed, false);
   ASSERT_TRUE(ss.dynamics->converged);
   EXPECT_TRUE(s.dynamics->converged);
   EXPECT_GT(ss.dynamics->last_step, 50) << "the test must exercise the iteration";
@@ -139,7 +145,7 @@ void expect_same_relaxation(MakeScene make) {
   std::vector<double> f, g, load(serial.u.size(), 0.0);
   const std::vector<double> u_serial = serial.u;
   serial.u = distributed.u;
-  serial.forces(0.0, f, g);
+  SerialSteps(StepState{model_s, serial.u, serial.v, scene_s.file}).forces(0.0, f, g);
   serial.u = u_serial;
   for (const auto& e : model_s.effects)
     if (e->is_load()) e->add_forces(u_serial.data(), 0.0, load.data());

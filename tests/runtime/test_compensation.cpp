@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "assembly/family_gather.hpp"
-#include "discretize/compensation.hpp"
+#include "assembly/compensation.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"

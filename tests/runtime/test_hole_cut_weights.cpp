@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 #include "fields/michell.hpp"
 #include "obq_cloud.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "fields/analytic.hpp"
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 const double kA = 0.2, kCx = 0.5, kCy = 0.5;

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 #include "fields/michell.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 // div sigma by central differences of the plane-strain stress of the field.

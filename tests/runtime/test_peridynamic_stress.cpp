@@ -19,7 +19,7 @@
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 #include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
 namespace {

@@ -15,11 +15,11 @@
 #include "assembly/assembler.hpp"
 #include "assembler_fd.hpp"
 #include "assembly/family_gather.hpp"
-#include "discretize/compensation.hpp"
+#include "assembly/compensation.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "discretize/lattice_family.hpp"
-#include "discretize/surface_correction.hpp"
+#include "assembly/surface_correction.hpp"
 #include "material/elastic_constants.hpp"
 #include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "assembly/assembler.hpp"
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 #include "run/peridynamic_system.hpp"
 #include "support_grid.hpp"
 #include "support_spring_law.hpp"

@@ -5,7 +5,7 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 namespace {
 pd::SparseMatrix random_spd(int n, unsigned seed) {

@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 namespace {
 pd::SparseMatrix random_banded(int n, unsigned seed) {

@@ -70,7 +70,7 @@ class Law {
   Expr V() const { return V_; }
   Expr V0() const { return V0_; }
   Expr delta() const { return delta_; }
-  // Surface correction (paper 003 eq. 19, runtime/discretize/surface_correction.hpp):
+  // Surface correction (paper 003 eq. 19, runtime/assembly/surface_correction.hpp):
   // per-bond factors the runtime passes in abi::Family (null: 1). The force factor
   // multiplies every bond's force state (the builders apply it; a law does not use it).
   // The dilatation factor multiplies the bond's term in the sum declared by

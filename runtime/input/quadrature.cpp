@@ -1,5 +1,5 @@
 // Scene spellings of the quadrature choices.
-#include "discretize/quadrature.hpp"
+#include "input/quadrature.hpp"
 
 #include <utility>
 

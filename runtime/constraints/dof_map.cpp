@@ -1,5 +1,5 @@
 // DofMap numbering and the K_ff / K_fc extraction plans.
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 #include <algorithm>
 #include <map>

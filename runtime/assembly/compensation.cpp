@@ -1,5 +1,5 @@
 // The boundary compensation factor (paper 002 eqs. 3.59-3.62), compensation.hpp.
-#include "discretize/compensation.hpp"
+#include "assembly/compensation.hpp"
 
 #include <fmt/core.h>
 

@@ -1,7 +1,7 @@
 // Reading a point cloud from CSV.
-#include "discretize/particle_file.hpp"
+#include "input/particle_file.hpp"
 
-#include "discretize/particle_vtu.hpp"
+#include "input/particle_vtu.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -1,5 +1,5 @@
 // Constraints from boundary conditions, and the cluster / rigid-mode check.
-#include "run/constraints.hpp"
+#include "constraints/constraints.hpp"
 
 #include <fmt/core.h>
 

@@ -1,5 +1,5 @@
 // Surface correction factors (paper 003 eq. 19), surface_correction.hpp.
-#include "discretize/surface_correction.hpp"
+#include "assembly/surface_correction.hpp"
 
 #include <fmt/core.h>
 

@@ -6,7 +6,7 @@
 
 #include "input/scene.hpp"
 #include "particles.hpp"
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 namespace pd {
 

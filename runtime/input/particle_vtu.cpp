@@ -1,5 +1,5 @@
 // Reading a point cloud from a .vtu file (VTK's XML unstructured grid).
-#include "discretize/particle_vtu.hpp"
+#include "input/particle_vtu.hpp"
 
 #include <fmt/format.h>
 #include <libxml/parser.h>

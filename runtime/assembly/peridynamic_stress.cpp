@@ -1,5 +1,5 @@
 // The peridynamic stress (paper 002 eq. 2.12-2.13), peridynamic_stress.hpp.
-#include "post/peridynamic_stress.hpp"
+#include "assembly/peridynamic_stress.hpp"
 
 #include <fmt/core.h>
 

@@ -1,5 +1,5 @@
 // The manufactured-solution solve of paper 001 §4 (manufactured_solve.hpp).
-#include "fields/manufactured_solve.hpp"
+#include "run/manufactured_solve.hpp"
 
 #include <algorithm>
 #include <array>

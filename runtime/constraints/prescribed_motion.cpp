@@ -1,5 +1,5 @@
 // DofMap::apply_motion: the constrained dofs' displacement and velocity at time t.
-#include "solve/dof_map.hpp"
+#include "constraints/dof_map.hpp"
 
 #include <stdexcept>
 

@@ -7,19 +7,10 @@
 #include <vector>
 
 #include "assembly/sparsity_pattern.hpp"
-#include "solve/prescribed_motion.hpp"
+#include "constraints/prescribed_motion.hpp"
+#include "discretize/tied_dof.hpp"
 
 namespace pd {
-
-// A linear multipoint constraint: u[dof] = sum_k coefficient_k u[master_k] + load * offset
-// (a fictitious-layer particle following its mirror image, paper 003 eqs. 29-35). Masters
-// are free or constrained dofs, never tied ones.
-struct TiedDof {
-  int dof = -1;
-  std::vector<int> masters;
-  std::vector<double> coefficients;
-  double offset = 0.0;
-};
 
 // Numbers the free dofs 0..nf-1 in ascending global order and keeps the prescribed
 // value of every constrained dof (at full load; a load factor s scales them).
@@ -78,7 +69,7 @@ class DofMap {
   using LoadPath = std::function<double(double load, int i)>;
   void set_load_path(LoadPath path) { path_ = std::move(path); }
   // A dynamic run's prescribed motion: each constrained dof's function of time
-  // (solve/prescribed_motion.hpp). apply_motion sets u and v (v: when not empty) of the
+  // (constraints/prescribed_motion.hpp). apply_motion sets u and v (v: when not empty) of the
   // constrained dofs at time t, then the tied dofs' from their masters (v: the ties'
   // linear part).
   void set_motion(PrescribedMotion motion) { motion_ = std::move(motion); }

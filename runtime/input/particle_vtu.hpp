@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "discretize/particle_file.hpp"
+#include "input/particle_file.hpp"
 
 namespace pd {
 

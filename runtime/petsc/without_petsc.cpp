@@ -2,8 +2,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "petsc/distributed_dynamics.hpp"
-#include "run/dynamic_run.hpp"
+#include "petsc/rank_steps_factory.hpp"
 #include "solve/distributed_backend.hpp"
 
 namespace pd {
@@ -27,6 +26,6 @@ NewtonResult solve_distributed(const DistributedProblem&, Eigen::VectorXd&,
   refuse();
 }
 
-RunSummary run_distributed_dynamics(DynamicRun&, bool, int) { refuse(); }
+std::unique_ptr<StepExecutor> make_rank_steps(StepState) { refuse(); }
 
 }  // namespace pd

@@ -1,5 +1,5 @@
 // A body from elsewhere: a point cloud read from a CSV file (or a .vtu:
-// discretize/particle_vtu.hpp) (`domain.particles:` in a
+// input/particle_vtu.hpp) (`domain.particles:` in a
 // scene), e.g. the cell centres and volumes of a mesh (docs/scene_format.md says how
 // to make one). One header line naming the columns, in any order:
 //   x, y[, z]  positions (the scene's dimension: z is required in 3D, refused in 2D)

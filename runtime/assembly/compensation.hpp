@@ -22,7 +22,7 @@
 
 #include <vector>
 
-#include "discretize/quadrature.hpp"
+#include "input/quadrature.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 

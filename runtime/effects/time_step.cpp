@@ -1,5 +1,5 @@
 // Gershgorin row sums and the stable step they bound.
-#include "dynamics/time_step.hpp"
+#include "effects/time_step.hpp"
 
 #include <cmath>
 #include <stdexcept>
