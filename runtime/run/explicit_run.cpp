@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "damage/critical_stretch.hpp"
 #include "dynamics/energies.hpp"
@@ -19,6 +20,33 @@
 #include "stopwatch.hpp"
 
 namespace pd {
+
+namespace {
+struct ExplicitStart {
+  int step = 0;
+  long long broken_start = 0;
+};
+
+// From the checkpoint the scene names (every process reads the whole, serial-format
+// state; root alone restores the work, which the processes sum), or from the initial
+// conditions at t = 0 with every effect's after_step there.
+ExplicitStart start_explicit(DynamicRun& run, StepExecutor& exec, ExternalWork& work) {
+  const DynamicsSpec& dyn = *run.scene.dynamics;
+  ExplicitStart start{0, broken_bond_count(run.model.bonds)};
+  if (!dyn.restart.empty()) {
+    std::vector<double> scalars;
+    run.restore(dyn.restart, start.step, scalars);
+    if (scalars.size() < 2) throw std::runtime_error(dyn.restart + ": the checkpoint has no energy accumulators");
+    if (exec.root()) work.restore(scalars[0]);
+    start.broken_start = static_cast<long long>(scalars[1]);
+  } else {
+    run.apply_initial_conditions();
+    run.prescribe(0.0);
+    exec.after_step();
+  }
+  return start;
+}
+}  // namespace
 
 RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   const Model& model = run.model;
@@ -36,19 +64,7 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   rep.dt = dt, rep.dt_stable = model.inertia->dt_stable, rep.damping = dyn.damping;
   rep.dt_rule = dyn.dt > 0 ? "fixed" : fmt::format("{} x the stable estimate", dyn.safety_factor);
   ExternalWork work;  // over this process's dofs; summed when a row, checkpoint or the end reads it
-  int step = 0;
-  long long broken_start = broken_bond_count(model.bonds);
-  if (!dyn.restart.empty()) {
-    std::vector<double> scalars;
-    run.restore(dyn.restart, step, scalars);  // every process reads the whole (serial-format) state
-    if (scalars.size() < 2) throw std::runtime_error(dyn.restart + ": the checkpoint has no energy accumulators");
-    if (root) work.restore(scalars[0]);
-    broken_start = static_cast<long long>(scalars[1]);
-  } else {
-    run.apply_initial_conditions();
-    run.prescribe(0.0);
-    exec.after_step();
-  }
+  const auto [step, broken_start] = start_explicit(run, exec, work);
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
   const VerletIntegrator verlet(*model.inertia, model.damping, exec.free_dofs(), dt);

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "damage/critical_stretch.hpp"
@@ -32,6 +33,36 @@ double density_sum(const std::vector<double>& density) {
   double s = 0;
   for (double d : density) s += d;  // the same order on every process: equal bits when equal densities
   return s;
+}
+
+struct RelaxationStart {
+  int step = 0;
+  long long broken_start = 0;
+  double reference = 0;
+};
+
+// From the checkpoint the scene names (every process reads the whole, serial-format state),
+// or from the initial conditions; f: the out-of-balance force there.
+RelaxationStart start_relaxation(DynamicRun& run, StepExecutor& exec, AdaptiveDynamicRelaxation& adr,
+                                 std::vector<double>& f, std::vector<double>& g,
+                                 const std::function<double(const std::vector<double>&)>& norm) {
+  const DynamicsSpec& dyn = *run.scene.dynamics;
+  RelaxationStart start{0, broken_bond_count(run.model.bonds), 0.0};
+  if (!dyn.restart.empty()) {
+    std::vector<double> scalars;
+    run.restore(dyn.restart, start.step, scalars);
+    RelaxationRestart state = relaxation_restart(scalars, run.u.size(), dyn.restart);
+    adr.restore(state.iterations, std::move(state.v), std::move(state.f_prev));
+    start.reference = state.reference;
+    start.broken_start = state.broken_start;
+    exec.forces(0.0, f, g);
+  } else {
+    run.apply_initial_conditions();
+    run.prescribe(0.0);
+    exec.forces(0.0, f, g);
+    start.reference = relaxation_reference(run.model, run.u, f, norm);
+  }
+  return start;
 }
 }  // namespace
 
@@ -53,25 +84,11 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
                                     ", the damping and the residual norm summed over the ranks"));
   AdaptiveDynamicRelaxation adr(model.inertia->mass(), exec.free_dofs(),
                                 [&exec](double* values, int count) { exec.sum_in_place(values, count); });
-  int step = 0;
-  long long broken_start = broken_bond_count(model.bonds);
   std::vector<double> f, g;
-  double reference = 0;
-  const auto norm = [&](const std::vector<double>& v) { return std::sqrt(exec.free_square_sum(v)); };
-  if (!dyn.restart.empty()) {
-    std::vector<double> scalars;
-    run.restore(dyn.restart, step, scalars);  // every process reads the whole (serial-format) state
-    RelaxationRestart state = relaxation_restart(scalars, u.size(), dyn.restart);
-    adr.restore(state.iterations, std::move(state.v), std::move(state.f_prev));
-    reference = state.reference;
-    broken_start = state.broken_start;
-    exec.forces(0.0, f, g);
-  } else {
-    run.apply_initial_conditions();
-    run.prescribe(0.0);
-    exec.forces(0.0, f, g);
-    reference = relaxation_reference(model, u, f, norm);
-  }
+  const std::function<double(const std::vector<double>&)> norm = [&](const std::vector<double>& v) {
+    return std::sqrt(exec.free_square_sum(v));
+  };
+  const auto [step, broken_start, reference] = start_relaxation(run, exec, adr, f, g, norm);
   rep.first_step = step;
   const int last = stop_after > 0 ? std::min(stop_after, dyn.steps) : dyn.steps;
   double ratio = norm(f) / reference;
