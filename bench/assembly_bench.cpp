@@ -41,8 +41,8 @@
 
 namespace {
 
-int g_chunk_size = 0;                              // --chunk_size
-std::string g_law = "silling_plane_strain";        // --law
+int g_chunk_size = 0;                        // --chunk_size
+std::string g_law = "silling_plane_strain";  // --law
 
 // Resident set size and its peak, bytes (/proc/self/status).
 long status_kb(const char* key) {
@@ -94,7 +94,8 @@ struct Grid {
     o.matrix = matrix;
     o.chunk_size = g_chunk_size;
     a = std::make_unique<pd::FamilyAssembler>(
-        p, b, *law, std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, o);
+        p, b, *law,
+        std::vector<std::vector<double>>{pd::law_parameters(*law, m, pd::PlaneAssumption::Strain, {})}, o);
     u.resize(p.x.size());
     v.resize(p.x.size());
     out.assign(p.x.size(), 0.0);
@@ -128,7 +129,8 @@ Grid& grid(int n, int ratio10, bool matrix) {
 
 void set_counters(benchmark::State& state, const Grid& g, double nonzeros_per_iteration) {
   const double families = static_cast<double>(g.p.size());
-  state.counters["families_per_s"] = benchmark::Counter(families, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["families_per_s"] =
+      benchmark::Counter(families, benchmark::Counter::kIsIterationInvariantRate);
   if (nonzeros_per_iteration > 0)
     state.counters["nonzeros_per_s"] =
         benchmark::Counter(nonzeros_per_iteration, benchmark::Counter::kIsIterationInvariantRate);

@@ -42,8 +42,8 @@ struct Body {
     const auto& law = *pd::abi::find_law(law_name);
     const auto w = pd::abi::find_influence("const")->weight;
     const double delta = 3.0;
-    bonds = pd::find_quadrature_bonds(particles, delta, 1.0,
-                                      rule == "volume" ? pd::Quadrature::Volume : pd::Quadrature::PartialLinear, w);
+    bonds = pd::find_quadrature_bonds(
+        particles, delta, 1.0, rule == "volume" ? pd::Quadrature::Volume : pd::Quadrature::PartialLinear, w);
     pd::AssemblerOptions o;
     o.matrix = matrix;
     o.threads = 1;
@@ -56,9 +56,11 @@ struct Body {
       o.gauss_points = gp.get();
       bonds_total = gp->bond_count();
     }
-    const auto m = pd::IsotropicElastic::from_E_nu(1.0, law.has_fixed_poisson_ratio ? law.poisson_ratio : 0.3);
+    const auto m =
+        pd::IsotropicElastic::from_E_nu(1.0, law.has_fixed_poisson_ratio ? law.poisson_ratio : 0.3);
     const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, {});
-    assembler = std::make_unique<pd::FamilyAssembler>(particles, bonds, law, std::vector<std::vector<double>>{params}, o);
+    assembler = std::make_unique<pd::FamilyAssembler>(particles, bonds, law,
+                                                      std::vector<std::vector<double>>{params}, o);
     u.resize(particles.x.size()), v.resize(u.size()), out.resize(u.size());
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> U(-1e-3, 1e-3);
@@ -70,10 +72,10 @@ struct Body {
 void counters(benchmark::State& state, const Body& b) {
   const double calls = static_cast<double>(state.iterations());
   state.counters["bonds_per_particle"] = b.bonds_total / b.particles.size();
-  state.counters["ns_per_bond"] =
-      benchmark::Counter(calls * b.bonds_total * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["ns_per_particle"] = benchmark::Counter(calls * b.particles.size() * 1e-9,
-                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_bond"] = benchmark::Counter(
+      calls * b.bonds_total * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle"] = benchmark::Counter(
+      calls * b.particles.size() * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void forces(benchmark::State& state, std::string law, std::string rule) {
@@ -109,9 +111,15 @@ void register_all() {
   for (const char* law : {"lps_plane_strain", "bond_based_constant_2d"})
     for (const char* rule : {"volume", "linear", "gauss1", "gauss2"}) {
       const std::string tail = std::string("/") + law + "/" + rule;
-      benchmark::RegisterBenchmark(("forces" + tail).c_str(), forces, law, rule)->Arg(40)->Unit(benchmark::kMillisecond);
-      benchmark::RegisterBenchmark(("product" + tail).c_str(), product, law, rule)->Arg(40)->Unit(benchmark::kMillisecond);
-      benchmark::RegisterBenchmark(("stiffness" + tail).c_str(), stiffness, law, rule)->Arg(24)->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("forces" + tail).c_str(), forces, law, rule)
+          ->Arg(40)
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("product" + tail).c_str(), product, law, rule)
+          ->Arg(40)
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("stiffness" + tail).c_str(), stiffness, law, rule)
+          ->Arg(24)
+          ->Unit(benchmark::kMillisecond);
     }
 }
 

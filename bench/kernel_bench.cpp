@@ -45,9 +45,9 @@ struct Case {
   const char* ratio_label;
 };
 
-constexpr double kTolerance = 1e-8;       // AD and FD tangents against the generated one
+constexpr double kTolerance = 1e-8;           // AD and FD tangents against the generated one
 constexpr double kResidualTolerance = 1e-12;  // hand-written residual against the generated one
-constexpr double kFdStep = 1e-5;          // central-difference step, times the lattice spacing
+constexpr double kFdStep = 1e-5;              // central-difference step, times the lattice spacing
 
 // A perturbed square (cubic) lattice neighbourhood: the neighbours are the lattice
 // points with |index| <= delta/h, so the bond count is the lattice's (8, 12, 28, 36, 44;
@@ -108,10 +108,14 @@ TestFamily family(const Case& c) {
 template <class S>
 void reference(Ref r, const pd::abi::Family& fam, int d, const S* y, S* f, pd::bench::Workspace<S>& w) {
   switch (r) {
-    case Ref::Silling: return pd::bench::silling(fam, d, y, f, w);
-    case Ref::Oterkus: return pd::bench::oterkus(fam, d, y, f, w);
-    case Ref::Correspondence: return pd::bench::correspondence(fam, d, y, f, w);
-    case Ref::BondBased: return pd::bench::bond_based_constant(fam, d, y, f, w);
+    case Ref::Silling:
+      return pd::bench::silling(fam, d, y, f, w);
+    case Ref::Oterkus:
+      return pd::bench::oterkus(fam, d, y, f, w);
+    case Ref::Correspondence:
+      return pd::bench::correspondence(fam, d, y, f, w);
+    case Ref::BondBased:
+      return pd::bench::bond_based_constant(fam, d, y, f, w);
   }
 }
 
@@ -126,7 +130,8 @@ double rel_diff(const std::vector<double>& a, const std::vector<double>& b) {
 
 void check(const char* what, const Case& c, const TestFamily& f, double diff, double tol) {
   if (diff <= tol) return;
-  std::fprintf(stderr, "kernel_bench: %s of %s at %d bonds differs from the generated kernel: %.3g > %.0e relative\n",
+  std::fprintf(stderr,
+               "kernel_bench: %s of %s at %d bonds differs from the generated kernel: %.3g > %.0e relative\n",
                what, c.law, f.bonds(), diff, tol);
   std::exit(2);
 }
@@ -153,8 +158,10 @@ struct ForwardAd {
       for (int i = 0; i < n; ++i) y[i] = AD(n, i, f.y[i]);
   }
   double value(int i) const {
-    if constexpr (kSacado) return F[i].val();
-    else return F[i].value();
+    if constexpr (kSacado)
+      return F[i].val();
+    else
+      return F[i].value();
   }
   void run(double* M) {
     for (int i = 0; i < n; ++i) {
@@ -189,7 +196,13 @@ struct CentralFd {
   double step;
   std::vector<double> Y, fp, fm;
   explicit CentralFd(const TestFamily& fam)
-      : f(fam), n(fam.dofs()), d(fam.dim), step(kFdStep * std::pow(fam.V0, 1.0 / fam.dim)), Y(fam.Y), fp(n), fm(n) {}
+      : f(fam),
+        n(fam.dofs()),
+        d(fam.dim),
+        step(kFdStep * std::pow(fam.V0, 1.0 / fam.dim)),
+        Y(fam.Y),
+        fp(n),
+        fm(n) {}
   void shift(int j, double s) {
     const int a = j / d, c = j % d;
     if (a == 0)
@@ -253,7 +266,8 @@ void BM_generated_tangent_dense(benchmark::State& state, Case c, bool generic) {
   const TestFamily f = family(c);
   pd::TangentScratch scratch;
   const auto fac = scratch.view(f.dim, f.law->n_states, f.bonds());
-  std::vector<double> forces(static_cast<std::size_t>(f.dofs())), M(static_cast<std::size_t>(f.dofs() * f.dofs()));
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs())),
+      M(static_cast<std::size_t>(f.dofs() * f.dofs()));
   const pd::abi::Family fam = f.view();
   const pd::abi::KernelVariant& v = f.law->intact;
   for (auto _ : state) {
@@ -274,7 +288,8 @@ void BM_generated_tangent_pair_blocks(benchmark::State& state, Case c) {
   const TestFamily f = family(c);
   pd::TangentScratch scratch;
   const auto fac = scratch.view(f.dim, 0, f.bonds());
-  std::vector<double> forces(static_cast<std::size_t>(f.dofs())), B(static_cast<std::size_t>((f.bonds() + 1) * f.dim * f.dim));
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs())),
+      B(static_cast<std::size_t>((f.bonds() + 1) * f.dim * f.dim));
   const pd::abi::Family fam = f.view();
   for (auto _ : state) {
     f.law->intact.tangent(fam, forces.data(), fac);
@@ -381,25 +396,32 @@ void register_all() {
     const std::string suffix = std::string("/") + c.law + "/" + c.ratio_label;
     const bool three_d = pd::abi::find_law(c.law) && pd::abi::find_law(c.law)->dim == 3;
     benchmark::RegisterBenchmark(("generated_residual" + suffix).c_str(), BM_generated_residual, c);
-    benchmark::RegisterBenchmark(("generated_tangent_factors" + suffix).c_str(), BM_generated_tangent_factors, c);
-    benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c, false);
-    benchmark::RegisterBenchmark(("generic_form_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c, true);
+    benchmark::RegisterBenchmark(("generated_tangent_factors" + suffix).c_str(), BM_generated_tangent_factors,
+                                 c);
+    benchmark::RegisterBenchmark(("generated_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense, c,
+                                 false);
+    benchmark::RegisterBenchmark(("generic_form_tangent_dense" + suffix).c_str(), BM_generated_tangent_dense,
+                                 c, true);
     if (pd::abi::find_law(c.law) && pd::abi::find_law(c.law)->n_states == 0)
-      benchmark::RegisterBenchmark(("generated_tangent_pair_blocks" + suffix).c_str(), BM_generated_tangent_pair_blocks, c);
+      benchmark::RegisterBenchmark(("generated_tangent_pair_blocks" + suffix).c_str(),
+                                   BM_generated_tangent_pair_blocks, c);
     benchmark::RegisterBenchmark(("generated_jvp" + suffix).c_str(), BM_generated_jvp, c);
-    benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<EigenHeapAd>, c);
+    benchmark::RegisterBenchmark(("forward_ad_tangent_dense" + suffix).c_str(),
+                                 BM_forward_ad_tangent_dense<EigenHeapAd>, c);
     benchmark::RegisterBenchmark(("forward_ad_fixed_tangent_dense" + suffix).c_str(),
                                  three_d ? BM_forward_ad_tangent_dense<EigenFixedAd<kMax3d>>
                                          : BM_forward_ad_tangent_dense<EigenFixedAd<kMax2d>>,
                                  c);
 #ifdef PD_HAVE_SACADO
-    benchmark::RegisterBenchmark(("sacado_dfad_tangent_dense" + suffix).c_str(), BM_forward_ad_tangent_dense<SacadoDfad>, c);
+    benchmark::RegisterBenchmark(("sacado_dfad_tangent_dense" + suffix).c_str(),
+                                 BM_forward_ad_tangent_dense<SacadoDfad>, c);
     benchmark::RegisterBenchmark(("sacado_slfad_tangent_dense" + suffix).c_str(),
                                  three_d ? BM_forward_ad_tangent_dense<SacadoSlfad<kMax3d>>
                                          : BM_forward_ad_tangent_dense<SacadoSlfad<kMax2d>>,
                                  c);
 #endif
-    benchmark::RegisterBenchmark(("central_fd_tangent_dense" + suffix).c_str(), BM_central_fd_tangent_dense, c);
+    benchmark::RegisterBenchmark(("central_fd_tangent_dense" + suffix).c_str(), BM_central_fd_tangent_dense,
+                                 c);
   }
 }
 }  // namespace

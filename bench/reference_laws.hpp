@@ -172,7 +172,8 @@ void correspondence(const abi::Family& fam, int d, const S* y, S* f, Workspace<S
   double Ks[9] = {}, Ki[9] = {};
   for (int k = 0; k < L; ++k)
     for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j) Ks[i * d + j] += fam.w[k] * fam.V[k] * fam.xi[k * d + i] * fam.xi[k * d + j];
+      for (int j = 0; j < d; ++j)
+        Ks[i * d + j] += fam.w[k] * fam.V[k] * fam.xi[k * d + i] * fam.xi[k * d + j];
   if (d == 2) {
     const double det = Ks[0] * Ks[3] - Ks[1] * Ks[2];
     Ki[0] = Ks[3] / det, Ki[1] = -Ks[1] / det, Ki[2] = -Ks[2] / det, Ki[3] = Ks[0] / det;
@@ -189,7 +190,8 @@ void correspondence(const abi::Family& fam, int d, const S* y, S* f, Workspace<S
   for (int i = 0; i < d * d; ++i) detail::zero(w.N[i], y[0]);
   for (int k = 0; k < L; ++k)
     for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j) w.N[i * d + j] += (fam.w[k] * fam.V[k] * fam.xi[k * d + j]) * w.Y[k * d + i];
+      for (int j = 0; j < d; ++j)
+        w.N[i * d + j] += (fam.w[k] * fam.V[k] * fam.xi[k * d + j]) * w.Y[k * d + i];
   // F = N K^-1 (into P), then sigma (into N), then P = sigma K^-1.
   for (int i = 0; i < d; ++i)
     for (int j = 0; j < d; ++j) {

@@ -31,7 +31,8 @@ EmittedVariant emit_variant(const Law& law, const std::string& variant) {
       {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
   if (k.has_energy) programs.push_back({"energy", &k.energy});
   if (k.has_outputs) programs.push_back({"outputs", &k.outputs});
-  for (const auto& [kind, program] : programs) v.kernels.push_back({kind, program->name, emit_kernel(*program)});
+  for (const auto& [kind, program] : programs)
+    v.kernels.push_back({kind, program->name, emit_kernel(*program)});
   const std::string form = law.name() + "_" + variant + "_form";
   v.kernels.push_back({"form", form, emit_form_kernel(form, k.factor_structure)});
   return v;
@@ -47,8 +48,10 @@ GeneratedFiles generate() {
     try {
       const Law law = e.build();
       if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
-      if (!law_names.insert(law.name()).second) throw std::invalid_argument("law '" + law.name() + "' is registered twice");
-      files.add_law(e.file_stem, law, {emit_variant(law, "damaged"), emit_variant(law.with_alpha_folded(), "intact")});
+      if (!law_names.insert(law.name()).second)
+        throw std::invalid_argument("law '" + law.name() + "' is registered twice");
+      files.add_law(e.file_stem, law,
+                    {emit_variant(law, "damaged"), emit_variant(law.with_alpha_folded(), "intact")});
     } catch (const std::exception& ex) {
       const std::string& name = law_under_construction();
       throw std::invalid_argument(e.source + ": " + (name.empty() ? "" : "law '" + name + "': ") + ex.what());

@@ -36,15 +36,18 @@ Law bond_based(const std::string& name, int dim, bool conical, const std::string
 
 PDGEN_LAW(bond_based_constant_2d) {
   return bond_based("bond_based_constant_2d", 2, false,
-                    "bond-based microelastic, constant micromodulus, 2D (plane strain, or plane stress via the material); param kappa2");
+                    "bond-based microelastic, constant micromodulus, 2D (plane strain, or plane stress via "
+                    "the material); param kappa2");
 }
 PDGEN_LAW(bond_based_conical_2d) {
   return bond_based("bond_based_conical_2d", 2, true,
                     "bond-based microelastic, conical micromodulus (paper 004 eq. 7), 2D; param kappa2");
 }
 PDGEN_LAW(bond_based_constant_3d) {
-  return bond_based("bond_based_constant_3d", 3, false, "bond-based microelastic, constant micromodulus, 3D; param K");
+  return bond_based("bond_based_constant_3d", 3, false,
+                    "bond-based microelastic, constant micromodulus, 3D; param K");
 }
 PDGEN_LAW(bond_based_conical_3d) {
-  return bond_based("bond_based_conical_3d", 3, true, "bond-based microelastic, conical micromodulus, 3D; param K");
+  return bond_based("bond_based_conical_3d", 3, true,
+                    "bond-based microelastic, conical micromodulus, 3D; param K");
 }

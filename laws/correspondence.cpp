@@ -51,7 +51,8 @@ Law correspondence(const std::string& name, int dim, Stabilisation stab, const s
     const Expr c = dim == 2 ? 12 * (Kb + G / 3) / (M_PI * pow(delta, 3)) : 18 * Kb / (M_PI * pow(delta, 4));
     const Vec z = law.Y() - F * law.xi();
     if (stab == Stabilisation::Silling) {
-      const Expr w_bar = law.sum("influence_volume", wa * law.V()) / law.sum("intact_volume", law.alpha() * law.V());
+      const Expr w_bar =
+          law.sum("influence_volume", wa * law.V()) / law.sum("intact_volume", law.alpha() * law.V());
       const Expr k = law.param("stab", 1.0) * c / (w_bar * delta);
       t = t + wa * k * z;
       W = W + k / 2 * law.sum("nonaffine_energy", wa * dot(z, z) * law.V());
@@ -70,8 +71,9 @@ Law correspondence(const std::string& name, int dim, Stabilisation stab, const s
 }  // namespace
 
 PDGEN_LAW(correspondence_plane_strain) {
-  return correspondence("correspondence_plane_strain", 2, Stabilisation::None,
-                        "deformation-gradient law, linear elastic, plane strain (paper 000 eqs. 18-21); params K (3D bulk), G");
+  return correspondence(
+      "correspondence_plane_strain", 2, Stabilisation::None,
+      "deformation-gradient law, linear elastic, plane strain (paper 000 eqs. 18-21); params K (3D bulk), G");
 }
 PDGEN_LAW(correspondence_3d) {
   return correspondence("correspondence_3d", 3, Stabilisation::None,
@@ -79,17 +81,21 @@ PDGEN_LAW(correspondence_3d) {
 }
 PDGEN_LAW(correspondence_silling_plane_strain) {
   return correspondence("correspondence_silling_plane_strain", 2, Stabilisation::Silling,
-                        "correspondence with Silling's zero-energy-mode control (paper 003 eqs. 13-15), plane strain; params K, G, stab");
+                        "correspondence with Silling's zero-energy-mode control (paper 003 eqs. 13-15), "
+                        "plane strain; params K, G, stab");
 }
 PDGEN_LAW(correspondence_silling_3d) {
-  return correspondence("correspondence_silling_3d", 3, Stabilisation::Silling,
-                        "correspondence with Silling's zero-energy-mode control (paper 003 eqs. 13-15), 3D; params K, G, stab");
+  return correspondence(
+      "correspondence_silling_3d", 3, Stabilisation::Silling,
+      "correspondence with Silling's zero-energy-mode control (paper 003 eqs. 13-15), 3D; params K, G, stab");
 }
 PDGEN_LAW(correspondence_littlewood_plane_strain) {
-  return correspondence("correspondence_littlewood_plane_strain", 2, Stabilisation::Littlewood,
-                        "correspondence with Littlewood's bond-level hourglass penalty, plane strain; params K, G, hourglass");
+  return correspondence(
+      "correspondence_littlewood_plane_strain", 2, Stabilisation::Littlewood,
+      "correspondence with Littlewood's bond-level hourglass penalty, plane strain; params K, G, hourglass");
 }
 PDGEN_LAW(correspondence_littlewood_3d) {
-  return correspondence("correspondence_littlewood_3d", 3, Stabilisation::Littlewood,
-                        "correspondence with Littlewood's bond-level hourglass penalty, 3D; params K, G, hourglass");
+  return correspondence(
+      "correspondence_littlewood_3d", 3, Stabilisation::Littlewood,
+      "correspondence with Littlewood's bond-level hourglass penalty, 3D; params K, G, hourglass");
 }

@@ -16,9 +16,9 @@ PDGEN_INFLUENCE(quarticA, "1 - 6 rho^2 + 8 rho^3 - 3 rho^4, rho = r/delta") {
   return 1 - 6 * pow(rho, 2) + 8 * pow(rho, 3) - 3 * pow(rho, 4);
 }
 
-#define PD_RATIONAL(a, n)                                                                 \
-  PDGEN_INFLUENCE(rational_a##a##_n##n, "(1 - r/delta)^" #a " / r^" #n) {                 \
-    return pow(1 - r / delta, a) / pow(r, n);                                             \
+#define PD_RATIONAL(a, n)                                                 \
+  PDGEN_INFLUENCE(rational_a##a##_n##n, "(1 - r/delta)^" #a " / r^" #n) { \
+    return pow(1 - r / delta, a) / pow(r, n);                             \
   }
 PD_RATIONAL(0, 0)
 PD_RATIONAL(0, 1)

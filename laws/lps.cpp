@@ -45,7 +45,7 @@
 using namespace pdgen;
 
 namespace {
-enum class Volume { discrete, analytic };                         // m = sum w a |xi|^2 V, or m(delta)
+enum class Volume { discrete, analytic };  // m = sum w a |xi|^2 V, or m(delta)
 enum class Dilatation { plain, corrected_with_energy, corrected_dilatation_only };
 
 Law lps(const std::string& name, int dim, Volume volume, Dilatation dilatation, const std::string& summary) {
@@ -57,7 +57,8 @@ Law lps(const std::string& name, int dim, Volume volume, Dilatation dilatation, 
   // The kernel: the scene's influence w, or the paper's K = 1/r.
   const Expr wa = (paper ? 1 / r : law.w()) * law.alpha();
   const Vec eta = law.Y() - law.xi();
-  const Expr m = paper ? (dim == 2 ? 2 * std::numbers::pi / 3 * pow(law.delta(), 3) : std::numbers::pi * pow(law.delta(), 4))
+  const Expr m = paper ? (dim == 2 ? 2 * std::numbers::pi / 3 * pow(law.delta(), 3)
+                                   : std::numbers::pi * pow(law.delta(), 4))
                        : law.sum("m", wa * r * r * law.V());
   Vec g = law.xi();  // the bond vector the dilatation sees
   if (dilatation != Dilatation::plain) {
@@ -69,7 +70,8 @@ Law lps(const std::string& name, int dim, Volume volume, Dilatation dilatation, 
   const Expr theta = law.dilatation_sum("theta", Expr(dim) / m * wa * dot(g, eta) * law.V());
   const Vec force_dir = dilatation == Dilatation::corrected_dilatation_only ? law.xi() : g;
   const Expr stretch = dot(law.xi(), eta) / (r * r);  // (n . eta) / |xi|
-  const Expr lambda_ij = law.pair_param("lambda", PairMean::harmonic), mu_ij = law.pair_param("mu", PairMean::harmonic);
+  const Expr lambda_ij = law.pair_param("lambda", PairMean::harmonic),
+             mu_ij = law.pair_param("mu", PairMean::harmonic);
   law.force(wa / m * (Ca * (lambda_ij - mu_ij) * theta * force_dir + Cb / 2 * mu_ij * stretch * law.xi()));
   if (dilatation != Dilatation::corrected_dilatation_only) {
     const Expr shear = law.sum("bond_energy", mu_ij * wa * pow(dot(law.xi(), eta), 2) / (r * r) * law.V());
@@ -81,33 +83,41 @@ Law lps(const std::string& name, int dim, Volume volume, Dilatation dilatation, 
 
 PDGEN_LAW(lps_plane_strain) {
   return lps("lps_plane_strain", 2, Volume::discrete, Dilatation::plain,
-             "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact bonds, plane strain; params lambda, mu");
+             "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact "
+             "bonds, plane strain; params lambda, mu");
 }
 PDGEN_LAW(lps_3d) {
   return lps("lps_3d", 3, Volume::discrete, Dilatation::plain,
-             "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact bonds, 3D; params lambda, mu");
+             "linear peridynamic solid (paper 001 eqs. 2.1-2.3, 2.13) with the discrete m of the intact "
+             "bonds, 3D; params lambda, mu");
 }
 PDGEN_LAW(lps_corrected_plane_strain) {
   return lps("lps_corrected_plane_strain", 2, Volume::discrete, Dilatation::corrected_with_energy,
-             "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the force (an energy), plane strain; params lambda, mu");
+             "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the "
+             "force (an energy), plane strain; params lambda, mu");
 }
 PDGEN_LAW(lps_corrected_3d) {
   return lps("lps_corrected_3d", 3, Volume::discrete, Dilatation::corrected_with_energy,
-             "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the force (an energy), 3D; params lambda, mu");
+             "LPS with the corrected dilatation of paper 001 eqs. 3.2-3.5 (pseudo-inverse), M+ also in the "
+             "force (an energy), 3D; params lambda, mu");
 }
 PDGEN_LAW(lps_paper_plane_strain) {
   return lps("lps_paper_plane_strain", 2, Volume::analytic, Dilatation::plain,
-             "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic m(delta) = 2 pi delta^3/3 for every family, plane strain; params lambda, mu");
+             "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic "
+             "m(delta) = 2 pi delta^3/3 for every family, plane strain; params lambda, mu");
 }
 PDGEN_LAW(lps_paper_3d) {
   return lps("lps_paper_3d", 3, Volume::analytic, Dilatation::plain,
-             "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic m(delta) = pi delta^4 for every family, 3D; params lambda, mu");
+             "paper 001's LPS as written: K = 1/r built in (the scene's influence is not used), analytic "
+             "m(delta) = pi delta^4 for every family, 3D; params lambda, mu");
 }
 PDGEN_LAW(lps_paper_corrected_plane_strain) {
   return lps("lps_paper_corrected_plane_strain", 2, Volume::analytic, Dilatation::corrected_dilatation_only,
-             "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation only; no energy): K = 1/r built in, analytic m(delta), plane strain; params lambda, mu");
+             "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation "
+             "only; no energy): K = 1/r built in, analytic m(delta), plane strain; params lambda, mu");
 }
 PDGEN_LAW(lps_paper_corrected_3d) {
   return lps("lps_paper_corrected_3d", 3, Volume::analytic, Dilatation::corrected_dilatation_only,
-             "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation only; no energy): K = 1/r built in, analytic m(delta), 3D; params lambda, mu");
+             "paper 001's LPS as written with the corrected dilatation (eqs. 3.4-3.5, M+ in the dilatation "
+             "only; no energy): K = 1/r built in, analytic m(delta), 3D; params lambda, mu");
 }

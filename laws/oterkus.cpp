@@ -50,18 +50,21 @@ Law oterkus(const std::string& name, const std::string& summary, bool d_from_m, 
 
 PDGEN_LAW(oterkus_plane_strain) {
   return oterkus("oterkus_plane_strain",
-                 "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); params kappa2, G",
+                 "Oterkus dilatation law, plane strain (paper 000 eqs. 8-17, a, b, d from discrete sums); "
+                 "params kappa2, G",
                  false);
 }
 
 PDGEN_LAW(oterkus_3d) {
   return oterkus("oterkus_3d",
-                 "Oterkus dilatation law, 3D (paper 003 eqs. 7-8, a, b, d from discrete sums); params K, G", false, 3);
+                 "Oterkus dilatation law, 3D (paper 003 eqs. 7-8, a, b, d from discrete sums); params K, G",
+                 false, 3);
 }
 
 PDGEN_LAW(oterkus_paper_d_plane_strain) {
-  return oterkus("oterkus_paper_d_plane_strain",
-                 "Oterkus law with d = 2 / sum w a |xi|^2 V (paper 000 section 3's reading of eq. 12; a study variant, "
-                 "not dimensionally consistent); params kappa2, G",
-                 true);
+  return oterkus(
+      "oterkus_paper_d_plane_strain",
+      "Oterkus law with d = 2 / sum w a |xi|^2 V (paper 000 section 3's reading of eq. 12; a study variant, "
+      "not dimensionally consistent); params kappa2, G",
+      true);
 }

@@ -35,7 +35,8 @@ Law silling(const std::string& name, int dim, const std::string& summary) {
 }  // namespace
 
 PDGEN_LAW(silling_plane_strain) {
-  return silling("silling_plane_strain", 2, "Silling dilatation law, plane strain (paper 000 eqs. 5-7); params K (3D bulk), G");
+  return silling("silling_plane_strain", 2,
+                 "Silling dilatation law, plane strain (paper 000 eqs. 5-7); params K (3D bulk), G");
 }
 
 PDGEN_LAW(silling_3d) {

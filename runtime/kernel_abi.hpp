@@ -34,7 +34,7 @@ struct Family {
   // read by a law with pair parameters (LawDescriptor::uses_pair_params). Null: every
   // neighbour has the center's (a body of one material); always valid.
   const double* nbr_params = nullptr;
-  const double* moments = nullptr; // [n_moments] output of the moments kernel (setup)
+  const double* moments = nullptr;  // [n_moments] output of the moments kernel (setup)
   // [L * LawDescriptor::scratch_per_bond] working memory the kernels may overwrite (per-bond
   // values one loop computes and a later loop reads); the caller owns it, one per thread.
   // May be null when the law's scratch_per_bond is 0.
@@ -90,9 +90,9 @@ struct KernelVariant {
   ResidualKernel residual = nullptr;
   TangentKernel tangent = nullptr;
   JvpKernel jvp = nullptr;
-  FormKernel form = nullptr;        // may be null (hand-written laws)
-  EnergyKernel energy = nullptr;    // may be null
-  OutputsKernel outputs = nullptr;  // may be null when n_outputs == 0
+  FormKernel form = nullptr;                    // may be null (hand-written laws)
+  EnergyKernel energy = nullptr;                // may be null
+  OutputsKernel outputs = nullptr;              // may be null when n_outputs == 0
   OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
 };
 
@@ -106,7 +106,7 @@ struct LawDescriptor {
   // law declares none (elastic names are derived from the material instead).
   const double* param_test_values = nullptr;
   int n_moments = 0;
-  int n_states = 0;   // scalar state components (the s index of TangentFactors)
+  int n_states = 0;  // scalar state components (the s index of TangentFactors)
   int n_outputs = 0;
   const char* const* output_names = nullptr;
   int scratch_per_bond = 0;  // doubles per bond of Family::scratch any kernel of the law uses

@@ -22,7 +22,8 @@ namespace pd {
 // DIM and STATES > 0 fix the dimension and state count at compile time (the loops over
 // them unroll: 3x faster for correspondence's 4 states); 0 reads them at run time.
 template <int DIM, int STATES>
-void form_local_matrix_for(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac, double* M) {
+void form_local_matrix_for(int dim, int n_states, const abi::Family& fam, const abi::TangentFactors& fac,
+                           double* M) {
   const int L = fam.n_bonds, d = DIM > 0 ? DIM : dim, S = STATES > 0 ? STATES : n_states;
   const int n = (L + 1) * d, dd = d * d;
   double right_sum[3 * 16] = {}, left_sum[3 * 16] = {};  // [s*d + q], n_states <= 16 on the stack
@@ -110,8 +111,8 @@ inline void form_local_matrix(int dim, int n_states, const abi::Family& fam, con
 
 // The same matrix through the law's generated form kernel (KernelVariant::form: the
 // structural zeros of the law's factors skipped) when it has one, else the generic forming.
-inline void form_local_matrix(const abi::KernelVariant& variant, int dim, int n_states, const abi::Family& fam,
-                              const abi::TangentFactors& fac, double* M) {
+inline void form_local_matrix(const abi::KernelVariant& variant, int dim, int n_states,
+                              const abi::Family& fam, const abi::TangentFactors& fac, double* M) {
   if (variant.form != nullptr) return variant.form(fam, fac, M);
   form_local_matrix(dim, n_states, fam, fac, M);
 }

@@ -5,8 +5,8 @@
 
 namespace pd {
 
-const char* version();     // the project version, e.g. "0.1.0"
-const char* git_commit();  // e.g. "570cb2a1b2c3", "570cb2a1b2c3-dirty", or "unknown" outside git
+const char* version();       // the project version, e.g. "0.1.0"
+const char* git_commit();    // e.g. "570cb2a1b2c3", "570cb2a1b2c3-dirty", or "unknown" outside git
 std::string version_line();  // "pd 0.1.0 (commit 570cb2a1b2c3)"
 
 }  // namespace pd

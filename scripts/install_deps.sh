@@ -3,7 +3,7 @@
 # Usage: scripts/install_deps.sh [--profile]   (--profile: also perf and valgrind, for bench/profile.sh)
 set -euo pipefail
 packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev libfmt-dev
-          libyaml-cpp-dev libgtest-dev libbenchmark-dev libomp-dev python3
+          libyaml-cpp-dev libgtest-dev libbenchmark-dev libomp-dev python3 clang-format
           nlohmann-json3-dev libcli11-dev python3-matplotlib python3-vtk9 clang libclang-rt-14-dev
           python3-sfepy  # the FEM reference of paper 004 (scripts/fem/edge_notch_j.py, ctest fem_edge_notch_j)
           libtrilinos-sacado-dev libtrilinos-kokkos-dev libtrilinos-teuchos-dev  # Sacado: kernel_bench's forward-AD reference (Peridigm's AD); Debian's headers need Kokkos, Teuchos and mpi.h

@@ -32,8 +32,8 @@ double residual_rms(int n, bool odd) {
   // OBQ on the full-ball families (all that reach the measured particles).
   std::vector<char> full(P.size());
   for (int p = 0; p < P.size(); ++p) full[p] = inside(P.position(p), delta);
-  const pd::Collocation col =
-      pd::make_collocation(P, B, pd::obq_weights(P, B, odd ? pd::paper001_odd_space(2) : pd::paper001_space(2), full));
+  const pd::Collocation col = pd::make_collocation(
+      P, B, pd::obq_weights(P, B, odd ? pd::paper001_odd_space(2) : pd::paper001_space(2), full));
   pd::AssemblerOptions options;
   options.collocation = &col;
   options.intact = true;
@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
     const double e[2] = {residual_rms(n, false), residual_rms(n, true)};
     std::printf("%4d^2 |", n);
     for (int k = 0; k < 2; ++k)
-      std::printf(" %14.4e %6.2f%s", e[k], prev_n ? std::log(prev[k] / e[k]) / std::log(double(n) / prev_n) : NAN,
+      std::printf(" %14.4e %6.2f%s", e[k],
+                  prev_n ? std::log(prev[k] / e[k]) / std::log(double(n) / prev_n) : NAN,
                   k == 0 ? " |" : "\n");
     prev[0] = e[0], prev[1] = e[1], prev_n = n;
   }

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   std::vector<int> ks;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--n" && i + 1 < argc) n = std::atoi(argv[++i]);
+    if (a == "--n" && i + 1 < argc)
+      n = std::atoi(argv[++i]);
     else if (a == "--ks" && i + 1 < argc) {
       std::stringstream list(argv[++i]);
       for (std::string item; std::getline(list, item, ',');) ks.push_back(std::stoi(item));
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
     s.inclusion_radius = a;
     s.inclusion_lambda = in[0], s.inclusion_mu = in[1];
     s.keep_solution = true;
-    const pd::ManufacturedResult r = pd::solve_manufactured(pd::paper001_inclusion(P, a, c, c, in[0], in[1], out[0], out[1]), s);
+    const pd::ManufacturedResult r =
+        pd::solve_manufactured(pd::paper001_inclusion(P, a, c, c, in[0], in[1], out[0], out[1]), s);
     for (int p = 0; p < r.particles; ++p)
       if (std::fabs(r.x[2 * p + 1] - row) < 0.25 * h)
         std::printf("%d,%.17g,%.17g,%.17g,%.17g\n", n, ratio, r.x[2 * p], r.u[2 * p], r.exact[2 * p]);

@@ -27,8 +27,10 @@ int main(int argc, char** argv) {
   std::vector<int> grids;
   std::string only;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
-    else grids.push_back(std::atoi(argv[i]));
+    if (std::string(argv[i]) == "--only" && i + 1 < argc)
+      only = argv[++i];
+    else
+      grids.push_back(std::atoi(argv[i]));
   }
   if (grids.empty()) grids = {24, 48, 96};
   const auto inc = pd::lame_from_young_poisson(1.0, 0.495);
@@ -36,8 +38,8 @@ int main(int argc, char** argv) {
     const char* name;
     pd::ManufacturedField field;
     double lambda, mu;
-    bool odd = false;       // paper001_odd_space, with
-    double layer = 1.0;     // a Dirichlet layer of this many horizons
+    bool odd = false;    // paper001_odd_space, with
+    double layer = 1.0;  // a Dirichlet layer of this many horizons
   };
   // The paper's three columns, then ours beyond it: the odd terms (docs/paper001.md)
   // need a layer of two horizons (the one-face families of a delta layer have too few
@@ -50,8 +52,8 @@ int main(int argc, char** argv) {
                             {"u1,nu.3o", pd::paper001_u1(), nu3[0], nu3[1], true, 2.0},
                             {"u2,odd", pd::paper001_u2(), 0.5, 0.5, true, 2.0},
                             {"u2,2dl", pd::paper001_u2(), 0.5, 0.5, false, 2.0}};
-  std::printf("%6s %8s %7s | %12s %12s %6s | %8s %8s\n", "N", "column", "solved", "ours", "paper", "order", "ours/pap",
-              "seconds");
+  std::printf("%6s %8s %7s | %12s %12s %6s | %8s %8s\n", "N", "column", "solved", "ours", "paper", "order",
+              "ours/pap", "seconds");
   for (int c = 0; c < static_cast<int>(std::size(columns)); ++c) {
     if (!only.empty() && only != columns[c].name) continue;
     double previous = 0;
@@ -65,9 +67,11 @@ int main(int argc, char** argv) {
       s.layer_horizons = columns[c].layer;
       const pd::ManufacturedResult r = pd::solve_manufactured(columns[c].field, s);
       const double paper = c < 3 && kPaper.count(n) ? kPaper.at(n)[c] : NAN;
-      const double order = previous_n ? std::log(previous / r.rms_error) / std::log(double(n) / previous_n) : NAN;
-      std::printf("%4d^2 %8s %7d | %12.4e %12.4e %6.2f | %8.3g %8.2f\n", n, columns[c].name, r.solved, r.rms_error, paper,
-                  order, r.rms_error / paper, r.weights_seconds + r.assembly_seconds + r.solve_seconds);
+      const double order =
+          previous_n ? std::log(previous / r.rms_error) / std::log(double(n) / previous_n) : NAN;
+      std::printf("%4d^2 %8s %7d | %12.4e %12.4e %6.2f | %8.3g %8.2f\n", n, columns[c].name, r.solved,
+                  r.rms_error, paper, order, r.rms_error / paper,
+                  r.weights_seconds + r.assembly_seconds + r.solve_seconds);
       std::fflush(stdout);
       previous = r.rms_error, previous_n = n;
     }

@@ -19,10 +19,10 @@ const std::map<int, std::array<double, 2>> kPaper{
 
 struct Variant {
   std::string name;
-  double k = 1;              // wavenumber of u2
-  double lo = 0, hi = 1;     // the square
-  double layer = 1;          // Dirichlet layer in horizons
-  bool outside = false;      // the layer as a collar outside the square
+  double k = 1;           // wavenumber of u2
+  double lo = 0, hi = 1;  // the square
+  double layer = 1;       // Dirichlet layer in horizons
+  bool outside = false;   // the layer as a collar outside the square
 };
 }  // namespace
 
@@ -30,19 +30,29 @@ int main(int argc, char** argv) {
   std::vector<int> grids;
   std::string only;  // --only NAME: one variant
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
-    else grids.push_back(std::atoi(argv[i]));
+    if (std::string(argv[i]) == "--only" && i + 1 < argc)
+      only = argv[++i];
+    else
+      grids.push_back(std::atoi(argv[i]));
   }
   if (grids.empty()) grids = {24, 48};
-  const std::vector<Variant> variants{
-      {"as stated", 1},           {"k = pi/2", M_PI / 2},         {"k = pi", M_PI},
-      {"k = 2 pi", 2 * M_PI},     {"[-1,1]^2", 1, -1, 1},         {"[0,pi]^2", 1, 0, M_PI},
-      {"[0,2pi]^2", 1, 0, 2 * M_PI}, {"layer 2 delta", 1, 0, 1, 2}, {"collar outside", 1, 0, 1, 1, true},
-      {"k=pi, outside", M_PI, 0, 1, 1, true}, {"k=4", 4}, {"k=4, outside", 4, 0, 1, 1, true},
-      {"[-1,1]^2, outside", 1, -1, 1, 1, true}, {"k=2pi, outside", 2 * M_PI, 0, 1, 1, true}};
+  const std::vector<Variant> variants{{"as stated", 1},
+                                      {"k = pi/2", M_PI / 2},
+                                      {"k = pi", M_PI},
+                                      {"k = 2 pi", 2 * M_PI},
+                                      {"[-1,1]^2", 1, -1, 1},
+                                      {"[0,pi]^2", 1, 0, M_PI},
+                                      {"[0,2pi]^2", 1, 0, 2 * M_PI},
+                                      {"layer 2 delta", 1, 0, 1, 2},
+                                      {"collar outside", 1, 0, 1, 1, true},
+                                      {"k=pi, outside", M_PI, 0, 1, 1, true},
+                                      {"k=4", 4},
+                                      {"k=4, outside", 4, 0, 1, 1, true},
+                                      {"[-1,1]^2, outside", 1, -1, 1, 1, true},
+                                      {"k=2pi, outside", 2 * M_PI, 0, 1, 1, true}};
   const auto inc = pd::lame_from_young_poisson(1.0, 0.495);
-  std::printf("%-18s %6s | %11s %8s %7s | %11s %8s %7s | %8s %8s\n", "variant", "N", "u2", "ratio", "order", "u2,inc",
-              "ratio", "order", "ex+ey", "ex+ey");
+  std::printf("%-18s %6s | %11s %8s %7s | %11s %8s %7s | %8s %8s\n", "variant", "N", "u2", "ratio", "order",
+              "u2,inc", "ratio", "order", "ex+ey", "ex+ey");
   for (const Variant& v : variants) {
     if (!only.empty() && v.name != only) continue;
     double prev[2] = {0, 0};

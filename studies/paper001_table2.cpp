@@ -27,8 +27,8 @@
 namespace {
 // Table 2 of paper 001: RMS error for uniform (nu 0.25, 0.49) then nonuniform (0.25, 0.49).
 const std::map<int, std::array<double, 4>> kPaper{
-    {16, {0.00569, 0.04463, 0.00661, 0.04629}},   {32, {0.00201, 0.03926, 0.00242, 0.03941}},
-    {64, {0.00099, 0.02260, 0.00144, 0.02304}},   {128, {0.00045, 0.01205, 0.00055, 0.01211}},
+    {16, {0.00569, 0.04463, 0.00661, 0.04629}},  {32, {0.00201, 0.03926, 0.00242, 0.03941}},
+    {64, {0.00099, 0.02260, 0.00144, 0.02304}},  {128, {0.00045, 0.01205, 0.00055, 0.01211}},
     {256, {0.00023, 0.00595, 0.00044, 0.00614}},
 };
 
@@ -45,26 +45,32 @@ int main(int argc, char** argv) {
   double P = 1.0, perturbation = 0.2;
   int seed = 1;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
-    else if (std::string(argv[i]) == "--P" && i + 1 < argc) P = std::atof(argv[++i]);
-    else if (std::string(argv[i]) == "--perturbation" && i + 1 < argc) perturbation = std::atof(argv[++i]);
-    else if (std::string(argv[i]) == "--seed" && i + 1 < argc) seed = std::atoi(argv[++i]);
-    else if (std::string(argv[i]) == "--law" && i + 1 < argc) law = argv[++i];
-    else grids.push_back(std::atoi(argv[i]));
+    if (std::string(argv[i]) == "--only" && i + 1 < argc)
+      only = argv[++i];
+    else if (std::string(argv[i]) == "--P" && i + 1 < argc)
+      P = std::atof(argv[++i]);
+    else if (std::string(argv[i]) == "--perturbation" && i + 1 < argc)
+      perturbation = std::atof(argv[++i]);
+    else if (std::string(argv[i]) == "--seed" && i + 1 < argc)
+      seed = std::atoi(argv[++i]);
+    else if (std::string(argv[i]) == "--law" && i + 1 < argc)
+      law = argv[++i];
+    else
+      grids.push_back(std::atoi(argv[i]));
   }
   if (grids.empty()) grids = {16, 32, 64, 128};
   struct Column {
     const char* name;
-    double nu1, nu2;     // inclusion, matrix
+    double nu1, nu2;  // inclusion, matrix
     double perturbation;
-    int paper;           // index into kPaper's rows
+    int paper;  // index into kPaper's rows
   };
-  const Column columns[] = {{"uni,.25", 0.25, 0.25, 0.0, 0},  {"uni,nu1=.49", 0.49, 0.25, 0.0, 1},
+  const Column columns[] = {{"uni,.25", 0.25, 0.25, 0.0, 0},     {"uni,nu1=.49", 0.49, 0.25, 0.0, 1},
                             {"uni,nu2=.49", 0.25, 0.49, 0.0, 1}, {"per,.25", 0.25, 0.25, 0.2, 2},
                             {"per,nu1=.49", 0.49, 0.25, 0.2, 3}, {"per,nu2=.49", 0.25, 0.49, 0.2, 3}};
   const double a = 0.2, cx = 0.5, cy = 0.5;
-  std::printf("%6s %12s %7s | %12s %12s %6s | %8s %8s\n", "N", "column", "solved", "ours", "paper", "order", "ours/pap",
-              "seconds");
+  std::printf("%6s %12s %7s | %12s %12s %6s | %8s %8s\n", "N", "column", "solved", "ours", "paper", "order",
+              "ours/pap", "seconds");
   for (const Column& col : columns) {
     if (!only.empty() && only != col.name) continue;
     const auto in = lame_from_bulk(2.0, col.nu1), out = lame_from_bulk(1.0, col.nu2);
@@ -83,9 +89,11 @@ int main(int argc, char** argv) {
       s.inclusion_lambda = in[0], s.inclusion_mu = in[1];
       const pd::ManufacturedResult r = pd::solve_manufactured(field, s);
       const double paper = kPaper.count(n) ? kPaper.at(n)[col.paper] : NAN;
-      const double order = previous_n ? std::log(previous / r.rms_error) / std::log(double(n) / previous_n) : NAN;
-      std::printf("%4d^2 %12s %7d | %12.4e %12.4e %6.2f | %8.3g %8.2f\n", n, col.name, r.solved, r.rms_error, paper, order,
-                  r.rms_error / paper, r.weights_seconds + r.assembly_seconds + r.solve_seconds);
+      const double order =
+          previous_n ? std::log(previous / r.rms_error) / std::log(double(n) / previous_n) : NAN;
+      std::printf("%4d^2 %12s %7d | %12.4e %12.4e %6.2f | %8.3g %8.2f\n", n, col.name, r.solved, r.rms_error,
+                  paper, order, r.rms_error / paper,
+                  r.weights_seconds + r.assembly_seconds + r.solve_seconds);
       std::fflush(stdout);
       previous = r.rms_error, previous_n = n;
     }

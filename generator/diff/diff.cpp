@@ -27,7 +27,8 @@ Expr diff_id(NodeId id, int s) {
   const auto key = std::make_pair(id, s);
   if (auto it = memo.find(key); it != memo.end()) return Expr::from_id(it->second);
   const auto& syms = free_symbols(Expr::from_id(id));
-  const Expr d = std::binary_search(syms.begin(), syms.end(), s) ? diff_node(Expr::from_id(id), s) : Expr(0.0);
+  const Expr d =
+      std::binary_search(syms.begin(), syms.end(), s) ? diff_node(Expr::from_id(id), s) : Expr(0.0);
   memo[key] = d.id();
   return d;
 }
@@ -94,7 +95,8 @@ const std::vector<int>& symbols_of(NodeId id) {
 std::vector<int> free_symbols(Expr e) { return symbols_of(e.id()); }
 
 namespace {
-Expr substitute_id(NodeId id, const std::unordered_map<int, Expr>& map, std::unordered_map<NodeId, NodeId>& memo) {
+Expr substitute_id(NodeId id, const std::unordered_map<int, Expr>& map,
+                   std::unordered_map<NodeId, NodeId>& memo) {
   if (auto it = memo.find(id); it != memo.end()) return Expr::from_id(it->second);
   const Node n = ctx().node(id);
   Expr out;

@@ -17,11 +17,14 @@ Signature signature(Kernel k) {
     case Kernel::Residual:
       return {"void", {kFamily, "double* forces"}, {"fam", "forces"}};
     case Kernel::Tangent:
-      return {"void", {kFamily, "double* forces", "const pd::abi::TangentFactors& factors"}, {"fam", "forces", "factors"}};
+      return {"void",
+              {kFamily, "double* forces", "const pd::abi::TangentFactors& factors"},
+              {"fam", "forces", "factors"}};
     case Kernel::Jvp:
       return {"void", {kFamily, "const double* dy", "double* df"}, {"fam", "dy", "df"}};
     case Kernel::Form:
-      return {"void", {kFamily, "const pd::abi::TangentFactors& factors", "double* M"}, {"fam", "factors", "M"}};
+      return {
+          "void", {kFamily, "const pd::abi::TangentFactors& factors", "double* M"}, {"fam", "factors", "M"}};
     case Kernel::Energy:
       return {"double", {kFamily}, {"fam"}};
     case Kernel::Outputs:
@@ -32,14 +35,18 @@ Signature signature(Kernel k) {
   return {};
 }
 
-std::string bond_vector(const std::string& field, int dim, int c) { return "fam." + field + "[k * " + str(dim) + " + " + str(c) + "]"; }
+std::string bond_vector(const std::string& field, int dim, int c) {
+  return "fam." + field + "[k * " + str(dim) + " + " + str(c) + "]";
+}
 std::string bond_scalar(const std::string& field) { return "fam." + field + "[k]"; }
-std::string optional_bond_scalar(const std::string& field) { return "(fam." + field + " ? fam." + field + "[k] : 1.0)"; }
+std::string optional_bond_scalar(const std::string& field) {
+  return "(fam." + field + " ? fam." + field + "[k] : 1.0)";
+}
 std::string family_scalar(const std::string& field) { return "fam." + field; }
 std::string param(int i) { return "fam.params[" + str(i) + "]"; }
 std::string pair_param(int i, int n_params, const std::string& mean) {
-  return "(fam.nbr_params != nullptr ? pd::abi::" + mean + "(" + param(i) + ", fam.nbr_params[k * " + str(n_params) + " + " + str(i) +
-         "]) : " + param(i) + ")";
+  return "(fam.nbr_params != nullptr ? pd::abi::" + mean + "(" + param(i) + ", fam.nbr_params[k * " +
+         str(n_params) + " + " + str(i) + "]) : " + param(i) + ")";
 }
 std::string moment_input(int i) { return "fam.moments[" + str(i) + "]"; }
 std::string bond_count() { return "fam.n_bonds"; }
@@ -49,9 +56,13 @@ std::string center_component(const std::string& array, int c) { return array + "
 std::string neighbour_component(const std::string& array, int dim, int c) {
   return array + "[(k + 1) * " + str(dim) + " + " + str(c) + "]";
 }
-std::string bond_increment(int dim, int c) { return neighbour_component("dy", dim, c) + " - " + center_component("dy", c); }
+std::string bond_increment(int dim, int c) {
+  return neighbour_component("dy", dim, c) + " - " + center_component("dy", c);
+}
 std::string forces_requested() { return "forces != nullptr"; }
-std::string factor_direct(int dim, int r, int c) { return "factors.direct[k * " + str(dim * dim) + " + " + str(r * dim + c) + "]"; }
+std::string factor_direct(int dim, int r, int c) {
+  return "factors.direct[k * " + str(dim * dim) + " + " + str(r * dim + c) + "]";
+}
 std::string factor_left(int dim, int n_states, int s, int r) {
   return "factors.left[(k * " + str(n_states) + " + " + str(s) + ") * " + str(dim) + " + " + str(r) + "]";
 }
@@ -69,9 +80,11 @@ std::string output(int i) { return "outputs[" + str(i) + "]"; }
 std::string abi_include() { return "#include \"kernel_abi.hpp\"\n"; }
 std::string law_descriptor_type() { return "pd::abi::LawDescriptor"; }
 
-std::string law_table(const std::vector<std::string>& descriptors, const std::vector<std::string>& influences) {
+std::string law_table(const std::vector<std::string>& descriptors,
+                      const std::vector<std::string>& influences) {
   std::ostringstream table;
-  table << "namespace pd::abi {\n\nstd::span<const LawDescriptor> all_laws() {\n  static const LawDescriptor table[] = {\n";
+  table << "namespace pd::abi {\n\nstd::span<const LawDescriptor> all_laws() {\n  static const LawDescriptor "
+           "table[] = {\n";
   for (auto& d : descriptors) table << "      " << d << ",\n";
   if (descriptors.empty()) table << "      LawDescriptor{},\n";
   table << "  };\n  return std::span<const LawDescriptor>(table, " << descriptors.size() << ");\n}\n\n";
@@ -80,9 +93,11 @@ std::string law_table(const std::vector<std::string>& descriptors, const std::ve
   for (auto& i : influences) table << "      " << i << ",\n";
   if (influences.empty()) table << "      InfluenceDescriptor{},\n";
   table << "  };\n  return std::span<const InfluenceDescriptor>(table, " << influences.size() << ");\n}\n\n";
-  table << "const LawDescriptor* find_law(std::string_view name) {\n  for (const LawDescriptor& d : all_laws())\n"
+  table << "const LawDescriptor* find_law(std::string_view name) {\n  for (const LawDescriptor& d : "
+           "all_laws())\n"
         << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n"
-        << "const InfluenceDescriptor* find_influence(std::string_view name) {\n  for (const InfluenceDescriptor& d : all_influences())\n"
+        << "const InfluenceDescriptor* find_influence(std::string_view name) {\n  for (const "
+           "InfluenceDescriptor& d : all_influences())\n"
         << "    if (name == d.name) return &d;\n  return nullptr;\n}\n\n}  // namespace pd::abi\n";
   return table.str();
 }

@@ -44,7 +44,7 @@ std::string factor_right(int dim, int n_states, int s, int c);
 // factors bound to `factors`.
 std::string factor_at(const std::string& which, const std::string& bond, int per_bond, int index);
 std::string bond_volume(const std::string& bond);  // V of bond `bond`
-std::string center_volume();                         // V0
+std::string center_volume();                       // V0
 std::string moment_output(int i);
 std::string output(int i);
 
@@ -53,6 +53,7 @@ std::string abi_include();
 std::string law_descriptor_type();
 // The definitions of all_laws, all_influences, find_law and find_influence over the
 // given descriptor calls ("pd::generated::silling_3d_descriptor()") and influence entries.
-std::string law_table(const std::vector<std::string>& descriptors, const std::vector<std::string>& influences);
+std::string law_table(const std::vector<std::string>& descriptors,
+                      const std::vector<std::string>& influences);
 
 }  // namespace pdgen::abi_text

@@ -86,7 +86,8 @@ class Printer {
     emit_particle_loads(body, roots);
     // The per-bond cache lives in the caller's scratch (LawDescriptor::scratch_per_bond).
     if (!cached_.empty()) body << "  double* const cache = " << abi_text::scratch() << ";\n";
-    for (std::size_t s = 0; s < prog_.segments.size(); ++s) emit_segment(body, prog_.segments[s], roots[s], s);
+    for (std::size_t s = 0; s < prog_.segments.size(); ++s)
+      emit_segment(body, prog_.segments[s], roots[s], s);
     for (const std::string& line : prog_.epilogue) body << "  " << line << "\n";
 
     EmittedKernel out;
@@ -99,8 +100,9 @@ class Printer {
     out.declaration = sig + ";";
     std::ostringstream code;
     code << "// " << prog_.name << ": per bond " << per_bond_.adds << " add, " << per_bond_.muls << " mul, "
-         << per_bond_.divs << " div, " << per_bond_.calls << " call; per family " << per_family_.adds << " add, "
-         << per_family_.muls << " mul, " << per_family_.divs << " div, " << per_family_.calls << " call\n";
+         << per_bond_.divs << " div, " << per_bond_.calls << " call; per family " << per_family_.adds
+         << " add, " << per_family_.muls << " mul, " << per_family_.divs << " div, " << per_family_.calls
+         << " call\n";
     code << sig << " {\n";
     const std::string text = body.str();
     for (const std::string& name : prog_.param_names)
@@ -113,9 +115,11 @@ class Printer {
  private:
   static bool uses_identifier(const std::string& text, const std::string& name) {
     for (std::size_t p = text.find(name); p != std::string::npos; p = text.find(name, p + 1)) {
-      const bool left = p == 0 || !(std::isalnum(static_cast<unsigned char>(text[p - 1])) || text[p - 1] == '_');
+      const bool left =
+          p == 0 || !(std::isalnum(static_cast<unsigned char>(text[p - 1])) || text[p - 1] == '_');
       const std::size_t e = p + name.size();
-      const bool right = e >= text.size() || !(std::isalnum(static_cast<unsigned char>(text[e])) || text[e] == '_');
+      const bool right =
+          e >= text.size() || !(std::isalnum(static_cast<unsigned char>(text[e])) || text[e] == '_');
       if (left && right) return true;
     }
     return false;
@@ -198,7 +202,8 @@ class Printer {
         return s + ")";
       }
       case Kind::Select:
-        return "(" + child(n.args[0], 1) + " > 0.0 ? " + child(n.args[1], 1) + " : " + child(n.args[2], 1) + ")";
+        return "(" + child(n.args[0], 1) + " > 0.0 ? " + child(n.args[1], 1) + " : " + child(n.args[2], 1) +
+               ")";
     }
     return "?";
   }
@@ -222,14 +227,15 @@ class Printer {
       names_[id] = name;
       if (in_loop)
         if (auto c = cached_.find(id); c != cached_.end()) {
-          out << indent << "cache[static_cast<std::size_t>(k) * " << cached_.size() << " + " << c->second << "] = " << name
-              << ";\n";
+          out << indent << "cache[static_cast<std::size_t>(k) * " << cached_.size() << " + " << c->second
+              << "] = " << name << ";\n";
           cache_ready_.insert(id);
         }
     }
   }
 
-  void emit_stores(std::ostringstream& out, const Segment& seg, const std::vector<int>& roots, const std::string& indent) {
+  void emit_stores(std::ostringstream& out, const Segment& seg, const std::vector<int>& roots,
+                   const std::string& indent) {
     for (std::size_t i = 0; i < seg.stores.size(); ++i) {
       const Store& st = seg.stores[i];
       std::string value = expr_text(roots[i], names_);
@@ -239,7 +245,10 @@ class Printer {
           line = st.target + " = " + value + ";";
           break;
         case StoreMode::SetNegated:
-          line = st.target + " = -" + (names_.count(roots[i]) || precedence(g_.node(roots[i]).kind) >= 3 ? value : "(" + value + ")") + ";";
+          line = st.target + " = -" +
+                 (names_.count(roots[i]) || precedence(g_.node(roots[i]).kind) >= 3 ? value
+                                                                                    : "(" + value + ")") +
+                 ";";
           break;
         case StoreMode::Accumulate:
           line = st.target + " += " + value + ";";
@@ -277,8 +286,8 @@ class Printer {
     for (auto [id, slot] : cached_)
       if (cache_ready_.count(id) && in_loop.count(id)) {
         const std::string name = "b" + std::to_string(temp_counter_++);
-        loop << "    const double " << name << " = cache[static_cast<std::size_t>(k) * " << cached_.size() << " + " << slot
-             << "];\n";
+        loop << "    const double " << name << " = cache[static_cast<std::size_t>(k) * " << cached_.size()
+             << " + " << slot << "];\n";
         names_[id] = name;
       }
     std::set<std::string> loaded;
@@ -287,7 +296,8 @@ class Printer {
       const lir::Node& n = g_.node(id);
       if (n.kind != Kind::Var || !n.per_bond || names_.count(id)) continue;
       const Binding& b = prog_.bindings.at(g_.var_symbols().at(id));
-      if (!b.load.empty() && loaded.insert(b.var).second) loop << "    const double " << b.var << " = " << b.load << ";\n";
+      if (!b.load.empty() && loaded.insert(b.var).second)
+        loop << "    const double " << b.var << " = " << b.load << ";\n";
     }
     // Sums over the bonds are split by the generator into kLanes partial sums (bond k adds
     // to lane k mod kLanes), combined in a fixed order after the loop: a horizon sum's
@@ -308,7 +318,8 @@ class Printer {
         const std::string lane = "lane" + std::to_string(acc_counter_++);
         lanes.push_back({lane, (st.guard.empty() ? "" : "if (" + st.guard + ") ") + st.target});
       }
-      const auto at = std::find(reductions.begin(), reductions.end(), st.target + "|" + st.guard) - reductions.begin();
+      const auto at =
+          std::find(reductions.begin(), reductions.end(), st.target + "|" + st.guard) - reductions.begin();
       st.target = lanes[static_cast<std::size_t>(at)].first + "[lane]";
       st.guard.clear();  // a local partial sum: the guard applies where it reaches memory
     }
@@ -321,11 +332,14 @@ class Printer {
       for (auto& [lane, target] : lanes) out << "  double " << lane << "[" << K << "] = {};\n";
       // One copy of the body (a kernel computes each call once, also in its text): the
       // last group has fewer than kLanes bonds.
-      out << "  for (int k_group = 0; k_group < L; k_group += " << K << ") {\n    const int n_lanes = L - k_group < " << K
-          << " ? L - k_group : " << K << ";\n#pragma omp simd\n    for (int lane = 0; lane < n_lanes; ++lane) {\n"
-          << "      const int k = k_group + lane;\n" << loop.str() << "    }\n  }\n";
+      out << "  for (int k_group = 0; k_group < L; k_group += " << K
+          << ") {\n    const int n_lanes = L - k_group < " << K << " ? L - k_group : " << K
+          << ";\n#pragma omp simd\n    for (int lane = 0; lane < n_lanes; ++lane) {\n"
+          << "      const int k = k_group + lane;\n"
+          << loop.str() << "    }\n  }\n";
       for (auto& [lane, target] : lanes)
-        out << "  " << target << " += (" << lane << "[0] + " << lane << "[1]) + (" << lane << "[2] + " << lane << "[3]);\n";
+        out << "  " << target << " += (" << lane << "[0] + " << lane << "[1]) + (" << lane << "[2] + " << lane
+            << "[3]);\n";
     }
     // Per-bond temporaries die with the loop; per-family ones stay visible.
     std::map<int, std::string> kept;

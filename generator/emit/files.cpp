@@ -1,13 +1,12 @@
 // Assembles the emitted kernels into files: <stem>.hpp/.cpp per law file, law_table.cpp.
 #include "pdgen/files.hpp"
 
-#include "emit/abi_text.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "emit/abi_text.hpp"
 
 namespace pdgen {
 
@@ -38,13 +37,15 @@ std::string descriptor_head(const Law& law) {
   for (auto& p : names) desc << quoted(p) << ", ";
   desc << "nullptr};\n";
   desc << "  static const double test_values[] = {";
-  for (double v : law.param_test_values()) desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
+  for (double v : law.param_test_values())
+    desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
   desc << "0.0};\n";
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
   desc << "nullptr};\n";
-  desc << "  " << abi_text::law_descriptor_type() << " d;\n  d.name = " << quoted(n) << ";\n  d.summary = " << quoted(law.summary())
-       << ";\n  d.dim = " << law.dim() << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
+  desc << "  " << abi_text::law_descriptor_type() << " d;\n  d.name = " << quoted(n)
+       << ";\n  d.summary = " << quoted(law.summary()) << ";\n  d.dim = " << law.dim()
+       << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
   desc << "  d.param_test_values = test_values;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
@@ -52,12 +53,14 @@ std::string descriptor_head(const Law& law) {
   if (!law.reads_influence()) desc << "  d.ignores_influence = true;\n";
   if (!law.pair_params().empty()) desc << "  d.uses_pair_params = true;\n";
   if (law.has_fixed_poisson_ratio())
-    desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio()) << ";\n";
+    desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio())
+         << ";\n";
   return desc.str();
 }
 }  // namespace
 
-void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const std::vector<EmittedVariant>& variants) {
+void GeneratedFiles::add_law(const std::string& file_stem, const Law& law,
+                             const std::vector<EmittedVariant>& variants) {
   Stem& out = stems_[file_stem];
   std::ostringstream decl, code, desc;
   desc << descriptor_head(law);
@@ -66,7 +69,8 @@ void GeneratedFiles::add_law(const std::string& file_stem, const Law& law, const
     for (const NamedKernel& k : v.kernels) scratch = std::max(scratch, k.emitted.scratch_per_bond);
   desc << "  d.scratch_per_bond = " << scratch << ";\n";
   for (const EmittedVariant& v : variants) {
-    if (v.name == "damaged") desc << "  d.n_moments = " << v.n_moments << ";\n  d.n_states = " << v.n_states << ";\n";
+    if (v.name == "damaged")
+      desc << "  d.n_moments = " << v.n_moments << ";\n  d.n_states = " << v.n_states << ";\n";
     for (const NamedKernel& k : v.kernels) {
       decl << k.emitted.declaration << "\n";
       code << "\n" << k.emitted.code;
@@ -87,24 +91,30 @@ void GeneratedFiles::add_influence(const InfluenceDef& inf, const NamedKernel& w
   Stem& out = stems_[inf.file_stem];
   out.decl += weight.emitted.declaration + "\n";
   out.code += "\n// " + inf.name + ": " + inf.formula + "\n" + weight.emitted.code;
-  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" + weight.function + "}");
+  out.influence_entries.push_back("{" + quoted(inf.name) + ", " + quoted(inf.formula) + ", &" +
+                                  weight.function + "}");
 }
 
 std::map<std::string, std::string> GeneratedFiles::files() const {
   std::map<std::string, std::string> files;
   std::ostringstream table;
-  table << kHeader << "*.cpp" << kDoNotEdit << "// The tables of every generated law and influence function.\n"
-        << "#include <string_view>\n\n" << abi_text::abi_include();
+  table << kHeader << "*.cpp" << kDoNotEdit
+        << "// The tables of every generated law and influence function.\n"
+        << "#include <string_view>\n\n"
+        << abi_text::abi_include();
   std::vector<std::string> descriptors, influences;
   for (const auto& [stem, out] : stems_) {
     table << "#include \"" << stem << ".hpp\"\n";
     for (auto& d : out.descriptor_functions) descriptors.push_back("pd::generated::" + d);
     for (auto& i : out.influence_entries) influences.push_back(i);
     std::ostringstream h, c;
-    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n" << abi_text::abi_include() << "\nnamespace pd::generated {\n\n"
+    h << kHeader << stem << ".cpp" << kDoNotEdit << "#pragma once\n\n"
+      << abi_text::abi_include() << "\nnamespace pd::generated {\n\n"
       << out.decl << "\n}  // namespace pd::generated\n";
-    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n"
-      << "namespace pd::generated {\n" << out.code << "\n}  // namespace pd::generated\n";
+    c << kHeader << stem << ".cpp" << kDoNotEdit << "#include \"" << stem
+      << ".hpp\"\n\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n"
+      << "namespace pd::generated {\n"
+      << out.code << "\n}  // namespace pd::generated\n";
     files[stem + ".hpp"] = h.str();
     files[stem + ".cpp"] = c.str();
   }

@@ -55,11 +55,14 @@ class FormWriter {
       }
     if (any_sum) {
       // In bond order, no simd reduction: O(L) work, and the same sums as the generic forming.
-      o << "  for (int k = 0; k < L; ++k) {\n    const double c = V0 * " << abi_text::bond_volume("k") << ";\n";
+      o << "  for (int k = 0; k < L; ++k) {\n    const double c = V0 * " << abi_text::bond_volume("k")
+        << ";\n";
       for (int s = 0; s < S_; ++s)
         for (int a = 0; a < D_; ++a) {
-          if (right(s, a)) o << "    " << rs(s, a) << " += " << fac("right", "k", S_ * D_, s * D_ + a) << ";\n";
-          if (left(s, a)) o << "    " << ls(s, a) << " += c * " << fac("left", "k", S_ * D_, s * D_ + a) << ";\n";
+          if (right(s, a))
+            o << "    " << rs(s, a) << " += " << fac("right", "k", S_ * D_, s * D_ + a) << ";\n";
+          if (left(s, a))
+            o << "    " << ls(s, a) << " += c * " << fac("left", "k", S_ * D_, s * D_ + a) << ";\n";
         }
       o << "  }\n";
     }
@@ -69,26 +72,31 @@ class FormWriter {
     o << "  for (int i = 0; i < L; ++i) {\n    const double c = V0 * " << abi_text::bond_volume("i") << ";\n";
     neighbour_terms = 0;
     for (int r = 0; r < D_; ++r) {
-      o << "    {\n      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * " << D_ << " + " << r << ") * n;\n";
+      o << "    {\n      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * " << D_ << " + "
+        << r << ") * n;\n";
       std::vector<std::vector<std::string>> entry(static_cast<std::size_t>(D_));
       for (int s = 0; s < S_; ++s) {
         if (!left(s, r)) continue;
         bool used = false;
         for (int q = 0; q < D_; ++q)
           if (right(s, q)) {
-            entry[static_cast<std::size_t>(q)].push_back("a_" + str(s) + " * " + fac("right", "k", S_ * D_, s * D_ + q));
+            entry[static_cast<std::size_t>(q)].push_back("a_" + str(s) + " * " +
+                                                         fac("right", "k", S_ * D_, s * D_ + q));
             used = true;
           }
-        if (used) o << "      const double a_" << s << " = -c * " << fac("left", "i", S_ * D_, s * D_ + r) << ";\n";
+        if (used)
+          o << "      const double a_" << s << " = -c * " << fac("left", "i", S_ * D_, s * D_ + r) << ";\n";
       }
       o << "#pragma omp simd\n      for (int k = 0; k < L; ++k) {\n";
       for (int q = 0; q < D_; ++q) {
-        o << "        row[" << D_ << " + k * " << D_ << " + " << q << "] = " << sum_of(entry[static_cast<std::size_t>(q)]) << ";\n";
+        o << "        row[" << D_ << " + k * " << D_ << " + " << q
+          << "] = " << sum_of(entry[static_cast<std::size_t>(q)]) << ";\n";
         neighbour_terms += static_cast<int>(entry[static_cast<std::size_t>(q)].size());
       }
       o << "      }\n";
       for (int q = 0; q < D_; ++q) {
-        // Diagonal block: the direct term; center column: c_i (direct_i + sum_s left_i[s] (x) sum_k right_k[s]).
+        // Diagonal block: the direct term; center column: c_i (direct_i + sum_s left_i[s] (x) sum_k
+        // right_k[s]).
         std::vector<std::string> v;
         if (direct(r, q)) {
           const std::string dv = fac("direct", "i", D_ * D_, r * D_ + q);
@@ -96,9 +104,10 @@ class FormWriter {
           v.push_back(dv);
         }
         for (int s = 0; s < S_; ++s)
-          if (left(s, r) && right(s, q)) v.push_back(fac("left", "i", S_ * D_, s * D_ + r) + " * " + rs(s, q));
-        o << "      {\n        const double v = c * (" << sum_of(v) << ");\n        row[" << q << "] = v;\n        "
-          << center(r, q) << " -= v;\n      }\n";
+          if (left(s, r) && right(s, q))
+            v.push_back(fac("left", "i", S_ * D_, s * D_ + r) + " * " + rs(s, q));
+        o << "      {\n        const double v = c * (" << sum_of(v) << ");\n        row[" << q
+          << "] = v;\n        " << center(r, q) << " -= v;\n      }\n";
       }
       o << "    }\n";
     }
@@ -115,7 +124,8 @@ class FormWriter {
         std::vector<std::string> v;
         if (direct(r, q)) v.push_back("c * " + fac("direct", "k", D_ * D_, r * D_ + q));
         for (int s = 0; s < S_; ++s)
-          if (left(s, r) && right(s, q)) v.push_back(ls(s, r) + " * " + fac("right", "k", S_ * D_, s * D_ + q));
+          if (left(s, r) && right(s, q))
+            v.push_back(ls(s, r) + " * " + fac("right", "k", S_ * D_, s * D_ + q));
         o << "      row[(k + 1) * " << D_ << " + " << q << "] = " << sum_of(v) << ";\n";
       }
       o << "    }\n  }\n";
@@ -144,7 +154,8 @@ EmittedKernel emit_form_kernel(const std::string& name, const FactorStructure& s
   k.declaration = proto + ";";
   k.per_bond = {terms, terms, 0, 0};
   const int dense_terms = structure.dim * structure.dim * structure.n_states;
-  k.code = "// " + name + ": the dense local matrix from the factors; per neighbour-block entry pair (i, k) " + str(terms) +
+  k.code = "// " + name +
+           ": the dense local matrix from the factors; per neighbour-block entry pair (i, k) " + str(terms) +
            " multiply-adds per d x d block (" + str(dense_terms) + " without the structure); " + str(zeros) +
            " structurally zero factor entries skipped\n" + proto + " {\n" + body + "}\n";
   return k;

@@ -16,10 +16,10 @@ enum class Kind { Const, Var, Add, Sub, Mul, Div, Neg, Call, Select };
 
 struct Node {
   Kind kind = Kind::Const;
-  double value = 0.0;      // Const
-  std::string text;        // Var: variable name; Call: function name
+  double value = 0.0;  // Const
+  std::string text;    // Var: variable name; Call: function name
   std::vector<int> args;
-  bool per_bond = false;   // depends on a per-bond input
+  bool per_bond = false;  // depends on a per-bond input
 };
 
 class Graph {

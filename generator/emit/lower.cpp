@@ -70,7 +70,9 @@ int Graph::product(double coefficient, const std::vector<NodeId>& factors) {
         const int whole = static_cast<int>(std::floor(e));
         std::vector<int> parts;
         if (whole > 0) parts.push_back(integer_power(make(Kind::Div, 0.0, "", {constant(1.0), base}), whole));
-        if (e != whole) parts.push_back(make(Kind::Div, 0.0, "", {constant(1.0), make(Kind::Call, 0.0, "std::sqrt", {base})}));
+        if (e != whole)
+          parts.push_back(
+              make(Kind::Div, 0.0, "", {constant(1.0), make(Kind::Call, 0.0, "std::sqrt", {base})}));
         num.push_back({chain(Kind::Mul, parts), n.args[0]});
       } else {
         (n.value > 0 ? num : den).push_back({positive_power(base, e), n.args[0]});
@@ -105,7 +107,8 @@ int Graph::product(double coefficient, const std::vector<NodeId>& factors) {
     // (a b / d) c: the quotient is shared by the components that differ only in c.
     const int last = n_items.back();
     n_items.pop_back();
-    r = make(Kind::Mul, 0.0, "", {make(Kind::Div, 0.0, "", {chain(Kind::Mul, n_items), chain(Kind::Mul, d_items)}), last});
+    r = make(Kind::Mul, 0.0, "",
+             {make(Kind::Div, 0.0, "", {chain(Kind::Mul, n_items), chain(Kind::Mul, d_items)}), last});
   }
   return coefficient < 0 ? make(Kind::Neg, 0.0, "", {r}) : r;
 }
@@ -140,8 +143,10 @@ int Graph::lower(Expr e) {
       if (it == bindings_.end()) {
         const SymbolInfo& info = Context::global().symbol(n.symbol);
         if (info.kind == SymbolKind::Free)
-          throw std::invalid_argument("symbol '" + info.name + "' is not an input of the law (a parameter is declared with law.param(\"" +
-                                      info.name + "\"), a horizon sum with law.sum)");
+          throw std::invalid_argument(
+              "symbol '" + info.name +
+              "' is not an input of the law (a parameter is declared with law.param(\"" + info.name +
+              "\"), a horizon sum with law.sum)");
         throw std::logic_error("emit: symbol '" + info.name + "' has no binding in this kernel");
       }
       r = make(Kind::Var, 0.0, it->second.var, {});
@@ -172,14 +177,16 @@ int Graph::lower(Expr e) {
       break;
     case Op::Sign: {
       const int x = lower(Expr::from_id(n.args[0]));
-      const int negative = make(Kind::Select, 0.0, "", {make(Kind::Neg, 0.0, "", {x}),
-                                                         make(Kind::Neg, 0.0, "", {constant(1.0)}), constant(0.0)});
+      const int negative =
+          make(Kind::Select, 0.0, "",
+               {make(Kind::Neg, 0.0, "", {x}), make(Kind::Neg, 0.0, "", {constant(1.0)}), constant(0.0)});
       r = make(Kind::Select, 0.0, "", {x, constant(1.0), negative});
       break;
     }
     case Op::Select:
       r = make(Kind::Select, 0.0, "",
-               {lower(Expr::from_id(n.args[0])), lower(Expr::from_id(n.args[1])), lower(Expr::from_id(n.args[2]))});
+               {lower(Expr::from_id(n.args[0])), lower(Expr::from_id(n.args[1])),
+                lower(Expr::from_id(n.args[2]))});
       break;
   }
   memo_[e.id()] = r;

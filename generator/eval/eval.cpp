@@ -7,7 +7,8 @@
 namespace pdgen {
 
 namespace {
-double eval_id(NodeId id, const std::unordered_map<int, double>& values, std::unordered_map<NodeId, double>& memo) {
+double eval_id(NodeId id, const std::unordered_map<int, double>& values,
+               std::unordered_map<NodeId, double>& memo) {
   if (auto it = memo.find(id); it != memo.end()) return it->second;
   const Node& n = Context::global().node(id);
   auto a = [&](std::size_t i) { return eval_id(n.args[i], values, memo); };
@@ -19,7 +20,8 @@ double eval_id(NodeId id, const std::unordered_map<int, double>& values, std::un
     case Op::Symbol: {
       auto it = values.find(n.symbol);
       if (it == values.end())
-        throw std::invalid_argument("evaluate: no value for symbol " + Context::global().symbol(n.symbol).name);
+        throw std::invalid_argument("evaluate: no value for symbol " +
+                                    Context::global().symbol(n.symbol).name);
       v = it->second;
       break;
     }

@@ -13,7 +13,9 @@ Context& Context::global() {
 }
 
 namespace {
-std::size_t mix(std::size_t h, std::size_t v) { return h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2)); }
+std::size_t mix(std::size_t h, std::size_t v) {
+  return h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+}
 
 std::size_t hash_fields(Op op, double value, int symbol, const std::vector<NodeId>& args) {
   std::size_t h = static_cast<std::size_t>(op);

@@ -102,7 +102,8 @@ Expr trace(const Mat& a) {
 Expr det(const Mat& a) {
   if (a.dim() == 2) return a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
   if (a.dim() == 3)
-    return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
+    return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) -
+           a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
            a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
   throw std::logic_error("det: dimension must be 2 or 3");
 }

@@ -40,11 +40,14 @@ class Builder {
     out.tangent = prune(tangent_kernel(out.factor_structure));
     out.jvp = prune(jvp_kernel());
     out.has_energy = law_.has_energy();
-    if (out.has_energy) out.energy = prune(particle_value_kernel("energy", abi_text::Kernel::Energy, {{"W", law_.energy_density()}}));
+    if (out.has_energy)
+      out.energy =
+          prune(particle_value_kernel("energy", abi_text::Kernel::Energy, {{"W", law_.energy_density()}}));
     out.has_outputs = !law_.outputs().empty();
     if (out.has_outputs) {
       std::vector<std::pair<std::string, Expr>> values;
-      for (std::size_t i = 0; i < law_.outputs().size(); ++i) values.push_back({abi_text::output(static_cast<int>(i)), law_.outputs()[i].value});
+      for (std::size_t i = 0; i < law_.outputs().size(); ++i)
+        values.push_back({abi_text::output(static_cast<int>(i)), law_.outputs()[i].value});
       out.outputs = prune(particle_value_kernel("outputs", abi_text::Kernel::Outputs, values));
     }
     return out;
@@ -81,19 +84,23 @@ class Builder {
     b[symbol_index(law_.w())] = {"w", abi_text::bond_scalar("w"), true};
     b[symbol_index(law_.alpha())] = {"alpha", abi_text::bond_scalar("alpha"), true};
     b[symbol_index(law_.V())] = {"V", abi_text::bond_scalar("V"), true};
-    b[symbol_index(law_.dilatation_factor())] = {"sd", abi_text::optional_bond_scalar("dilatation_factor"), true};
+    b[symbol_index(law_.dilatation_factor())] = {"sd", abi_text::optional_bond_scalar("dilatation_factor"),
+                                                 true};
     b[symbol_index(law_.force_factor())] = {"sf", abi_text::optional_bond_scalar("force_factor"), true};
     b[symbol_index(law_.V0())] = {"V0", abi_text::family_scalar("V0"), false};
     b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
-      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)), false};
+      b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)),
+                                           false};
     for (const PairParamDef& q : law_.pair_params())
-      b[symbol_index(q.symbol)] = {"Q_" + law_.param_names()[static_cast<std::size_t>(q.param)],
-                                   abi_text::pair_param(q.param, static_cast<int>(law_.params().size()),
-                                                        q.mean == PairMean::harmonic ? "harmonic_mean" : "arithmetic_mean"),
-                                   true};
+      b[symbol_index(q.symbol)] = {
+          "Q_" + law_.param_names()[static_cast<std::size_t>(q.param)],
+          abi_text::pair_param(q.param, static_cast<int>(law_.params().size()),
+                               q.mean == PairMean::harmonic ? "harmonic_mean" : "arithmetic_mean"),
+          true};
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      b[symbol_index(moments_[i]->symbol)] = {var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
+      b[symbol_index(moments_[i]->symbol)] = {
+          var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
     for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};
     return b;
   }
@@ -138,7 +145,8 @@ class Builder {
   }
 
   // Nodal forces: f_0 += V0 V t, f_{k+1} = -V0 V t (the convention of kernel_abi.hpp).
-  void force_stores(Segment& seg, const std::vector<Expr>& t, const std::string& array, const std::string& guard) const {
+  void force_stores(Segment& seg, const std::vector<Expr>& t, const std::string& array,
+                    const std::string& guard) const {
     std::string zero;
     for (int c = 0; c < D_; ++c) zero += abi_text::center_component(array, c) + " = 0.0; ";
     seg.before.push_back(guard.empty() ? zero : "if (" + guard + ") { " + zero + "}");
@@ -154,7 +162,8 @@ class Builder {
     sum_loops(p, moments_);
     Segment out;
     for (std::size_t i = 0; i < moments_.size(); ++i)
-      out.stores.push_back({abi_text::moment_output(static_cast<int>(i)), moments_[i]->symbol, StoreMode::Set, ""});
+      out.stores.push_back(
+          {abi_text::moment_output(static_cast<int>(i)), moments_[i]->symbol, StoreMode::Set, ""});
     if (!out.stores.empty()) p.segments.push_back(out);
     return p;
   }
@@ -191,8 +200,9 @@ class Builder {
       for (auto& [key, sym] : coupling)
         if (key.first == s) {
           seg.accumulators.push_back(symbol_index(sym));
-          seg.stores.push_back({p.bindings.at(symbol_index(sym)).var, diff(sd.body, force_states_[key.second]->symbol),
-                                StoreMode::Accumulate, "", symbol_index(sym)});
+          seg.stores.push_back({p.bindings.at(symbol_index(sym)).var,
+                                diff(sd.body, force_states_[key.second]->symbol), StoreMode::Accumulate, "",
+                                symbol_index(sym)});
         }
     });
     Segment seg;
@@ -205,7 +215,8 @@ class Builder {
         structure.direct.push_back(!v.is_const(0.0));
         seg.stores.push_back({abi_text::factor_direct(D_, r, c), v, StoreMode::Set, ""});
       }
-    std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS), std::vector<Expr>(static_cast<std::size_t>(D_)));
+    std::vector<std::vector<Expr>> R(static_cast<std::size_t>(NS),
+                                     std::vector<Expr>(static_cast<std::size_t>(D_)));
     for (int s = 0; s < NS; ++s) {
       for (int c = 0; c < D_; ++c) {
         Expr v = diff(force_states_[s]->body, law_.Y()[c]);
@@ -241,7 +252,8 @@ class Builder {
     auto directional = [&](Expr e) {
       std::vector<Expr> terms;
       for (int c = 0; c < D_; ++c) terms.push_back(diff(e, law_.Y()[c]) * dY[c]);
-      for (std::size_t s = 0; s < force_states_.size(); ++s) terms.push_back(diff(e, force_states_[s]->symbol) * dS[s]);
+      for (std::size_t s = 0; s < force_states_.size(); ++s)
+        terms.push_back(diff(e, force_states_[s]->symbol) * dS[s]);
       return add(terms);
     };
     sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
@@ -266,7 +278,8 @@ class Builder {
     for (auto& v : values) roots.push_back(v.second);
     sum_loops(p, needed(roots, true));
     Segment seg;
-    for (auto& [target, value] : values) seg.stores.push_back({returns ? "const double " + target : target, value, StoreMode::Set, ""});
+    for (auto& [target, value] : values)
+      seg.stores.push_back({returns ? "const double " + target : target, value, StoreMode::Set, ""});
     p.segments.push_back(seg);
     if (returns) p.epilogue.push_back("return " + values.front().first + ";");
     return p;

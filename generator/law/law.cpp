@@ -14,7 +14,8 @@ namespace pdgen {
 namespace {
 void check_identifier(const std::string& s) {
   const bool ok = !s.empty() && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') &&
-                  std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+                  std::all_of(s.begin(), s.end(),
+                              [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
   if (!ok) throw std::invalid_argument("law: '" + s + "' is not a C identifier");
 }
 Vec bond_vector(const std::string& name, int dim) {
@@ -66,10 +67,13 @@ Expr Law::param(const std::string& name, double test_value) {
 
 Expr Law::pair_param(const std::string& name, PairMean mean) {
   param(name);
-  const auto index = static_cast<int>(std::find(param_names_.begin(), param_names_.end(), name) - param_names_.begin());
+  const auto index =
+      static_cast<int>(std::find(param_names_.begin(), param_names_.end(), name) - param_names_.begin());
   for (const PairParamDef& d : pair_params_) {
     if (d.param != index) continue;
-    if (d.mean != mean) throw std::invalid_argument("law " + name_ + ": pair parameter '" + name + "' declared with two different means");
+    if (d.mean != mean)
+      throw std::invalid_argument("law " + name_ + ": pair parameter '" + name +
+                                  "' declared with two different means");
     return d.symbol;
   }
   pair_params_.push_back({symbol("pair_" + name, SymbolKind::BondInput), index, mean});
@@ -77,7 +81,8 @@ Expr Law::pair_param(const std::string& name, PairMean mean) {
 }
 
 void Law::fixed_poisson_ratio(double nu) {
-  if (!(nu > -1.0 && nu < 0.5)) throw std::invalid_argument("law " + name_ + ": a Poisson ratio lies in (-1, 0.5)");
+  if (!(nu > -1.0 && nu < 0.5))
+    throw std::invalid_argument("law " + name_ + ": a Poisson ratio lies in (-1, 0.5)");
   has_fixed_poisson_ratio_ = true;
   poisson_ratio_ = nu;
 }
@@ -114,7 +119,8 @@ bool Law::reads_influence() const {
 }
 
 Expr Law::dilatation_sum(const std::string& name, Expr body) {
-  if (has_dilatation_sum_) throw std::invalid_argument("law " + name_ + ": a second dilatation_sum '" + name + "'");
+  if (has_dilatation_sum_)
+    throw std::invalid_argument("law " + name_ + ": a second dilatation_sum '" + name + "'");
   has_dilatation_sum_ = true;
   const Expr theta = sum(name, dilatation_factor_ * body);
   output("dilatation", theta);  // the surface correction reads it (runtime: output "dilatation")
@@ -130,7 +136,8 @@ Vec Law::sum(const std::string& name, const Vec& body) {
 Mat Law::sum(const std::string& name, const Mat& body) {
   Mat r(body.dim());
   for (int i = 0; i < body.dim(); ++i)
-    for (int j = 0; j < body.dim(); ++j) r(i, j) = sum(name + "_" + std::to_string(i) + "_" + std::to_string(j), body(i, j));
+    for (int j = 0; j < body.dim(); ++j)
+      r(i, j) = sum(name + "_" + std::to_string(i) + "_" + std::to_string(j), body(i, j));
   return r;
 }
 

@@ -41,8 +41,9 @@ bool all_finite(const double* v, std::size_t n) {
 }
 }  // namespace
 
-FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds, const abi::LawDescriptor& law,
-                                 std::vector<std::vector<double>> params, AssemblerOptions options)
+FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
+                                 const abi::LawDescriptor& law, std::vector<std::vector<double>> params,
+                                 AssemblerOptions options)
     : law_(law),
       variant_(options.intact ? law.intact : law.damaged),
       options_(options),
@@ -50,18 +51,21 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   if (law.dim != particles.dim || bonds.dim != particles.dim)
     throw std::invalid_argument(std::string("assembler: law ") + law.name + " is " + std::to_string(law.dim) +
                                 "D, the body is " + std::to_string(particles.dim) + "D");
-  if (bonds.particle_count() != particles.size()) throw std::invalid_argument("assembler: bonds and particles differ in count");
+  if (bonds.particle_count() != particles.size())
+    throw std::invalid_argument("assembler: bonds and particles differ in count");
   int max_material = -1;
   for (int m : particles.material) max_material = std::max(max_material, m);
   if (max_material >= static_cast<int>(params.size()))
     throw std::invalid_argument("assembler: material " + std::to_string(max_material) + " has no parameters");
   for (const auto& p : params)
     if (static_cast<int>(p.size()) != law.n_params)
-      throw std::invalid_argument(std::string("assembler: law ") + law.name + " takes " + std::to_string(law.n_params) +
-                                  " parameters, got " + std::to_string(p.size()));
+      throw std::invalid_argument(std::string("assembler: law ") + law.name + " takes " +
+                                  std::to_string(law.n_params) + " parameters, got " +
+                                  std::to_string(p.size()));
   if (law.uses_pair_params)
     for (int m : particles.material)
-      pair_jump_ = pair_jump_ || params[static_cast<std::size_t>(m)] != params[static_cast<std::size_t>(particles.material[0])];
+      pair_jump_ = pair_jump_ || params[static_cast<std::size_t>(m)] !=
+                                     params[static_cast<std::size_t>(particles.material[0])];
   inputs_.particles = &particles;
   inputs_.bonds = &bonds;
   inputs_.params = std::move(params);
@@ -71,11 +75,12 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   update_moments();
   const Coupling coupling = options.coupling.value_or(coupling_of_law(law.n_states));
   if (coupling == Coupling::pairwise && law.n_states > 0)
-    throw std::invalid_argument(std::string("assembler: law ") + law.name + " has states; its tangent couples every two " +
+    throw std::invalid_argument(std::string("assembler: law ") + law.name +
+                                " has states; its tangent couples every two " +
                                 "particles of a family, not only the pairs of the pairwise pattern");
   if (options.gauss_points) {
-    gauss_ = std::make_unique<GaussPointAssembler>(particles, *options.gauss_points, law, variant_, inputs_.params,
-                                                   options.matrix, options.threads);
+    gauss_ = std::make_unique<GaussPointAssembler>(particles, *options.gauss_points, law, variant_,
+                                                   inputs_.params, options.matrix, options.threads);
     return;
   }
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim, coupling);
@@ -88,7 +93,8 @@ void FamilyAssembler::update_moments() {
 
 const SparsityPattern& FamilyAssembler::pattern() const {
   if (gauss_) return gauss_->pattern();
-  if (!pattern_) throw std::logic_error("assembler: built without a matrix pattern (AssemblerOptions::matrix = false)");
+  if (!pattern_)
+    throw std::logic_error("assembler: built without a matrix pattern (AssemblerOptions::matrix = false)");
   return *pattern_;
 }
 
@@ -126,8 +132,8 @@ void FamilyAssembler::for_each_family(const char* stage, Body&& body) const {
     }
   }
   if (bad >= 0)
-    throw std::runtime_error(std::string(stage) + ": non-finite value (NaN or Inf) from the " + bad_stage + " of law " +
-                             law_.name + " at particle " + std::to_string(bad));
+    throw std::runtime_error(std::string(stage) + ": non-finite value (NaN or Inf) from the " + bad_stage +
+                             " of law " + law_.name + " at particle " + std::to_string(bad));
 }
 
 void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K) const {
@@ -180,7 +186,8 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
     } else {
       variant_.residual(fam, f_loc);
     }
-    if (f_loc && options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, 1, f_loc);
+    if (f_loc && options_.collocation)
+      scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, 1, f_loc);
     if (f_loc) {
       if (!all_finite(f_loc, static_cast<std::size_t>(m))) return "residual";
       for (int a = 0; a <= L; ++a) {
@@ -233,7 +240,8 @@ void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
     for (int i = 0; i < L; ++i) {
       const double c = fam.V0 * fam.V[i];
       // Collocation scales neighbour i's rows (collocation.hpp); the center's stay.
-      const double own_scale = options_.collocation ? options_.collocation->row_scale[inputs_.bonds->offsets[p] + i] : 1.0;
+      const double own_scale =
+          options_.collocation ? options_.collocation->row_scale[inputs_.bonds->offsets[p] + i] : 1.0;
       double* out = diag + static_cast<std::ptrdiff_t>(s.gather.particle(p, i + 1)) * d;
       for (int r = 0; r < d; ++r) {
         double own = fac.direct[i * dd + r * d + r], row_sum = own;
@@ -264,7 +272,7 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
   const int n = inputs_.size(), no = law_.n_outputs;
   std::vector<double> out(static_cast<std::size_t>(n) * no, 0.0);
   if (no == 0 || variant_.outputs == nullptr) return out;
-  // Each particle writes only its own slice: no colouring needed.
+    // Each particle writes only its own slice: no colouring needed.
 #pragma omp parallel num_threads(thread_count())
   {
     FamilyGather g(inputs_);
@@ -282,8 +290,10 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
 namespace pd {
 
 double FamilyAssembler::strain_energy(const double* u) const {
-  if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
-  if (!symmetric()) throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
+  if (variant_.energy == nullptr)
+    throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  if (!symmetric())
+    throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
   if (gauss_) return gauss_->strain_energy(u);
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);

@@ -61,7 +61,9 @@ class FamilyAssembler {
   // with -df/du in pattern(). u null means zero displacement.
   void assemble(const double* u, double* forces, SparseMatrix* K) const;
   void internal_forces(const double* u, double* forces) const { assemble(u, forces, nullptr); }
-  void stiffness(const double* u, SparseMatrix& K, double* forces = nullptr) const { assemble(u, forces, &K); }
+  void stiffness(const double* u, SparseMatrix& K, double* forces = nullptr) const {
+    assemble(u, forces, &K);
+  }
   // Kv = K(u) v from the kernel's tangent-vector product: no matrix, cost linear in the bonds.
   void stiffness_product(const double* u, const double* v, double* Kv) const;
   // diag = diagonal of K(u), from the tangent factors in O(bonds): the Jacobi

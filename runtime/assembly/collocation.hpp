@@ -53,13 +53,15 @@ void scale_neighbour_rows(const Collocation& c, const Bonds& bonds, int p, int r
 // `body` (a 2D box, nullptr: none): families cut by its faces integrate over the cut ball
 // (obq_weights.hpp).
 // `symmetric`: the weights are then replaced by symmetric_pair_weights.
-Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
-                                 std::string& description, const Box2* body = nullptr, bool symmetric = false);
+Collocation make_obq_collocation(const Particles& particles, const Bonds& bonds,
+                                 const ReproducingSpace& space, std::string& description,
+                                 const Box2* body = nullptr, bool symmetric = false);
 
 // Pair weights with V_p w'_{q,p} = V_q w'_{p,q} = (V_p w_{q,p} + V_q w_{p,q}) / 2: the pair
 // forces of eq. (2.13) are then equal and opposite (linear momentum is conserved), at the
 // price of each family's exactness where its weights and its neighbours' differ (faces,
 // perturbed clouds). On a regular lattice interior weights already satisfy it.
-std::vector<double> symmetric_pair_weights(const Particles& particles, const Bonds& bonds, const std::vector<double>& weights);
+std::vector<double> symmetric_pair_weights(const Particles& particles, const Bonds& bonds,
+                                           const std::vector<double>& weights);
 
 }  // namespace pd

@@ -19,7 +19,8 @@ void tile_order(const Particles& P, double side, std::vector<int>& order, std::v
     lo[c] = mn;
     cells[c] = static_cast<int>(std::floor((mx - mn) / side)) + 1;
   }
-  std::vector<int> tile(static_cast<std::size_t>(n)), count(static_cast<std::size_t>(cells[0]) * cells[1] * cells[2] + 1, 0);
+  std::vector<int> tile(static_cast<std::size_t>(n)),
+      count(static_cast<std::size_t>(cells[0]) * cells[1] * cells[2] + 1, 0);
   for (int p = 0; p < n; ++p) {
     int key = 0;
     for (int c = d - 1; c >= 0; --c)
@@ -79,7 +80,8 @@ FamilyColouring::FamilyColouring(const Particles& P, const Bonds& B, int chunk_s
       });
     });
   }
-  std::vector<int> colour(static_cast<std::size_t>(n_chunks), -1), used_by;  // used_by[c] = chunk that last saw colour c taken
+  std::vector<int> colour(static_cast<std::size_t>(n_chunks), -1),
+      used_by;  // used_by[c] = chunk that last saw colour c taken
   int n_colours = 0;
   for (int ch = 0; ch < n_chunks; ++ch) {
     for (int j = chunk_start_[ch]; j < chunk_start_[ch + 1]; ++j)

@@ -32,7 +32,7 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   const int d = P.dim, b0 = B.offsets[p], L = B.family_size(p);
   for (int k = 0; k < L; ++k) {
     const int q = B.neighbor[b0 + k];
-    V_[k] = in_->collocation            ? in_->collocation->weight[b0 + k]
+    V_[k] = in_->collocation          ? in_->collocation->weight[b0 + k]
             : B.volume_factor.empty() ? P.volume[q]
                                       : P.volume[q] * B.volume_factor[b0 + k];
     const double* xi = B.xi.data() + static_cast<std::ptrdiff_t>(b0 + k) * d;

@@ -21,7 +21,7 @@ struct FamilyInputs {
   std::vector<double> moments;              // [n * n_moments]
   int n_moments = 0;
   int scratch_per_bond = 0;  // the law's LawDescriptor::scratch_per_bond
-  int max_bonds = -1;  // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
+  int max_bonds = -1;        // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
   // Set for collocation assembly: the families see per-bond quadrature weights as V.
   const Collocation* collocation = nullptr;
 
@@ -41,7 +41,9 @@ class FamilyGather {
   // Family of particle p at displacement u ([n*dim]; null = reference configuration).
   abi::Family gather(int p, const double* u);
   // Global particle index of local particle a (0 = center, a = k+1 for bond k).
-  int particle(int p, int a) const { return a == 0 ? p : in_->bonds->neighbor[in_->bonds->offsets[p] + a - 1]; }
+  int particle(int p, int a) const {
+    return a == 0 ? p : in_->bonds->neighbor[in_->bonds->offsets[p] + a - 1];
+  }
   // Copies the entries of a global [n*dim] vector for the family's particles into a
   // local [(L+1)*dim] buffer owned by this object.
   const double* gather_local(int p, const double* global);
@@ -61,8 +63,8 @@ class FamilyGather {
 // center's material (the kernels then take the center's values, the same numbers), else
 // `buffer` filled bond-major with each neighbour's parameter vector.
 template <class MaterialOf>
-const double* neighbour_params(const std::vector<std::vector<double>>& params, int center, int n_bonds, MaterialOf material_of,
-                               std::vector<double>& buffer) {
+const double* neighbour_params(const std::vector<std::vector<double>>& params, int center, int n_bonds,
+                               MaterialOf material_of, std::vector<double>& buffer) {
   if (params.size() < 2) return nullptr;
   int k = 0;
   while (k < n_bonds && material_of(k) == center) ++k;

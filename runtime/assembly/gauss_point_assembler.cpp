@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "assembly/peridynamic_stress.hpp"
 #include "assembly/scatter.hpp"
 #include "local_matrix.hpp"
-#include "assembly/peridynamic_stress.hpp"
 
 namespace pd {
 
@@ -77,7 +77,8 @@ class GaussPointAssembler::Gather {
         xi_[k * d + c] = x;
         r2 += x * x;
         // Y = xi + (u_g - u_p): the small difference first, as FamilyGather does.
-        Y_[k * d + c] = u ? x + (ug[static_cast<std::size_t>(g) * d + c] - u[static_cast<std::size_t>(p) * d + c]) : x;
+        Y_[k * d + c] =
+            u ? x + (ug[static_cast<std::size_t>(g) * d + c] - u[static_cast<std::size_t>(p) * d + c]) : x;
       }
       w_[k] = gp.influence(std::sqrt(r2), delta);
       V_[k] = gp.beta[b0 + k] * gp.volume[g];
@@ -94,7 +95,8 @@ class GaussPointAssembler::Gather {
     f.params = a_.params_[static_cast<std::size_t>(P.material[p])].data();
     // A Gauss point has the material of the particle whose cell holds it.
     f.nbr_params = neighbour_params(
-        a_.params_, P.material[p], L, [&](int k) { return P.material[gp.cell[gp.point[b0 + k]]]; }, nbr_params_);
+        a_.params_, P.material[p], L, [&](int k) { return P.material[gp.cell[gp.point[b0 + k]]]; },
+        nbr_params_);
     f.moments = a_.law_.n_moments > 0 && !a_.moments_.empty()
                     ? a_.moments_.data() + static_cast<std::ptrdiff_t>(p) * a_.law_.n_moments
                     : nullptr;
@@ -146,7 +148,8 @@ class GaussPointAssembler::Gather {
         for (int y = 0; y < n; ++y) {
           const double w = cx * row_phi_[y];
           for (int r = 0; r < d; ++r) {
-            double* out = KN_.data() + static_cast<std::ptrdiff_t>(row_node_[x] * d + r) * nd + row_node_[y] * d;
+            double* out =
+                KN_.data() + static_cast<std::ptrdiff_t>(row_node_[x] * d + r) * nd + row_node_[y] * d;
             for (int q = 0; q < d; ++q) out[q] -= w * D[r * d + q];
           }
         }
@@ -205,7 +208,8 @@ class GaussPointAssembler::Gather {
       const double* b = ab_.data() + static_cast<std::ptrdiff_t>(S + st) * nd;
       double bsum = 0.0;
       for (int col = 0; col < nd; ++col) bsum += std::fabs(b[col]);
-      for (int row = 0; row < nd; ++row) rows[static_cast<std::ptrdiff_t>(nodes_[row / d]) * d + row % d] += std::fabs(a[row]) * bsum;
+      for (int row = 0; row < nd; ++row)
+        rows[static_cast<std::ptrdiff_t>(nodes_[row / d]) * d + row % d] += std::fabs(a[row]) * bsum;
     }
   }
 
@@ -229,10 +233,15 @@ class GaussPointAssembler::Gather {
 
 namespace pd {
 
-GaussPointAssembler::GaussPointAssembler(const Particles& particles, const GaussPoints& gp, const abi::LawDescriptor& law,
-                                         const abi::KernelVariant& variant, std::vector<std::vector<double>> params,
-                                         bool matrix, int threads)
-    : particles_(&particles), gp_(&gp), law_(law), variant_(variant), params_(std::move(params)), threads_(threads) {
+GaussPointAssembler::GaussPointAssembler(const Particles& particles, const GaussPoints& gp,
+                                         const abi::LawDescriptor& law, const abi::KernelVariant& variant,
+                                         std::vector<std::vector<double>> params, bool matrix, int threads)
+    : particles_(&particles),
+      gp_(&gp),
+      law_(law),
+      variant_(variant),
+      params_(std::move(params)),
+      threads_(threads) {
   if (gp.dim != particles.dim || gp.particle_count() != particles.size())
     throw std::invalid_argument("Gauss-point assembler: the Gauss points were built for another body");
   // Conflicts for the colouring: family p "holds" the cells of its points (two families
@@ -249,7 +258,9 @@ GaussPointAssembler::GaussPointAssembler(const Particles& particles, const Gauss
       for (int b = gp.offsets[p]; b < gp.offsets[p + 1]; ++b) {
         const int g = gp.point[b], c = gp.cell[g];
         double r2 = 0.0;
-        for (int k = 0; k < gp.dim; ++k) r2 += (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]) * (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]);
+        for (int k = 0; k < gp.dim; ++k)
+          r2 += (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]) *
+                (gp.x[static_cast<std::size_t>(g) * gp.dim + k] - xp[k]);
         cells.delta[p] = std::max(cells.delta[p], std::sqrt(r2));
         if (c != p && seen[c] != p) seen[c] = p, cells.neighbor.push_back(c);
       }
@@ -288,8 +299,9 @@ void GaussPointAssembler::for_each_family(const char* stage, Body&& body) const 
   Gather g(*this);
   for (int p = 0; p < particles_->size(); ++p)
     if (const char* failed = body(g, p))
-      throw std::runtime_error(std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed + " of law " +
-                               law_.name + " at particle " + std::to_string(p) + " (Gauss-point quadrature)");
+      throw std::runtime_error(std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed +
+                               " of law " + law_.name + " at particle " + std::to_string(p) +
+                               " (Gauss-point quadrature)");
 }
 
 int GaussPointAssembler::thread_count() const { return threads_ > 0 ? threads_ : omp_get_max_threads(); }
@@ -310,8 +322,8 @@ void GaussPointAssembler::for_each_family_coloured(const char* stage, Body&& bod
           if (const int p = col.family(j); const char* failed = body(g, p)) {
 #pragma omp critical(pd_gauss_assembly_error)
             if (error.empty())
-              error = std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed + " of law " + law_.name +
-                      " at particle " + std::to_string(p) + " (Gauss-point quadrature)";
+              error = std::string(stage) + ": non-finite value (NaN or Inf) from the " + failed + " of law " +
+                      law_.name + " at particle " + std::to_string(p) + " (Gauss-point quadrature)";
           }
       }
     }
@@ -353,7 +365,8 @@ void GaussPointAssembler::update_moments() {
   const int nm = law_.n_moments;
   moments_.clear();
   if (nm == 0) return;
-  if (variant_.moments == nullptr) throw std::invalid_argument(std::string("law ") + law_.name + " has no moments kernel");
+  if (variant_.moments == nullptr)
+    throw std::invalid_argument(std::string("law ") + law_.name + " has no moments kernel");
   std::vector<double> m(static_cast<std::size_t>(particles_->size()) * nm);
   for_each_family_coloured("moments", [&](Gather& g, int p) -> const char* {
     double* out = m.data() + static_cast<std::ptrdiff_t>(p) * nm;
@@ -370,7 +383,8 @@ void GaussPointAssembler::assemble(const double* u, double* forces, SparseMatrix
   if (!forces && !K) return;
   double* values = nullptr;
   if (K) {
-    if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pattern().nonzeros() || !K->isCompressed())
+    if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pattern().nonzeros() ||
+        !K->isCompressed())
       *K = pattern().matrix();
     values = K->valuePtr();
     std::fill(values, values + K->nonZeros(), 0.0);
@@ -383,32 +397,32 @@ void GaussPointAssembler::assemble(const double* u, double* forces, SparseMatrix
   std::vector<int> strides;
   std::vector<double> point_forces(forces ? static_cast<std::size_t>(gp_->points()) * d : 0, 0.0);
   auto body = [&](Gather& g, int p) -> const char* {
-                    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
-                    const int L = fam.n_bonds, m = (L + 1) * d;
-                    double* f_loc = forces ? g.local() : nullptr;
-                    if (K) {
-                      variant_.tangent(fam, f_loc, g.factors());
-                      if (!factors_finite(d, S, fam, g.factors())) return "tangent";
-                      g.map(p);
-                      g.nodal_matrix(d, S, fam, g.factors());
-                      const std::vector<int>& nodes = g.nodes();
-                      strides.resize(nodes.size());
-                      for (std::size_t a = 0; a < nodes.size(); ++a) strides[a] = pattern_->column_stride(nodes[a]);
-                      scatter_family(d, Coupling::family, g.nodal(), static_cast<int>(nodes.size()) - 1,
-                                     pattern_->family_slots(p).data(), strides.data(), values);
-                    } else {
-                      variant_.residual(fam, f_loc);
-                    }
-                    if (!f_loc) return nullptr;
-                    if (!finite(f_loc, static_cast<std::size_t>(m))) return "residual";
-                    // The center's row to p; each point's row summed per point, mapped below.
-                    for (int c = 0; c < d; ++c) forces[static_cast<std::ptrdiff_t>(p) * d + c] += f_loc[c];
-                    for (int k = 0; k < L; ++k) {
-                      double* f = point_forces.data() + static_cast<std::ptrdiff_t>(gp_->point[gp_->offsets[p] + k]) * d;
-                      for (int c = 0; c < d; ++c) f[c] += f_loc[(k + 1) * d + c];
-                    }
-                    return nullptr;
-                  };
+    const abi::Family fam = g.family(p, u, u ? ug.data() : nullptr);
+    const int L = fam.n_bonds, m = (L + 1) * d;
+    double* f_loc = forces ? g.local() : nullptr;
+    if (K) {
+      variant_.tangent(fam, f_loc, g.factors());
+      if (!factors_finite(d, S, fam, g.factors())) return "tangent";
+      g.map(p);
+      g.nodal_matrix(d, S, fam, g.factors());
+      const std::vector<int>& nodes = g.nodes();
+      strides.resize(nodes.size());
+      for (std::size_t a = 0; a < nodes.size(); ++a) strides[a] = pattern_->column_stride(nodes[a]);
+      scatter_family(d, Coupling::family, g.nodal(), static_cast<int>(nodes.size()) - 1,
+                     pattern_->family_slots(p).data(), strides.data(), values);
+    } else {
+      variant_.residual(fam, f_loc);
+    }
+    if (!f_loc) return nullptr;
+    if (!finite(f_loc, static_cast<std::size_t>(m))) return "residual";
+    // The center's row to p; each point's row summed per point, mapped below.
+    for (int c = 0; c < d; ++c) forces[static_cast<std::ptrdiff_t>(p) * d + c] += f_loc[c];
+    for (int k = 0; k < L; ++k) {
+      double* f = point_forces.data() + static_cast<std::ptrdiff_t>(gp_->point[gp_->offsets[p] + k]) * d;
+      for (int c = 0; c < d; ++c) f[c] += f_loc[(k + 1) * d + c];
+    }
+    return nullptr;
+  };
   // The matrix scatters into the family's MLS nodes, which the colouring does not separate.
   if (K)
     for_each_family("stiffness assembly (Gauss points)", body);
@@ -453,8 +467,9 @@ void GaussPointAssembler::stiffness_product(const double* u, const double* v, do
 
 void GaussPointAssembler::collocation_forces(const double* u, double* forces) const {
   if (law_.n_states != 0)
-    throw std::invalid_argument(std::string("collocation form (eq. 3.15): law ") + law_.name +
-                                " is state-based; its force state needs the Gauss point's own family, which does not exist");
+    throw std::invalid_argument(
+        std::string("collocation form (eq. 3.15): law ") + law_.name +
+        " is state-based; its force state needs the Gauss point's own family, which does not exist");
   const int d = particles_->dim;
   std::fill(forces, forces + dofs(), 0.0);
   std::vector<double> ug;
@@ -490,7 +505,8 @@ void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) cons
     const std::vector<int>& nodes = g.nodes();
     const std::size_t nd = nodes.size() * d;
     for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int r = 0; r < d; ++r) diag[static_cast<std::ptrdiff_t>(nodes[a]) * d + r] -= g.nodal()[(a * d + r) * nd + a * d + r];
+      for (int r = 0; r < d; ++r)
+        diag[static_cast<std::ptrdiff_t>(nodes[a]) * d + r] -= g.nodal()[(a * d + r) * nd + a * d + r];
     return nullptr;
   });
 }
@@ -515,7 +531,8 @@ std::vector<double> GaussPointAssembler::stiffness_row_sum_bound(const double* u
 }
 
 double GaussPointAssembler::strain_energy(const double* u) const {
-  if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  if (variant_.energy == nullptr)
+    throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
@@ -534,7 +551,8 @@ double GaussPointAssembler::strain_energy(const double* u) const {
 }
 
 double GaussPointAssembler::family_energy_density(int p, const double* u) const {
-  if (variant_.energy == nullptr) throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
+  if (variant_.energy == nullptr)
+    throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   std::vector<double> ug;
   if (u) {
     ug.resize(static_cast<std::size_t>(gp_->points()) * particles_->dim);
@@ -554,7 +572,8 @@ std::vector<double> GaussPointAssembler::particle_outputs(const double* u) const
     gather_points(u, ug.data());
   }
   for_each_family_coloured("outputs (Gauss points)", [&](Gather& g, int p) -> const char* {
-    variant_.outputs(g.family(p, u, u ? ug.data() : nullptr), out.data() + static_cast<std::ptrdiff_t>(p) * no);
+    variant_.outputs(g.family(p, u, u ? ug.data() : nullptr),
+                     out.data() + static_cast<std::ptrdiff_t>(p) * no);
     return nullptr;
   });
   return out;

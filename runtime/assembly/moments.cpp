@@ -12,7 +12,8 @@ void compute_moments(FamilyInputs& inputs, const abi::LawDescriptor& law, const 
   inputs.n_moments = nm;
   inputs.moments.assign(static_cast<std::size_t>(n) * nm, 0.0);
   if (nm == 0) return;
-  if (variant.moments == nullptr) throw std::invalid_argument(std::string("law ") + law.name + " has moments but no moments kernel");
+  if (variant.moments == nullptr)
+    throw std::invalid_argument(std::string("law ") + law.name + " has moments but no moments kernel");
   int bad = -1;
 #pragma omp parallel
   {
@@ -33,8 +34,8 @@ void compute_moments(FamilyInputs& inputs, const abi::LawDescriptor& law, const 
     }
   }
   if (bad >= 0)
-    throw std::runtime_error("moments: non-finite value at particle " + std::to_string(bad) + " (law " + law.name +
-                             ")");
+    throw std::runtime_error("moments: non-finite value at particle " + std::to_string(bad) + " (law " +
+                             law.name + ")");
 }
 
 }  // namespace pd

@@ -43,12 +43,13 @@ std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const d
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < dd; ++c)
       if (!std::isfinite(sigma[static_cast<std::size_t>(i) * dd + c]))
-        throw std::runtime_error(fmt::format("the peridynamic stress is not finite at particle {} (law {})", i,
-                                             assembler.law().name));
+        throw std::runtime_error(fmt::format("the peridynamic stress is not finite at particle {} (law {})",
+                                             i, assembler.law().name));
   return sigma;
 }
 
-void family_stress(abi::ResidualKernel residual, const abi::Family& family, int dim, double* forces, double* sigma) {
+void family_stress(abi::ResidualKernel residual, const abi::Family& family, int dim, double* forces,
+                   double* sigma) {
   residual(family, forces);
   for (int c = 0; c < dim * dim; ++c) sigma[c] = 0;
   for (int k = 0; k < family.n_bonds; ++k) {

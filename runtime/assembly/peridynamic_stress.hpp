@@ -31,9 +31,9 @@ namespace pd {
 // sigma of every particle at displacement u ([n*dim]), row-major per particle:
 // [n * dim * dim], sigma_ab at [i*dim*dim + a*dim + b] (a: force component, b: bond
 // component). Under domain.gauss_points: each Gauss family's sum_g V_g t_i<g> (x) xi_g
-// (family_stress; a Gauss point has no family of its own). One residual kernel call per family; t_q<k> comes from family q's nodal
-// force on neighbour k (-V_q V_k t_q<k>, kernel_abi.hpp). Throws std::runtime_error when a
-// value is not finite (naming the particle).
+// (family_stress; a Gauss point has no family of its own). One residual kernel call per family; t_q<k> comes
+// from family q's nodal force on neighbour k (-V_q V_k t_q<k>, kernel_abi.hpp). Throws std::runtime_error
+// when a value is not finite (naming the particle).
 std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const double* u);
 
 // The centre's own half of sigma doubled: sum_k V_k t_0<k> (outer) xi_k, from one residual
@@ -41,6 +41,7 @@ std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const d
 // overwritten). It equals peridynamic_stress at a particle whose neighbours' force states
 // mirror its own (t_j<i> = -t_i<j>: a homogeneous deformation, whole families), and needs
 // only the one family: the infinite-body studies use it (studies/paper002_stress).
-void family_stress(abi::ResidualKernel residual, const abi::Family& family, int dim, double* forces, double* sigma);
+void family_stress(abi::ResidualKernel residual, const abi::Family& family, int dim, double* forces,
+                   double* sigma);
 
 }  // namespace pd

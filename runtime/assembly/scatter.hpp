@@ -50,8 +50,8 @@ void scatter_family(Coupling coupling, const double* __restrict M, int L, const 
 // (local_matrix.hpp: M[0][0] = B[0], M[0][k] = M[k][0] = B[k], M[k][k] = -B[k], each
 // row-major) instead of the dense matrix, whose other blocks are zero.
 template <int D>
-void scatter_pair_blocks(const double* __restrict B, int L, const int* __restrict slots, const int* __restrict strides,
-                         double* __restrict values) {
+void scatter_pair_blocks(const double* __restrict B, int L, const int* __restrict slots,
+                         const int* __restrict strides, double* __restrict values) {
   auto add = [&](const double* blk, int base, int stride, double sign) {
     for (int q = 0; q < D; ++q)
       for (int r = 0; r < D; ++r) values[base + q * stride + r] -= sign * blk[r * D + q];
@@ -65,14 +65,15 @@ void scatter_pair_blocks(const double* __restrict B, int L, const int* __restric
   }
 }
 
-inline void scatter_pair_blocks(int dim, const double* B, int L, const int* slots, const int* strides, double* values) {
+inline void scatter_pair_blocks(int dim, const double* B, int L, const int* slots, const int* strides,
+                                double* values) {
   if (dim == 2) return scatter_pair_blocks<2>(B, L, slots, strides, values);
   if (dim == 3) return scatter_pair_blocks<3>(B, L, slots, strides, values);
   scatter_pair_blocks<1>(B, L, slots, strides, values);
 }
 
-inline void scatter_family(int dim, Coupling coupling, const double* M, int L, const int* slots, const int* strides,
-                           double* values) {
+inline void scatter_family(int dim, Coupling coupling, const double* M, int L, const int* slots,
+                           const int* strides, double* values) {
   if (dim == 2) return scatter_family<2>(coupling, M, L, slots, strides, values);
   if (dim == 3) return scatter_family<3>(coupling, M, L, slots, strides, values);
   scatter_family<1>(coupling, M, L, slots, strides, values);  // the laws are 2D or 3D; 1D for completeness

@@ -80,7 +80,8 @@ int SparsityPattern::block_base(int a, int b) const {
   const auto first = rows_.begin() + col_start_[b], last = rows_.begin() + col_start_[b + 1];
   const auto it = std::lower_bound(first, last, a);
   if (it == last || *it != a)
-    throw std::out_of_range("sparsity: particles " + std::to_string(a) + " and " + std::to_string(b) + " share no family");
+    throw std::out_of_range("sparsity: particles " + std::to_string(a) + " and " + std::to_string(b) +
+                            " share no family");
   // Particle column b starts at col_start_[b] * dim^2 (each earlier particle column holds
   // dim columns of (its length * dim) entries).
   return col_start_[b] * dim_ * dim_ + static_cast<int>(it - first) * dim_;

@@ -21,7 +21,9 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 //             i != k, kernel_abi.hpp), so the reach is one horizon and a 2D lattice at
 //             delta/h = 3.5 has about a quarter of the family coupling's nonzeros.
 enum class Coupling { family, pairwise };
-inline Coupling coupling_of_law(int n_states) { return n_states == 0 ? Coupling::pairwise : Coupling::family; }
+inline Coupling coupling_of_law(int n_states) {
+  return n_states == 0 ? Coupling::pairwise : Coupling::family;
+}
 
 // The pattern is the union of every family's coupled particle blocks, each a dense
 // dim x dim block. Entries of particle column b are stored for each of its dim
@@ -56,7 +58,8 @@ class SparsityPattern {
     return {slots_.data() + slot_start_[p], static_cast<std::size_t>(slot_start_[p + 1] - slot_start_[p])};
   }
   static std::int64_t slot_count(Coupling coupling, int L) {
-    return coupling == Coupling::family ? static_cast<std::int64_t>(L + 1) * (L + 1) : 3 * static_cast<std::int64_t>(L) + 1;
+    return coupling == Coupling::family ? static_cast<std::int64_t>(L + 1) * (L + 1)
+                                        : 3 * static_cast<std::int64_t>(L) + 1;
   }
   // Base of block (a, b) by search, for tests and the rare caller without a family.
   int block_base(int a, int b) const;
@@ -64,10 +67,10 @@ class SparsityPattern {
  private:
   int n_, dim_;
   Coupling coupling_;
-  std::vector<int> col_start_;         // [n+1] range of particle column b in rows_
-  std::vector<int> rows_;              // particle rows per particle column
+  std::vector<int> col_start_;            // [n+1] range of particle column b in rows_
+  std::vector<int> rows_;                 // particle rows per particle column
   std::vector<std::int64_t> slot_start_;  // [n+1] range of family p in slots_
-  std::vector<int> slots_;             // block bases per family
+  std::vector<int> slots_;                // block bases per family
 };
 
 }  // namespace pd

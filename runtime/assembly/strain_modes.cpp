@@ -59,7 +59,8 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
         continue;
       }
       if (scale > 0) response /= scale;
-      const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(response.transpose() * response).eigenvalues();
+      const Eigen::VectorXd eig =
+          Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(response.transpose() * response).eigenvalues();
       ratios[p] = eig[nk - 1] > 0 ? std::max(0.0, eig[0]) / eig[nk - 1] : 0.0;
     }
   }
@@ -97,28 +98,33 @@ FamilyModuli family_moduli(const FamilyAssembler& assembler, int p) {
   return out;
 }
 
-StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h) {
+StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence,
+                                    double delta_over_h) {
   StrainModeReport report = find_strain_blind_families(assembler);
   const int n = assembler.inputs().size();
   const Particles& P = *assembler.inputs().particles;
   const auto first_five = [&P](const std::vector<int>& which) {
     std::string list;
     for (std::size_t k = 0; k < std::min<std::size_t>(which.size(), 5); ++k)
-      list += fmt::format("{}particle {} at ({:.6g}, {:.6g})", k ? ", " : "", which[k], P.position(which[k])[0],
-                          P.position(which[k])[1]);
+      list += fmt::format("{}particle {} at ({:.6g}, {:.6g})", k ? ", " : "", which[k],
+                          P.position(which[k])[0], P.position(which[k])[1]);
     return list + (which.size() > 5 ? fmt::format(" and {} more", which.size() - 5) : "");
   };
   if (!report.non_finite.empty())  // bad input (exit 2), like a key out of range
-    throw SceneError(fmt::format(
-        "{} of {} families give law {} an infinite or NaN response to a homogeneous strain: {}; the law's parameters "
-        "(the material's moduli, or its `parameters`) overflow in double precision: give the moduli in units that "
-        "make them moderate (e.g. MPa or GPa instead of Pa)",
-        report.non_finite.size(), n, assembler.law().name, first_five(report.non_finite)));
+    throw SceneError(
+        fmt::format("{} of {} families give law {} an infinite or NaN response to a homogeneous strain: {}; "
+                    "the law's parameters "
+                    "(the material's moduli, or its `parameters`) overflow in double precision: give the "
+                    "moduli in units that "
+                    "make them moderate (e.g. MPa or GPa instead of Pa)",
+                    report.non_finite.size(), n, assembler.law().name, first_five(report.non_finite)));
   if (2 * static_cast<long long>(report.blind.size()) > n) {
     const std::string list = first_five(report.blind);
     throw SceneError(fmt::format(  // the scene's horizon and influence: bad input (exit 2)
-        "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = {:.4g}): {}; "
-        "their bonds are too few or too aligned for this law (on a square lattice, delta/h < 1.42 leaves only the axial "
+        "{} of {} families give law {} no stiffness against some homogeneous strain (influence {}, delta/h = "
+        "{:.4g}): {}; "
+        "their bonds are too few or too aligned for this law (on a square lattice, delta/h < 1.42 leaves "
+        "only the axial "
         "bonds, which do not stretch under shear): increase the horizon ratio",
         report.blind.size(), n, assembler.law().name, influence, delta_over_h, list));
   }

@@ -4,19 +4,18 @@
 // the stiffness is then singular, and the solver would only say "singular matrix".
 #pragma once
 
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "assembly/assembler.hpp"
 
 namespace pd {
 
 struct StrainModeReport {
-  std::vector<int> blind;   // families with no stiffness against some homogeneous strain
+  std::vector<int> blind;       // families with no stiffness against some homogeneous strain
   std::vector<int> non_finite;  // families whose response is inf or NaN (overflowing constants)
-  double worst_ratio = 1;  // smallest lambda_min / lambda_max of a family's response Gram matrix
+  double worst_ratio = 1;       // smallest lambda_min / lambda_max of a family's response Gram matrix
   int worst_particle = -1;
 };
 
@@ -28,9 +27,11 @@ StrainModeReport find_strain_blind_families(const FamilyAssembler& assembler, do
 
 // Throws std::runtime_error naming the particles when a family's response is not finite
 // (material constants that overflow: "no stiffness" would mislead), and naming the law,
-// influence, delta/h and particles when more than half of the families are blind (the body then has a mechanism); returns the
-// report otherwise (a few blind families at corners are stiffened by their neighbours').
-StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence, double delta_over_h);
+// influence, delta/h and particles when more than half of the families are blind (the body then has a
+// mechanism); returns the report otherwise (a few blind families at corners are stiffened by their
+// neighbours').
+StrainModeReport check_strain_modes(const FamilyAssembler& assembler, const std::string& influence,
+                                    double delta_over_h);
 
 // The discrete moduli of particle p's family: its response to the unit homogeneous
 // strains eps_k (k over the pairs r <= c: 11, 12, 22 in 2D; 11, 12, 13, 22, 23, 33 in

@@ -45,7 +45,9 @@ double response(const abi::LawDescriptor& law, const abi::Family& f, const std::
   df.assign(dy.size(), 0.0);
   for (int k = 0; k < L; ++k)
     for (int r = 0; r < d; ++r)
-      for (int c = 0; c < d; ++c) dy[static_cast<std::size_t>((k + 1) * d + r)] += eps[static_cast<std::size_t>(r * d + c)] * f.xi[k * d + c];
+      for (int c = 0; c < d; ++c)
+        dy[static_cast<std::size_t>((k + 1) * d + r)] +=
+            eps[static_cast<std::size_t>(r * d + c)] * f.xi[k * d + c];
   law.intact.jvp(f, dy.data(), df.data());
   double R = 0;
   for (std::size_t i = 0; i < dy.size(); ++i) R -= df[i] * dy[i];
@@ -73,10 +75,12 @@ void set_moments(const abi::LawDescriptor& law, abi::Family& f, std::vector<doub
 }
 }  // namespace
 
-TrialResponse trial_response(const abi::LawDescriptor& law, const abi::Family& family, double s_d, double s_f) {
+TrialResponse trial_response(const abi::LawDescriptor& law, const abi::Family& family, double s_d,
+                             double s_f) {
   abi::Family f = family;
   std::vector<double> Y(f.xi, f.xi + static_cast<std::ptrdiff_t>(f.n_bonds) * law.dim);
-  std::vector<double> sd(static_cast<std::size_t>(f.n_bonds), s_d), sf(static_cast<std::size_t>(f.n_bonds), s_f);
+  std::vector<double> sd(static_cast<std::size_t>(f.n_bonds), s_d),
+      sf(static_cast<std::size_t>(f.n_bonds), s_f);
   f.Y = Y.data(), f.dilatation_factor = sd.data(), f.force_factor = sf.data();
   std::vector<double> dy, df;
   const std::vector<std::vector<double>> strains = trial_strains(law.dim);
@@ -89,7 +93,8 @@ TrialResponse trial_response(const abi::LawDescriptor& law, const abi::Family& f
 namespace {
 // The law's dilatation of a family under the isotropic stretch Y = (1 + e) xi, every bond
 // carrying dilatation factor 1: the output "dilatation" (pdgen Law::dilatation_sum).
-double trial_dilatation(const abi::LawDescriptor& law, const abi::Family& family, int output, std::vector<double>& outs) {
+double trial_dilatation(const abi::LawDescriptor& law, const abi::Family& family, int output,
+                        std::vector<double>& outs) {
   abi::Family f = family;
   const double e = 1e-6;
   std::vector<double> Y(f.xi, f.xi + static_cast<std::ptrdiff_t>(f.n_bonds) * law.dim);
@@ -103,17 +108,21 @@ double trial_dilatation(const abi::LawDescriptor& law, const abi::Family& family
 int dilatation_output(const abi::LawDescriptor& law) {
   for (int i = 0; i < law.n_outputs; ++i)
     if (std::string_view(law.output_names[i]) == "dilatation") return i;
-  throw std::invalid_argument(fmt::format("law {} marks a dilatation sum but has no output 'dilatation'", law.name));
+  throw std::invalid_argument(
+      fmt::format("law {} marks a dilatation sum but has no output 'dilatation'", law.name));
 }
 }  // namespace
 
 const char* surface_match_name(SurfaceMatch m) { return m == SurfaceMatch::Terms ? "terms" : "responses"; }
 
-SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b, const SurfaceCorrectionInputs& in) {
+SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b,
+                                          const SurfaceCorrectionInputs& in) {
   const abi::LawDescriptor& law = *in.law;
   if (law.intact.jvp == nullptr)
-    throw std::invalid_argument(fmt::format("law {} has no JVP kernel: the surface correction evaluates the trial "
-                                            "responses through it", law.name));
+    throw std::invalid_argument(
+        fmt::format("law {} has no JVP kernel: the surface correction evaluates the trial "
+                    "responses through it",
+                    law.name));
   const int theta_out = law.has_dilatation_sum ? dilatation_output(law) : -1;
   const int n = p.size();
   LatticeFamily full(in.quadrature, in.delta, in.h, p.dim, in.influence, 0.0, law.scratch_per_bond);
@@ -126,7 +135,8 @@ SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b, co
   FamilyInputs fi;
   fi.particles = &p, fi.bonds = &b, fi.params = *in.params, fi.scratch_per_bond = law.scratch_per_bond;
   FamilyGather gather(fi);
-  SurfaceFactors out{std::vector<double>(static_cast<std::size_t>(n), 1.0), std::vector<double>(static_cast<std::size_t>(n), 1.0)};
+  SurfaceFactors out{std::vector<double>(static_cast<std::size_t>(n), 1.0),
+                     std::vector<double>(static_cast<std::size_t>(n), 1.0)};
   for (int i = 0; i < n; ++i) {
     const int mat = p.material[i];
     const double* params = (*in.params)[static_cast<std::size_t>(mat)].data();
@@ -135,7 +145,8 @@ SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b, co
     if (it == interior.end()) {
       abi::Family ff = full.family(p.volume[i], in.delta, params);
       set_moments(law, ff, moments);
-      Interior v{trial_response(law, ff, 1.0, 1.0), theta_out >= 0 ? trial_dilatation(law, ff, theta_out, outs) : 0.0};
+      Interior v{trial_response(law, ff, 1.0, 1.0),
+                 theta_out >= 0 ? trial_dilatation(law, ff, theta_out, outs) : 0.0};
       it = interior.emplace(key, v).first;
     }
     const Interior F = it->second;
@@ -158,10 +169,13 @@ SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b, co
     }
     if (!(sd > 0) || !(sf > 0) || !std::isfinite(sd) || !std::isfinite(sf))
       throw std::runtime_error(fmt::format(
-          "surface correction ({}): particle {} gives dilatation factor {:.6g} and force factor {:.6g} (law {}): not "
-          "positive numbers{}", surface_match_name(in.match), i, sd, sf, law.name,
+          "surface correction ({}): particle {} gives dilatation factor {:.6g} and force factor {:.6g} (law "
+          "{}): not "
+          "positive numbers{}",
+          surface_match_name(in.match), i, sd, sf, law.name,
           in.match == SurfaceMatch::Responses && law.has_dilatation_sum
-              ? "; matching both responses needs a dilatation term that moves the two trials differently (for the "
+              ? "; matching both responses needs a dilatation term that moves the two trials differently "
+                "(for the "
                 "dilatation laws it vanishes near Poisson ratio 1/4 in plane strain): use match terms"
               : ""));
     out.dilatation[static_cast<std::size_t>(i)] = sd;

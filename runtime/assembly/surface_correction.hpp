@@ -78,7 +78,8 @@ TrialResponse trial_response(const abi::LawDescriptor& law, const abi::Family& f
 
 // s_d and s_f of every particle. Throws std::runtime_error naming the particle when a
 // factor is not a positive finite number.
-SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b, const SurfaceCorrectionInputs& in);
+SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b,
+                                          const SurfaceCorrectionInputs& in);
 
 // Bonds::surface_dilatation (only for a law with a dilatation sum) and
 // Bonds::surface_force: per bond the mean of its two ends' factors.

@@ -14,7 +14,8 @@ namespace pd::cli {
 
 namespace {
 void print_ops(const char* what, const abi::OpCounts& c) {
-  fmt::print("      {:<9} per bond: {:3} add {:3} mul {:3} div {:2} call\n", what, c.adds, c.muls, c.divs, c.calls);
+  fmt::print("      {:<9} per bond: {:3} add {:3} mul {:3} div {:2} call\n", what, c.adds, c.muls, c.divs,
+             c.calls);
 }
 
 int list_laws(bool verbose) {
@@ -22,8 +23,8 @@ int list_laws(bool verbose) {
   for (const auto& law : abi::all_laws()) {
     std::string params;
     for (int i = 0; i < law.n_params; ++i) params += (i ? ", " : "") + std::string(law.param_names[i]);
-    fmt::print("  {:<28} {}D  params: {:<16} moments: {}  states: {}  energy: {}\n", law.name, law.dim, params,
-               law.n_moments, law.n_states, law.damaged.energy ? "yes" : "no");
+    fmt::print("  {:<28} {}D  params: {:<16} moments: {}  states: {}  energy: {}\n", law.name, law.dim,
+               params, law.n_moments, law.n_states, law.damaged.energy ? "yes" : "no");
     fmt::print("      {}\n", law.summary);
     if (verbose) {
       print_ops("residual", law.intact.residual_ops);
@@ -43,24 +44,26 @@ int check_law(const std::string& name, unsigned seed) {
     return 2;
   }
   const verify::CheckTolerances tol;
-  fmt::print("Checking {} ({}D) on random families, seed {}: generated tangent vs central differences\n"
-             "of the generated residual (relative error per block kind; pass <= {:g}), JVP (<= {:g}), momentum\n"
-             "(<= {:g}), angular momentum (<= {:g}, {}), and finite everywhere.\n\n",
-             law->name, law->dim, seed, tol.tangent, tol.jvp, tol.momentum, tol.angular_momentum,
-             law->balances_angular_momentum ? "the law claims it" : "not claimed: shown, not judged");
-  fmt::print("  {:<24} {:>5} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "family", "bonds", "center", "on-diag",
-             "off-diag", "coupling", "jvp", "momentum", "angular");
+  fmt::print(
+      "Checking {} ({}D) on random families, seed {}: generated tangent vs central differences\n"
+      "of the generated residual (relative error per block kind; pass <= {:g}), JVP (<= {:g}), momentum\n"
+      "(<= {:g}), angular momentum (<= {:g}, {}), and finite everywhere.\n\n",
+      law->name, law->dim, seed, tol.tangent, tol.jvp, tol.momentum, tol.angular_momentum,
+      law->balances_angular_momentum ? "the law claims it" : "not claimed: shown, not judged");
+  fmt::print("  {:<24} {:>5} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "family", "bonds", "center",
+             "on-diag", "off-diag", "coupling", "jvp", "momentum", "angular");
   bool ok = true;
   for (const auto& c : verify::check_law(*law, seed)) {
     const bool pass = verify::passes(*law, c, tol);
     ok = ok && pass;
     if (c.differenced)
-      fmt::print("  {:<24} {:>5} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e}", c.description, c.bonds, c.tangent.center,
-                 c.tangent.on_diagonal, c.tangent.off_diagonal, c.tangent.center_coupling, c.jvp_error);
+      fmt::print("  {:<24} {:>5} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e}", c.description, c.bonds,
+                 c.tangent.center, c.tangent.on_diagonal, c.tangent.off_diagonal, c.tangent.center_coupling,
+                 c.jvp_error);
     else
       fmt::print("  {:<24} {:>5} {:>54}", c.description, c.bonds, "(no differences at a collapsed bond)");
-    fmt::print(" {:>10.2e} {:>10.2e}  {}{}\n", c.momentum_error, c.angular_momentum_error, pass ? "ok" : "FAIL",
-               c.finite ? "" : " (NaN or Inf)");
+    fmt::print(" {:>10.2e} {:>10.2e}  {}{}\n", c.momentum_error, c.angular_momentum_error,
+               pass ? "ok" : "FAIL", c.finite ? "" : " (NaN or Inf)");
   }
   fmt::print("\n{}\n", ok ? "All checks passed." : "Some checks FAILED.");
   return ok ? 0 : 1;

@@ -52,12 +52,15 @@ std::optional<std::string> memory_refusal(const Scene& scene, std::optional<doub
   const MemoryEstimate e = estimate_memory(scene);
   if (e.bytes <= *available) return std::nullopt;
   return fmt::format(
-      "{}: domain: the scene needs at least {} of memory for its particles and bonds alone ({:.3g} particles, "
-      "{:.3g} bonds at delta/h = {:.4g}{}), and this machine has {} available (MemAvailable in /proc/meminfo): "
+      "{}: domain: the scene needs at least {} of memory for its particles and bonds alone ({:.3g} "
+      "particles, "
+      "{:.3g} bonds at delta/h = {:.4g}{}), and this machine has {} available (MemAvailable in "
+      "/proc/meminfo): "
       "coarsen domain.spacing/count or reduce the horizon",
       scene.file, gib(e.bytes), e.particles, e.bonds / 2, scene.delta() / scene.h,
-      e.tangent_nonzeros > 0 ? fmt::format("; an assembled tangent would add about {:.3g} nonzeros", e.tangent_nonzeros)
-                             : std::string(),
+      e.tangent_nonzeros > 0
+          ? fmt::format("; an assembled tangent would add about {:.3g} nonzeros", e.tangent_nonzeros)
+          : std::string(),
       gib(*available));
 }
 

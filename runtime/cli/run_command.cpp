@@ -1,22 +1,23 @@
 // `pd run SCENE.yaml [--out DIR]`: solve a scene and write its results.
+#include <fmt/core.h>
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <fmt/core.h>
 #include <memory>
 #include <optional>
-#include <vector>
 #include <string>
-#include <unistd.h>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/memory_check.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "interrupt.hpp"
+#include "model/model.hpp"
 #include "output/output_directory.hpp"
 #include "output/staging.hpp"
-#include "model/model.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
@@ -70,14 +71,17 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   const int processes = launched_process_count();
   if (scene.solver.backend != Backend::petsc) {
     if (processes > 1)
-      return fmt::format("started on {} MPI processes, but solver.backend is serial: add 'backend: petsc' to the "
-                         "solver section (docs/scene_format.md), or run without mpirun", processes);
+      return fmt::format(
+          "started on {} MPI processes, but solver.backend is serial: add 'backend: petsc' to the "
+          "solver section (docs/scene_format.md), or run without mpirun",
+          processes);
     if (!options.petsc_options.empty()) return std::string("--petsc-options needs solver.backend: petsc");
     return std::nullopt;
   }
   if (!distributed_backend_available())
-    return std::string("solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
-                       "scripts/install_deps.sh and configure again)");
+    return std::string(
+        "solver.backend: petsc, but this pd was built without PETSc (install petsc-dev with "
+        "scripts/install_deps.sh and configure again)");
   return std::nullopt;
 }
 
@@ -139,7 +143,9 @@ int run_scene(const RunOptions& options) {
     log(version_line());
     if (staging)
       for (const std::string& old : staging->leftovers())
-        log(fmt::format("  warning: {}: the files of an earlier run into {} that did not finish (killed?): its checkpoint, "
+        log(
+            fmt::format("  warning: {}: the files of an earlier run into {} that did not finish (killed?): "
+                        "its checkpoint, "
                         "if any, can resume it with --restart; remove the directory when it is not needed",
                         old, directory));
     if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
@@ -165,8 +171,9 @@ int run_scene(const RunOptions& options) {
     // Dynamic runs write snapshots and checkpoints as they go; those are complete files.
     publish();
     fmt::print(stderr, "pd run: {}; {}\n", e.what(),
-               dynamic ? "no result files were written (snapshots and checkpoints already written are complete)"
-                       : "no result files were written");
+               dynamic
+                   ? "no result files were written (snapshots and checkpoints already written are complete)"
+                   : "no result files were written");
     return 128 + e.signal();
   } catch (const std::exception&) {
     // A failed dynamic run's snapshots show how it failed: published like a finished run's
@@ -179,7 +186,8 @@ int run_scene(const RunOptions& options) {
   for (auto& f : s.files)
     if (staging && f.rfind(staging->path() + "/", 0) == 0) f = directory + f.substr(staging->path().size());
   fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
-             s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds, s.output_seconds);
+             s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds,
+             s.output_seconds);
   for (const auto& f : s.files) fmt::print("  {}\n", f);
   return 0;
 }
@@ -190,10 +198,12 @@ Command add_run_command(CLI::App& pd) {
   cmd->footer(kRunDetails);
   auto options = std::make_shared<RunOptions>();
   cmd->add_option("SCENE", options->scene_path, "the scene file (YAML)")->required();
-  cmd->add_option("--out", options->out_dir, "the output directory DIR (default: the scene's output.directory)");
+  cmd->add_option("--out", options->out_dir,
+                  "the output directory DIR (default: the scene's output.directory)");
   cmd->add_option("--restart", options->restart, "resume a dynamic run from this checkpoint file");
-  cmd->add_option("--petsc-options", options->petsc_options,
-                  "PETSc options for solver.backend: petsc, after the scene's (--petsc-options='-ksp_monitor')");
+  cmd->add_option(
+      "--petsc-options", options->petsc_options,
+      "PETSc options for solver.backend: petsc, after the scene's (--petsc-options='-ksp_monitor')");
   return [options] { return run_scene(*options); };
 }
 

@@ -1,7 +1,8 @@
 // `pd study STUDY.yaml [--out DIR] [--quick]`: a convergence/cost study (runtime/study).
+#include <fmt/core.h>
+
 #include <cmath>
 #include <cstdio>
-#include <fmt/core.h>
 #include <memory>
 #include <string>
 
@@ -36,8 +37,9 @@ int run_study_file(const StudyOptions& options) {
   });
   fmt::print("\norders of convergence (least squares on log e vs log h):\n");
   for (const auto& o : orders)
-    fmt::print("  {:<10} {:<32} {:<10} delta/h={:<4} {:<18} order {:7.3f}{}\n", o.problem, o.law, o.influence, o.ratio,
-               o.smoothing.empty() ? "" : "smoothed " + o.smoothing, o.order, o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
+    fmt::print("  {:<10} {:<32} {:<10} delta/h={:<4} {:<18} order {:7.3f}{}\n", o.problem, o.law, o.influence,
+               o.ratio, o.smoothing.empty() ? "" : "smoothed " + o.smoothing, o.order,
+               o.paper.order ? fmt::format("   (paper {:.4f})", *o.paper.order) : "");
   fmt::print("results: {}/points.csv, {}/orders.md, {}/*.png\n", out, out, out);
   return 0;
 }
@@ -52,7 +54,8 @@ Command add_study_command(CLI::App& pd) {
   auto options = std::make_shared<StudyOptions>();
   cmd->add_option("STUDY", options->path, "the study file (YAML)")->required();
   cmd->add_option("--out", options->out, "the output directory DIR")->capture_default_str();
-  cmd->add_option("--placement", options->placement, "replace every problem's domain.placement (node or cell)")
+  cmd->add_option("--placement", options->placement,
+                  "replace every problem's domain.placement (node or cell)")
       ->check(CLI::IsMember({"node", "cell"}));
   cmd->add_flag("--quick", options->quick, "run the study's reduced sweep");
   return [options] { return run_study_file(*options); };

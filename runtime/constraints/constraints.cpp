@@ -33,10 +33,14 @@ std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& 
       for (int c = 0; c < d; ++c) {
         if (!bc.components[c]) continue;
         const int dof = p * d + c;
-        const double value = bc.kind == K::Fixed ? 0.0 : field ? field->displacement(particles.position(p))[c] : bc.values[c];
+        const double value = bc.kind == K::Fixed ? 0.0
+                             : field             ? field->displacement(particles.position(p))[c]
+                                                 : bc.values[c];
         const PrescribedDof q{dof, bc.kind, value, static_cast<int>(ci)};
-        if (entry[dof] < 0) entry[dof] = static_cast<int>(out.size()), out.push_back(q);
-        else out[entry[dof]] = q;
+        if (entry[dof] < 0)
+          entry[dof] = static_cast<int>(out.size()), out.push_back(q);
+        else
+          out[entry[dof]] = q;
       }
   }
   return out;
@@ -45,7 +49,8 @@ std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& 
 namespace {
 // Each constrained dof's kind and time function (DofMap::set_motion), from the condition
 // that sets it: its `time`, copied once per condition that has one.
-PrescribedMotion prescribed_motion(const Scene& scene, const std::vector<int>& constrained, const std::vector<int>& condition,
+PrescribedMotion prescribed_motion(const Scene& scene, const std::vector<int>& constrained,
+                                   const std::vector<int>& condition,
                                    const std::vector<BoundaryCondition::Kind>& kind) {
   using K = BoundaryCondition::Kind;
   PrescribedMotion m;
@@ -117,7 +122,9 @@ std::string missing_constraints(const Particles& p, const std::vector<int>& dofs
   std::string missing;
   const char* axes = "xyz";
   for (int c = 0; c < d; ++c)
-    if (coords[c].empty()) missing += fmt::format("no particle has its {} displacement prescribed (rigid translation in {}); ", axes[c], axes[c]);
+    if (coords[c].empty())
+      missing += fmt::format("no particle has its {} displacement prescribed (rigid translation in {}); ",
+                             axes[c], axes[c]);
   auto spread = [](const std::vector<double>& v) {
     if (v.empty()) return 0.0;
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
@@ -129,8 +136,10 @@ std::string missing_constraints(const Particles& p, const std::vector<int>& dofs
     bool blocked = false;
     for (int dof : dofs)
       for (int other : dofs)
-        if (dof % 2 == 0 && other % 2 == 0 && p.x[(dof / 2) * 2 + 1] != p.x[(other / 2) * 2 + 1]) blocked = true;
-    if (!blocked && coords[0].size() + coords[1].size() < 3) missing += "the constraints leave the rigid rotation free; ";
+        if (dof % 2 == 0 && other % 2 == 0 && p.x[(dof / 2) * 2 + 1] != p.x[(other / 2) * 2 + 1])
+          blocked = true;
+    if (!blocked && coords[0].size() + coords[1].size() < 3)
+      missing += "the constraints leave the rigid rotation free; ";
   }
   return missing;
 }
@@ -166,13 +175,16 @@ std::string unheld_message(const Particles& particles, const Bonds& bonds, const
     const std::string missing = missing_constraints(particles, cluster_dofs[r]);
     if (missing.empty()) continue;
     std::string list;
-    for (std::size_t i = 0; i < std::min<std::size_t>(members.size(), 8); ++i) list += (i ? ", " : "") + std::to_string(members[i]);
+    for (std::size_t i = 0; i < std::min<std::size_t>(members.size(), 8); ++i)
+      list += (i ? ", " : "") + std::to_string(members[i]);
     const double* x = particles.position(members[0]);
     const std::string what = clusters.size() == 1
                                  ? std::string("the body is under-constrained: ")
-                                 : fmt::format("a cluster of {} particle(s) joined by intact bonds (particles {}{}; the first at ({:.6g}, {:.6g})) "
-                                               "is disconnected from the rest of the body and under-constrained: ",
-                                               members.size(), list, members.size() > 8 ? ", ..." : "", x[0], x[1]);
+                                 : fmt::format(
+                                       "a cluster of {} particle(s) joined by intact bonds (particles {}{}; "
+                                       "the first at ({:.6g}, {:.6g})) "
+                                       "is disconnected from the rest of the body and under-constrained: ",
+                                       members.size(), list, members.size() > 8 ? ", ..." : "", x[0], x[1]);
     return what + missing.substr(0, missing.size() - 2);
   }
   return {};
@@ -183,15 +195,17 @@ void check_held(const Particles& particles, const Bonds& bonds, const DofMap& do
   if (const std::string m = unheld_message(particles, bonds, dofs); !m.empty()) throw std::runtime_error(m);
 }
 
-void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds, const DofMap& dofs) {
+void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds,
+                            const DofMap& dofs) {
   const std::string m = unheld_message(particles, bonds, dofs);
   if (m.empty()) return;
   // Without constraints even a load-free body has no unique static solution (any rigid
   // motion is one): refuse rather than report u = 0.
   if (scene.boundary.empty())
-    throw SceneError(scene.file + ": boundary: the scene has no boundary section, so nothing holds the body (" + m +
-                     "); a static solve needs fixed or prescribed displacements that remove its rigid motions "
-                     "(a body in free flight needs a dynamics section)");
+    throw SceneError(
+        scene.file + ": boundary: the scene has no boundary section, so nothing holds the body (" + m +
+        "); a static solve needs fixed or prescribed displacements that remove its rigid motions "
+        "(a body in free flight needs a dynamics section)");
   throw SceneError(scene.file + ": boundary: " + m);
 }
 

@@ -4,9 +4,9 @@
 
 #include <vector>
 
+#include "constraints/dof_map.hpp"
 #include "input/scene.hpp"
 #include "particles.hpp"
-#include "constraints/dof_map.hpp"
 
 namespace pd {
 
@@ -25,7 +25,8 @@ struct PrescribedDof {
 std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& particles);
 
 // The constrained dofs (fixed, prescribed and analytic-field conditions) with their
-// values at full load, as the static solver's DofMap. Throws SceneError naming the condition whose region is empty.
+// values at full load, as the static solver's DofMap. Throws SceneError naming the condition whose region is
+// empty.
 DofMap scene_constraints(const Scene& scene, const Particles& particles);
 
 // Throws std::runtime_error naming the particles of a cluster (or the whole body) whose
@@ -34,6 +35,7 @@ DofMap scene_constraints(const Scene& scene, const Particles& particles);
 void check_held(const Particles& particles, const Bonds& bonds, const DofMap& dofs);
 // The same before a static solve, where a body the scene leaves free is bad input: throws
 // SceneError (exit 2), naming the missing `boundary` section when the scene has none.
-void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds, const DofMap& dofs);
+void check_scene_holds_body(const Scene& scene, const Particles& particles, const Bonds& bonds,
+                            const DofMap& dofs);
 
 }  // namespace pd

@@ -9,7 +9,8 @@
 namespace pd {
 
 DofMap::DofMap(std::span<const char> constrained, std::span<const double> prescribed) {
-  if (prescribed.size() != constrained.size()) throw std::invalid_argument("DofMap: flags and values differ in size");
+  if (prescribed.size() != constrained.size())
+    throw std::invalid_argument("DofMap: flags and values differ in size");
   free_index_.assign(constrained.size(), -1);
   for (std::size_t i = 0; i < constrained.size(); ++i) {
     if (constrained[i]) {
@@ -41,17 +42,21 @@ void DofMap::tie(std::vector<TiedDof> ties) {
   std::vector<char> tied(static_cast<std::size_t>(n), 0);
   for (const TiedDof& t : ties_) tied[t.dof] = 1;
   for (const TiedDof& t : ties) {
-    if (t.dof < 0 || t.dof >= n) throw std::out_of_range("DofMap::tie: dof " + std::to_string(t.dof) + " out of range");
+    if (t.dof < 0 || t.dof >= n)
+      throw std::out_of_range("DofMap::tie: dof " + std::to_string(t.dof) + " out of range");
     if (tied[t.dof]) throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) + " tied twice");
     if (free_index_[t.dof] < 0)
-      throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) + " is constrained; it cannot also be tied");
+      throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) +
+                                  " is constrained; it cannot also be tied");
     if (t.masters.size() != t.coefficients.size())
-      throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) + ": masters and coefficients differ in size");
+      throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) +
+                                  ": masters and coefficients differ in size");
     tied[t.dof] = 1;
   }
   for (const TiedDof& t : ties)
     for (int m : t.masters) {
-      if (m < 0 || m >= n) throw std::out_of_range("DofMap::tie: master " + std::to_string(m) + " out of range");
+      if (m < 0 || m >= n)
+        throw std::out_of_range("DofMap::tie: master " + std::to_string(m) + " out of range");
       if (tied[m])
         throw std::invalid_argument("DofMap::tie: dof " + std::to_string(t.dof) + " is tied to dof " +
                                     std::to_string(m) + ", which is itself tied");
@@ -94,12 +99,14 @@ void DofMap::apply_ties(double* full, double factor) const {
 }
 
 void DofMap::apply_prescribed(Eigen::VectorXd& full, double factor) const {
-  for (int i = 0; i < constrained_count(); ++i) full[constrained_[i]] = path_ ? path_(factor, i) : factor * prescribed_[i];
+  for (int i = 0; i < constrained_count(); ++i)
+    full[constrained_[i]] = path_ ? path_(factor, i) : factor * prescribed_[i];
   apply_ties(full.data(), factor);
 }
 
 ReducedSystem::ReducedSystem(const DofMap& dofs, const SparseMatrix& K) : dofs_(&dofs) {
-  if (K.rows() != dofs.size() || K.cols() != dofs.size()) throw std::invalid_argument("ReducedSystem: size mismatch");
+  if (K.rows() != dofs.size() || K.cols() != dofs.size())
+    throw std::invalid_argument("ReducedSystem: size mismatch");
   std::vector<int> cindex(static_cast<std::size_t>(dofs.size()), -1);
   for (int i = 0; i < dofs.constrained_count(); ++i) cindex[dofs.constrained_dofs()[i]] = i;
   // Both blocks keep K's column-major order: column by column, rows ascending.
@@ -133,7 +140,8 @@ ReducedSystem::ReducedSystem(const DofMap& dofs, const SparseMatrix& K) : dofs_(
   weighted_ = true;
   std::vector<std::vector<std::pair<int, double>>> dependents(static_cast<std::size_t>(dofs.size()));
   for (const TiedDof& t : dofs.ties())
-    for (std::size_t k = 0; k < t.masters.size(); ++k) dependents[t.masters[k]].emplace_back(t.dof, t.coefficients[k]);
+    for (std::size_t k = 0; k < t.masters.size(); ++k)
+      dependents[t.masters[k]].emplace_back(t.dof, t.coefficients[k]);
   auto build_weighted = [&](SparseMatrix& out, WeightedPlan& plan, bool constrained_cols) {
     const int ncols = constrained_cols ? dofs.constrained_count() : dofs.free_count();
     out.resize(dofs.free_count(), ncols);
@@ -178,7 +186,8 @@ void ReducedSystem::update(const SparseMatrix& K) {
       double* o = out.valuePtr();
       for (std::size_t e = 0; e + 1 < plan.start.size(); ++e) {
         double sum = 0;
-        for (int t = plan.start[e]; t < plan.start[e + 1]; ++t) sum += plan.coefficient[t] * v[plan.source[t]];
+        for (int t = plan.start[e]; t < plan.start[e + 1]; ++t)
+          sum += plan.coefficient[t] * v[plan.source[t]];
         o[e] = sum;
       }
     };

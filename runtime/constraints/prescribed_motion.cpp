@@ -1,13 +1,14 @@
 // DofMap::apply_motion: the constrained dofs' displacement and velocity at time t.
-#include "constraints/dof_map.hpp"
-
 #include <stdexcept>
+
+#include "constraints/dof_map.hpp"
 
 namespace pd {
 
 void DofMap::apply_motion(double t, std::vector<double>& u, std::vector<double>& v) const {
   using K = PrescribedMotion::Kind;
-  if (motion_.kind.size() != constrained_.size()) throw std::logic_error("DofMap::apply_motion: no prescribed motion set");
+  if (motion_.kind.size() != constrained_.size())
+    throw std::logic_error("DofMap::apply_motion: no prescribed motion set");
   for (std::size_t i = 0; i < constrained_.size(); ++i) {
     const int f = motion_.function[i];
     const TimeFunction* tf = f < 0 ? nullptr : &motion_.functions[static_cast<std::size_t>(f)];
@@ -29,7 +30,8 @@ void DofMap::apply_motion(double t, std::vector<double>& u, std::vector<double>&
   for (const TiedDof& tie : ties_) {
     if (v.empty()) break;
     double rate = 0;
-    for (std::size_t k = 0; k < tie.masters.size(); ++k) rate += tie.coefficients[k] * v[static_cast<std::size_t>(tie.masters[k])];
+    for (std::size_t k = 0; k < tie.masters.size(); ++k)
+      rate += tie.coefficients[k] * v[static_cast<std::size_t>(tie.masters[k])];
     v[static_cast<std::size_t>(tie.dof)] = rate;
   }
 }

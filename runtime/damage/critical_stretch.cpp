@@ -1,12 +1,12 @@
 // Critical-stretch bond breaking and damage per particle.
 #include "damage/critical_stretch.hpp"
 
-#include "damage/bond_fracture_energy.hpp"
-
 #include <fmt/core.h>
 
 #include <cmath>
 #include <numbers>
+
+#include "damage/bond_fracture_energy.hpp"
 
 namespace pd {
 
@@ -15,9 +15,11 @@ double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, in
                         double (*weight)(double r, double delta)) {
   if (spec.critical_stretch > 0) return spec.critical_stretch;
   if (is_pairwise_law(law) && law.intact.energy != nullptr)
-    return std::sqrt(spec.fracture_energy / pairwise_fracture_energy_per_stretch2(law, params, weight, delta));
-  const IsotropicElastic e =
-      dim == 2 && material.plane == PlaneAssumption::Stress ? material.elastic.plane_stress_equivalent() : material.elastic;
+    return std::sqrt(spec.fracture_energy /
+                     pairwise_fracture_energy_per_stretch2(law, params, weight, delta));
+  const IsotropicElastic e = dim == 2 && material.plane == PlaneAssumption::Stress
+                                 ? material.elastic.plane_stress_equivalent()
+                                 : material.elastic;
   if (dim == 2) {
     const double kappa = e.lambda + e.G;  // the plane-strain 2D bulk modulus
     return std::sqrt(std::numbers::pi * spec.fracture_energy / (3 * kappa * delta));
@@ -28,18 +30,22 @@ double critical_stretch(const DamageSpec& spec, const MaterialSpec& material, in
 std::string critical_stretch_origin(const DamageSpec& spec, int dim, const abi::LawDescriptor& law) {
   if (spec.fracture_energy <= 0) return "";
   if (is_pairwise_law(law) && law.intact.energy != nullptr)
-    return fmt::format(" (from G0 = {:.6g}, the bond sum of law {}'s micromodulus)", spec.fracture_energy, law.name);
-  return fmt::format(" (from G0 = {:.6g}, PMB {}D formula: an approximation for a state-based law)", spec.fracture_energy, dim);
+    return fmt::format(" (from G0 = {:.6g}, the bond sum of law {}'s micromodulus)", spec.fracture_energy,
+                       law.name);
+  return fmt::format(" (from G0 = {:.6g}, PMB {}D formula: an approximation for a state-based law)",
+                     spec.fracture_energy, dim);
 }
 
-CriticalStretchDamage::CriticalStretchDamage(const Particles& particles, Bonds& bonds, double s0, bool tension_only)
+CriticalStretchDamage::CriticalStretchDamage(const Particles& particles, Bonds& bonds, double s0,
+                                             bool tension_only)
     : p_(particles), b_(bonds), s0_(s0), tension_only_(tension_only) {}
 
 namespace {
 // Breaks bond entry e of family a when over the limit; true when it broke. Y = (x_b +
 // u_b) - (x_a + u_a): the two families subtract the same two numbers, so their |Y|
 // agree bit for bit and both copies of a bond break together, whichever process holds them.
-inline bool break_if_over(const Particles& p, Bonds& bonds, const double* u, double s0, bool tension_only, int a, int e) {
+inline bool break_if_over(const Particles& p, Bonds& bonds, const double* u, double s0, bool tension_only,
+                          int a, int e) {
   if (bonds.alpha[e] == 0.0) return false;
   const int d = p.dim, b = bonds.neighbor[e];
   double l2 = 0;
@@ -68,7 +74,8 @@ int CriticalStretchDamage::break_bonds(const double* u) {
 int CriticalStretchDamage::break_family_bonds(const double* u, const std::vector<int>& families) {
   int broken = 0;
   for (int a : families)
-    for (int e = b_.offsets[a]; e < b_.offsets[a + 1]; ++e) broken += break_if_over(p_, b_, u, s0_, tension_only_, a, e) ? 1 : 0;
+    for (int e = b_.offsets[a]; e < b_.offsets[a + 1]; ++e)
+      broken += break_if_over(p_, b_, u, s0_, tension_only_, a, e) ? 1 : 0;
   return broken;
 }
 

@@ -18,9 +18,9 @@ constexpr double kAiTol = 1e-4;
 constexpr double kAiEps = 1e-4;
 
 struct AiResult {
-  double volume = 0;   // cell volume inside the sphere
-  long points = 0;     // integration points of the last (accepted) refinement
-  int index = 0;       // trapezoidal index n of that refinement (M = 2^(n-1) subintervals)
+  double volume = 0;  // cell volume inside the sphere
+  long points = 0;    // integration points of the last (accepted) refinement
+  int index = 0;      // trapezoidal index n of that refinement (M = 2^(n-1) subintervals)
 };
 
 // Cell of side h centred at c (3 coordinates, relative to the source) against the sphere

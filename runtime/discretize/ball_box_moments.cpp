@@ -2,7 +2,6 @@
 #include "discretize/ball_box_moments.hpp"
 
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -41,7 +40,8 @@ bool ball_inside_box(double delta, const double* c, const Box2& box) {
 
 double ball_box_moment_2d(const BondMonomial& f, double delta, const double* c, const Box2& box) {
   const int p = f.degree() - f.inverse_r_power + 2;
-  if (p <= 0) throw std::invalid_argument("ball_box_moment_2d: the integrand is not integrable at the origin");
+  if (p <= 0)
+    throw std::invalid_argument("ball_box_moment_2d: the integrand is not integrable at the origin");
   // Faces as (outward normal, distance from the centre).
   const double normal[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
   const double dist[4] = {c[0] - box.lo[0], box.hi[0] - c[0], c[1] - box.lo[1], box.hi[1] - c[1]};
@@ -82,9 +82,11 @@ double ball_box_moment_2d(const BondMonomial& f, double delta, const double* c, 
   return sum;
 }
 
-double ball_disk_shadow_moment_2d(const BondMonomial& f, double delta, const double* c, const double* disk, double a) {
+double ball_disk_shadow_moment_2d(const BondMonomial& f, double delta, const double* c, const double* disk,
+                                  double a) {
   const int p = f.degree() - f.inverse_r_power + 2;
-  if (p <= 0) throw std::invalid_argument("ball_disk_shadow_moment_2d: the integrand is not integrable at the origin");
+  if (p <= 0)
+    throw std::invalid_argument("ball_disk_shadow_moment_2d: the integrand is not integrable at the origin");
   const double g[2] = {disk[0] - c[0], disk[1] - c[1]}, dist = std::hypot(g[0], g[1]);
   if (!(dist > a)) throw std::invalid_argument("ball_disk_shadow_moment_2d: the centre lies inside the disk");
   // R(t): delta, or the distance to the first crossing of the circle along n(t) when the

@@ -32,6 +32,7 @@ bool ball_inside_box(double delta, const double* center, const Box2& box);
 // the distance to the circle where the ray meets it; Gauss-Legendre on the arcs between
 // the tangent directions and the circle's crossings of the horizon, in a variable that
 // smooths R's square-root edge at a tangent.
-double ball_disk_shadow_moment_2d(const BondMonomial& f, double delta, const double* center, const double* disk, double a);
+double ball_disk_shadow_moment_2d(const BondMonomial& f, double delta, const double* center,
+                                  const double* disk, double a);
 
 }  // namespace pd

@@ -31,9 +31,9 @@ double sphere_monomial_integral(int dim, const std::array<int, 3>& powers) {
 double ball_moment(int dim, const BondMonomial& f, double delta) {
   const int p = f.degree() - f.inverse_r_power + dim;
   if (p <= 0)
-    throw std::invalid_argument("ball_moment: xi^b/|xi|^" + std::to_string(f.inverse_r_power) + " with |b| = " +
-                                std::to_string(f.degree()) + " is not integrable at the origin in " +
-                                std::to_string(dim) + "D");
+    throw std::invalid_argument("ball_moment: xi^b/|xi|^" + std::to_string(f.inverse_r_power) +
+                                " with |b| = " + std::to_string(f.degree()) +
+                                " is not integrable at the origin in " + std::to_string(dim) + "D");
   const double angular = sphere_monomial_integral(dim, f.powers);
   return angular == 0.0 ? 0.0 : angular * std::pow(delta, p) / p;
 }

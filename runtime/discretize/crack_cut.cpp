@@ -74,7 +74,8 @@ int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds
   return cut_bonds(cracks, p, bonds, nullptr);
 }
 
-int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack) {
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds,
+              std::vector<int>* crossed_per_crack) {
   if (crossed_per_crack) crossed_per_crack->assign(cracks.size(), 0);
   int broken = 0;
   const int d = p.dim;

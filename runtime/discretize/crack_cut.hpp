@@ -24,6 +24,7 @@ bool crack_crosses(const Crack& crack, const double* xa, const double* xb, int d
 int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds);
 // The same, also counting per crack the bond directions it crosses (cut by it or already
 // cut by an earlier crack): a crack that crosses none has no effect.
-int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds, std::vector<int>* crossed_per_crack);
+int cut_bonds(const std::vector<Crack>& cracks, const Particles& p, Bonds& bonds,
+              std::vector<int>* crossed_per_crack);
 
 }  // namespace pd

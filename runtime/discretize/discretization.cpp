@@ -1,14 +1,14 @@
 // Lattice discretisation, cell-list neighbour search (crack cutting: crack_cut.cpp).
 #include "discretize/discretization.hpp"
-#include "discretize/lattice_blocks.hpp"
-
-#include "input/yaml_keys.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+
+#include "discretize/lattice_blocks.hpp"
+#include "input/yaml_keys.hpp"
 
 namespace pd {
 
@@ -44,7 +44,8 @@ Particles discretize(const Scene& s) {
         p.volume.push_back(volume);
         p.material.push_back(material);
       }
-  if (p.size() == 0) throw SceneError(s.file + ": domain: the domain holds no particle (do the holes cover it?)");
+  if (p.size() == 0)
+    throw SceneError(s.file + ": domain: the domain holds no particle (do the holes cover it?)");
   return p;
 }
 
@@ -54,12 +55,14 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
   // h/2 for nodes (rows at 0, h). A perturbed row (amplitude < h/2) then stays whole,
   // and no unperturbed row sits on the boundary where rounding would decide.
   Region r = region;
-  if (r.kind == Region::Kind::Side && r.thickness <= 0) r.thickness = scene.placement == "node" ? 0.5 * scene.h : scene.h;
+  if (r.kind == Region::Kind::Side && r.thickness <= 0)
+    r.thickness = scene.placement == "node" ? 0.5 * scene.h : scene.h;
   // A collar particle at depth d lacks the lattice site beyond the face, at distance d + s
   // (s = h/2 for cell centres, h for nodes), when d + s <= k delta. The tolerance puts a
   // site exactly k delta away (half-integer delta/h) inside the family, as find_bonds does.
   if (r.kind == Region::Kind::Collar)
-    r.thickness = r.horizons * scene.delta() - (scene.placement == "node" ? scene.h : 0.5 * scene.h) + 1e-6 * scene.h;
+    r.thickness =
+        r.horizons * scene.delta() - (scene.placement == "node" ? scene.h : 0.5 * scene.h) + 1e-6 * scene.h;
   std::vector<int> out;
   for (int i = 0; i < p.size(); ++i)
     if (r.contains(p.position(i), p.dim, scene.lo, scene.hi, scene.h)) out.push_back(i);
@@ -76,7 +79,8 @@ constexpr double negligible_weight_fraction = 1e-12;
 
 Bonds find_bonds(const Particles& p, double delta, double (*influence)(double, double)) {
   // One horizon for all: the per-particle search scans the 3^d surrounding cells.
-  return find_bonds_per_particle(p, std::vector<double>(static_cast<std::size_t>(p.size()), delta), influence);
+  return find_bonds_per_particle(p, std::vector<double>(static_cast<std::size_t>(p.size()), delta),
+                                 influence);
 }
 
 int drop_negligible_bonds(Bonds& b) {
@@ -92,9 +96,11 @@ int drop_negligible_bonds(Bonds& b) {
         ++dropped;
         continue;
       }
-      b.neighbor[kept] = b.neighbor[k], b.length[kept] = b.length[k], b.w[kept] = b.w[k], b.alpha[kept] = b.alpha[k];
+      b.neighbor[kept] = b.neighbor[k], b.length[kept] = b.length[k], b.w[kept] = b.w[k],
+      b.alpha[kept] = b.alpha[k];
       if (!b.volume_factor.empty()) b.volume_factor[kept] = b.volume_factor[k];
-      for (int c = 0; c < d; ++c) b.xi[static_cast<std::size_t>(kept) * d + c] = b.xi[static_cast<std::size_t>(k) * d + c];
+      for (int c = 0; c < d; ++c)
+        b.xi[static_cast<std::size_t>(kept) * d + c] = b.xi[static_cast<std::size_t>(k) * d + c];
       ++kept;
     }
   }
@@ -114,7 +120,8 @@ double mean_short_family_size(const Bonds& b, double short_delta, double (*influ
     if (b.length[k] <= reach) largest = std::max(largest, influence(b.length[k], short_delta));
   long long count = 0;
   for (int k = 0; k < b.bond_count(); ++k)
-    count += b.length[k] <= reach && influence(b.length[k], short_delta) > negligible_weight_fraction * largest;
+    count +=
+        b.length[k] <= reach && influence(b.length[k], short_delta) > negligible_weight_fraction * largest;
   return static_cast<double>(count) / n;
 }
 

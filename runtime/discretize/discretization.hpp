@@ -36,6 +36,7 @@ int drop_negligible_bonds(Bonds& bonds);
 // drop_negligible_bonds would give, counted on existing bonds of a horizon >= short_delta
 // (without building the short families): what the solver-path rule estimates the
 // short-horizon preconditioner from.
-double mean_short_family_size(const Bonds& bonds, double short_delta, double (*influence)(double r, double delta));
+double mean_short_family_size(const Bonds& bonds, double short_delta,
+                              double (*influence)(double r, double delta));
 
 }  // namespace pd

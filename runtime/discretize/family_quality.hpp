@@ -31,7 +31,8 @@ struct FamilyQualityReport {
 
 // Throws std::runtime_error naming the influence function, delta/h and the particles
 // (index, position, intact bonds) whose families fail a limit; returns the worst values.
-FamilyQualityReport check_family_quality(const Particles& particles, const Bonds& bonds, double (*influence)(double, double),
+FamilyQualityReport check_family_quality(const Particles& particles, const Bonds& bonds,
+                                         double (*influence)(double, double),
                                          const std::string& influence_name, double h,
                                          const FamilyQualityLimits& limits = {});
 

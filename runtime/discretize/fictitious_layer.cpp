@@ -20,7 +20,8 @@ class PointLocator {
   explicit PointLocator(const Particles& p) : p_(p) {
     cell_ = std::numeric_limits<double>::max();
     for (double v : p.volume) cell_ = std::min(cell_, std::pow(v, 1.0 / p.dim));
-    if (!(cell_ > 0) || !std::isfinite(cell_)) throw std::invalid_argument("fictitious layer: particles without volume");
+    if (!(cell_ > 0) || !std::isfinite(cell_))
+      throw std::invalid_argument("fictitious layer: particles without volume");
     for (int i = 0; i < p.size(); ++i) cells_[key(p.position(i), 0, 0, 0)].push_back(i);
   }
   int find(const double* x) const {
@@ -54,7 +55,8 @@ class PointLocator {
 
 std::string where(const Particles& p, int i) {
   const double* x = p.position(i);
-  return p.dim == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", x[0], x[1], x[2]) : fmt::format("({:.6g}, {:.6g})", x[0], x[1]);
+  return p.dim == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", x[0], x[1], x[2])
+                    : fmt::format("({:.6g}, {:.6g})", x[0], x[1]);
 }
 
 // Adds coefficient * u[particle][component] to a tie (merging a repeated master).
@@ -77,9 +79,11 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
   const auto& n = c.face.normal;
   double nn = 0;
   for (int k = 0; k < d; ++k) nn += n[k] * n[k];
-  if (std::abs(nn - 1) > 1e-12) throw std::invalid_argument("fictitious layer: the face normal must be a unit vector");
+  if (std::abs(nn - 1) > 1e-12)
+    throw std::invalid_argument("fictitious layer: the face normal must be a unit vector");
   if (c.kind == LayerCondition::Kind::traction && d != 2)
-    throw std::invalid_argument("fictitious layer: the traction variant (paper 003 eqs. 32-35) is two-dimensional");
+    throw std::invalid_argument(
+        "fictitious layer: the traction variant (paper 003 eqs. 32-35) is two-dimensional");
   if (c.kind == LayerCondition::Kind::traction && !(c.M > 0 && c.mu > 0))
     throw std::invalid_argument("fictitious layer: the traction variant needs positive elastic constants");
   const PointLocator locate(particles);
@@ -90,8 +94,10 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
     double s = 0;  // signed distance from the face, positive in the layer
     for (int k = 0; k < d; ++k) s += (xf[k] - c.face.point[k]) * n[k];
     if (!(s > 0))
-      throw std::invalid_argument(fmt::format("fictitious layer: the particle at {} is not outside the face (distance {:.3g} "
-                                              "along the normal)", where(particles, f), s));
+      throw std::invalid_argument(
+          fmt::format("fictitious layer: the particle at {} is not outside the face (distance {:.3g} "
+                      "along the normal)",
+                      where(particles, f), s));
     std::array<double, 3> xm{}, xs{};
     for (int k = 0; k < d; ++k) {
       xm[k] = xf[k] - 2 * s * n[k];
@@ -99,11 +105,13 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
     }
     const int m = locate.find(xm.data());
     if (m < 0 || !target[m])
-      throw std::invalid_argument(fmt::format(
-          "fictitious layer: the particle at {} has no particle outside its layer at its mirror image {}: the lattice must be "
-          "symmetric about the face and the body at least as deep as the layer",
-          where(particles, f), d == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", xm[0], xm[1], xm[2])
-                                      : fmt::format("({:.6g}, {:.6g})", xm[0], xm[1])));
+      throw std::invalid_argument(
+          fmt::format("fictitious layer: the particle at {} has no particle outside its layer at its mirror "
+                      "image {}: the lattice must be "
+                      "symmetric about the face and the body at least as deep as the layer",
+                      where(particles, f),
+                      d == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", xm[0], xm[1], xm[2])
+                             : fmt::format("({:.6g}, {:.6g})", xm[0], xm[1])));
     if (c.kind == LayerCondition::Kind::displacement) {
       const std::array<double, 3> U = c.value ? c.value(xs.data()) : std::array<double, 3>{};
       for (int k = 0; k < d; ++k) {
@@ -130,9 +138,10 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
     if (minus >= 0 && !target[minus]) minus = -1;
     double span = 2 * h;
     if (plus < 0 && minus < 0)
-      throw std::invalid_argument(fmt::format("fictitious layer: the mirror image {} of the particle at {} has no body "
-                                              "neighbour along the face (spacing {:.3g}) to take the tangential derivative from",
-                                              where(particles, m), where(particles, f), h));
+      throw std::invalid_argument(
+          fmt::format("fictitious layer: the mirror image {} of the particle at {} has no body "
+                      "neighbour along the face (spacing {:.3g}) to take the tangential derivative from",
+                      where(particles, m), where(particles, f), h));
     if (plus < 0) plus = m, span = h;
     if (minus < 0) minus = m, span = h;
     const double dist = 2 * s;  // (x_f - x) . n
@@ -171,7 +180,8 @@ void compose_ties(std::vector<TiedDof>& ties, int n_dofs) {
         changed = true;
         const TiedDof& sub = ties[static_cast<std::size_t>(j)];
         out.offset += t.coefficients[k] * sub.offset;
-        for (std::size_t q = 0; q < sub.masters.size(); ++q) add_term(out, sub.masters[q], t.coefficients[k] * sub.coefficients[q]);
+        for (std::size_t q = 0; q < sub.masters.size(); ++q)
+          add_term(out, sub.masters[q], t.coefficients[k] * sub.coefficients[q]);
       }
       t = std::move(out);
     }

@@ -3,7 +3,8 @@
 // that a boundary particle's family is full and the condition is carried by the layer's
 // displacements rather than by holding the body's own particles. The layer's particles
 // are given (a scene region outside the body); this file builds the linear map from the
-// body's displacements to theirs as multipoint constraints (TiedDof) for the DofMap (constraints/dof_map.hpp).
+// body's displacements to theirs as multipoint constraints (TiedDof) for the DofMap
+// (constraints/dof_map.hpp).
 #pragma once
 
 #include <array>
@@ -11,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "particles.hpp"
 #include "discretize/tied_dof.hpp"
+#include "particles.hpp"
 
 namespace pd {
 

@@ -13,13 +13,18 @@ namespace pd {
 
 void gauss_legendre(int n, double* zeta, double* weight) {
   switch (n) {
-    case 1: zeta[0] = 0.0, weight[0] = 2.0; return;
-    case 2: zeta[0] = -1.0 / std::sqrt(3.0), zeta[1] = -zeta[0], weight[0] = weight[1] = 1.0; return;
+    case 1:
+      zeta[0] = 0.0, weight[0] = 2.0;
+      return;
+    case 2:
+      zeta[0] = -1.0 / std::sqrt(3.0), zeta[1] = -zeta[0], weight[0] = weight[1] = 1.0;
+      return;
     case 3:
       zeta[0] = -std::sqrt(0.6), zeta[1] = 0.0, zeta[2] = std::sqrt(0.6);
       weight[0] = weight[2] = 5.0 / 9.0, weight[1] = 8.0 / 9.0;
       return;
-    default: throw std::invalid_argument(fmt::format("Gauss points: {} per axis (1, 2 or 3)", n));
+    default:
+      throw std::invalid_argument(fmt::format("Gauss points: {} per axis (1, 2 or 3)", n));
   }
 }
 
@@ -63,12 +68,14 @@ CellRule cell_rule(int dim, int n, double h) {
 }  // namespace
 
 std::string GaussPoints::describe() const {
-  return fmt::format("gauss points: {}^{} per cell (paper 002 §3.3), {} points, {} Gauss bonds, MLS support {:.4g} "
-                     "({:.1f} nodes per point, largest condition number {:.3g})",
-                     per_axis, dim, points(), bond_count(), support, mean_support_size(), max_condition);
+  return fmt::format(
+      "gauss points: {}^{} per cell (paper 002 §3.3), {} points, {} Gauss bonds, MLS support {:.4g} "
+      "({:.1f} nodes per point, largest condition number {:.3g})",
+      per_axis, dim, points(), bond_count(), support, mean_support_size(), max_condition);
 }
 
-GaussPoints build_gauss_points(const Particles& P, double h, double delta, double (*influence)(double r, double delta),
+GaussPoints build_gauss_points(const Particles& P, double h, double delta,
+                               double (*influence)(double r, double delta),
                                const GaussPointOptions& options) {
   if (!(options.support > 0.0)) throw std::invalid_argument("Gauss points: the MLS support must be positive");
   const int d = P.dim, n = P.size();
@@ -92,7 +99,8 @@ GaussPoints build_gauss_points(const Particles& P, double h, double delta, doubl
   // largest offset of x_j. One point per axis: the point is the node, u_g = u_j.
   gp.phi_start.assign(1, 0);
   if (options.per_axis == 1) {
-    for (int g = 0; g < G; ++g) gp.phi_node.push_back(gp.cell[g]), gp.phi.push_back(1.0), gp.phi_start.push_back(g + 1);
+    for (int g = 0; g < G; ++g)
+      gp.phi_node.push_back(gp.cell[g]), gp.phi.push_back(1.0), gp.phi_start.push_back(g + 1);
     gp.max_condition = 1.0;
   } else {
     const Bonds near = find_bonds(P, gp.support + rule.max_offset, influence);
@@ -101,9 +109,9 @@ GaussPoints build_gauss_points(const Particles& P, double h, double delta, doubl
       const int j = gp.cell[g];
       candidates.assign(1, j);
       for (int b = near.offsets[j]; b < near.offsets[j + 1]; ++b) candidates.push_back(near.neighbor[b]);
-      const MlsShape s = mls_shape_functions(gp.x.data() + static_cast<std::ptrdiff_t>(g) * d, d, P.x, candidates,
-                                             gp.support, fmt::format("Gauss point {} (cell of particle {})", g, j),
-                                             options.max_condition);
+      const MlsShape s = mls_shape_functions(
+          gp.x.data() + static_cast<std::ptrdiff_t>(g) * d, d, P.x, candidates, gp.support,
+          fmt::format("Gauss point {} (cell of particle {})", g, j), options.max_condition);
       gp.phi_node.insert(gp.phi_node.end(), s.node.begin(), s.node.end());
       gp.phi.insert(gp.phi.end(), s.phi.begin(), s.phi.end());
       gp.phi_start.push_back(static_cast<int>(gp.phi_node.size()));
@@ -135,7 +143,8 @@ GaussPoints build_gauss_points(const Particles& P, double h, double delta, doubl
     }
     gp.offsets.push_back(static_cast<int>(gp.point.size()));
     if (gp.family_size(i) == 0)
-      throw std::runtime_error(fmt::format("Gauss points: particle {} has no Gauss point within its horizon", i));
+      throw std::runtime_error(
+          fmt::format("Gauss points: particle {} has no Gauss point within its horizon", i));
   }
   return gp;
 }

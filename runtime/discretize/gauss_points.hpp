@@ -30,8 +30,8 @@
 namespace pd {
 
 struct GaussPointOptions {
-  int per_axis = 2;       // Gauss-Legendre points per axis of a cell: 1, 2 or 3
-  double support = 3.0;   // MLS support radius r_w in units of h (paper: 3)
+  int per_axis = 2;            // Gauss-Legendre points per axis of a cell: 1, 2 or 3
+  double support = 3.0;        // MLS support radius r_w in units of h (paper: 3)
   double max_condition = 1e8;  // the paper's bound on the moment matrix's condition number
 };
 
@@ -57,7 +57,9 @@ struct GaussPoints {
   int particle_count() const { return static_cast<int>(offsets.size()) - 1; }
   int family_size(int p) const { return offsets[p + 1] - offsets[p]; }
   int bond_count() const { return static_cast<int>(point.size()); }
-  double mean_support_size() const { return points() ? static_cast<double>(phi_node.size()) / points() : 0.0; }
+  double mean_support_size() const {
+    return points() ? static_cast<double>(phi_node.size()) / points() : 0.0;
+  }
   std::string describe() const;
 };
 

@@ -22,7 +22,8 @@ bool Shape::contains(const double* x, int dim) const {
       for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
         const Point& a = vertices[i];
         const Point& b = vertices[j];
-        if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+        if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
+          inside = !inside;
       }
       return inside;
     }

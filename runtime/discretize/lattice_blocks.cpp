@@ -1,20 +1,21 @@
 // Non-uniform lattices and families with a horizon per particle (lattice_blocks.hpp).
 #include "discretize/lattice_blocks.hpp"
 
-#include "discretize/partial_volume.hpp"
-
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "discretize/partial_volume.hpp"
+
 namespace pd {
 
 Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& delta,
                               double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
-  if (static_cast<int>(delta.size()) != n) throw std::invalid_argument("find_bonds_per_particle: one delta per particle");
+  if (static_cast<int>(delta.size()) != n)
+    throw std::invalid_argument("find_bonds_per_particle: one delta per particle");
   if (n == 0) return Bonds{d, {0}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   // A cell list with cells a little larger than the smallest horizon; a particle scans as
   // many cells each way as its own horizon needs (a fine particle does not scan a coarse
@@ -25,12 +26,14 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int c = 0; c < d; ++c) {
     lo[c] = hi[c] = p.x[c];
-    for (int i = 0; i < n; ++i) lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
+    for (int i = 0; i < n; ++i)
+      lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
   }
   int dims[3] = {1, 1, 1};
   for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / size) + 1);
   auto cell_of = [&](const double* x, int* ci) {
-    for (int c = 0; c < 3; ++c) ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
+    for (int c = 0; c < 3; ++c)
+      ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
   };
   const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
   std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));
@@ -68,7 +71,8 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
             const int j = cell_items[q];
             if (j == i) continue;
             double r2 = 0;
-            for (int c = 0; c < d; ++c) r2 += (p.x[j * d + c] - p.x[i * d + c]) * (p.x[j * d + c] - p.x[i * d + c]);
+            for (int c = 0; c < d; ++c)
+              r2 += (p.x[j * d + c] - p.x[i * d + c]) * (p.x[j * d + c] - p.x[i * d + c]);
             if (r2 <= reach * reach) found.push_back(j);
           }
         }
@@ -91,12 +95,14 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
   return b;
 }
 
-Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta, const std::vector<double>& spacing,
-                       Quadrature q, double (*influence)(double, double)) {
+Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta,
+                       const std::vector<double>& spacing, Quadrature q,
+                       double (*influence)(double, double)) {
   if (q == Quadrature::Volume) return find_bonds_per_particle(p, delta, influence);
   if (q != Quadrature::PartialLinear)
     throw std::invalid_argument("a body of blocks supports quadrature: volume or partial_linear");
-  if (spacing.size() != delta.size()) throw std::invalid_argument("find_block_bonds: one spacing per particle");
+  if (spacing.size() != delta.size())
+    throw std::invalid_argument("find_block_bonds: one spacing per particle");
   const int d = p.dim;
   // Search out to delta_i + h_max / 2, the farthest a cell of any block can still reach in.
   const double half = 0.5 * *std::max_element(spacing.begin(), spacing.end());

@@ -36,7 +36,8 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
 // coarse one's; as find_quadrature_bonds, w is taken at min(|xi|, delta_i) and bonds of factor 0
 // are left out. On one spacing it gives find_quadrature_bonds' families. Other quadratures
 // throw std::invalid_argument.
-Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta, const std::vector<double>& spacing,
-                       Quadrature q, double (*influence)(double r, double delta));
+Bonds find_block_bonds(const Particles& p, const std::vector<double>& delta,
+                       const std::vector<double>& spacing, Quadrature q,
+                       double (*influence)(double r, double delta));
 
 }  // namespace pd

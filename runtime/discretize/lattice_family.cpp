@@ -9,7 +9,8 @@
 namespace pd {
 
 LatticeFamily::LatticeFamily(Quadrature quadrature, double delta, double h, int dim,
-                             double (*influence)(double r, double delta), double stretch, int scratch_per_bond) {
+                             double (*influence)(double r, double delta), double stretch,
+                             int scratch_per_bond) {
   const double reach = quadrature_reach(quadrature, delta, h, dim);
   const int m = static_cast<int>(std::ceil(reach / h)) + 1;
   const double cell = std::pow(h, dim);

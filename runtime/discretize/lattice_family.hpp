@@ -16,8 +16,8 @@ struct LatticeFamily {
   std::vector<double> xi, Y, w, alpha, V, scratch;
   int n = 0;
   // Y = (1 + stretch) xi; spacing h, horizon delta, dimension dim.
-  LatticeFamily(Quadrature quadrature, double delta, double h, int dim, double (*influence)(double r, double delta),
-                double stretch, int scratch_per_bond);
+  LatticeFamily(Quadrature quadrature, double delta, double h, int dim,
+                double (*influence)(double r, double delta), double stretch, int scratch_per_bond);
   // The kernels' view of it for a center of volume V0 (no moments set).
   abi::Family family(double V0, double delta, const double* params);
 };

@@ -1,9 +1,9 @@
 // Reproducing spaces per law and influence (derivation in law_space.hpp).
 #include "discretize/law_space.hpp"
 
-#include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,7 +23,8 @@ Eigen::VectorXd fit(const std::vector<int>& powers, const Eigen::VectorXd& rho, 
 }
 }  // namespace
 
-std::vector<RadialPower> influence_power_series(double (*weight)(double r, double delta), std::string_view name) {
+std::vector<RadialPower> influence_power_series(double (*weight)(double r, double delta),
+                                                std::string_view name) {
   // Samples at Chebyshev points of [0.05, 1]; the fit is of rho^2 w, a polynomial of
   // degree <= 8 when w is a sum of rho^-2 ... rho^6, which keeps the first fit well posed.
   const int n = 40;
@@ -60,15 +61,16 @@ std::vector<RadialPower> influence_power_series(double (*weight)(double r, doubl
     if (std::isfinite(scale2)) worst = std::max(worst, std::abs(weight(x * delta2, delta2) / scale2 - s));
   }
   if (!std::isfinite(scale2) || !(worst <= 1e-11 * size))
-    throw std::invalid_argument(fmt::format(
-        "influence '{}' is not a sum of powers (r/delta)^k, {} <= k <= {} (misfit {:.3g} of {:.3g}): the law's "
-        "reproducing space needs its ball moments in closed form; use obq_space: paper001",
-        name, kLowest, kHighest, worst, size));
+    throw std::invalid_argument(
+        fmt::format("influence '{}' is not a sum of powers (r/delta)^k, {} <= k <= {} (misfit {:.3g} of "
+                    "{:.3g}): the law's "
+                    "reproducing space needs its ball moments in closed form; use obq_space: paper001",
+                    name, kLowest, kHighest, worst, size));
   return series;
 }
 
-ReproducingSpace law_reproducing_space(std::string_view law, int dim, double (*weight)(double r, double delta),
-                                       std::string_view influence) {
+ReproducingSpace law_reproducing_space(std::string_view law, int dim,
+                                       double (*weight)(double r, double delta), std::string_view influence) {
   ReproducingSpace space;
   space.dim = dim;
   auto add = [&](int lo, int hi, int inverse_r) {
@@ -106,10 +108,11 @@ ReproducingSpace law_reproducing_space(std::string_view law, int dim, double (*w
   for (const BondMonomial& f : space.terms)
     for (const auto& [c, g] : weighted_term(space, f))
       if (g.degree() - g.inverse_r_power + dim <= 0)
-        throw std::invalid_argument(fmt::format(
-            "law '{}' with influence '{}': its horizon sum of xi^b/|xi|^{} (|b| = {}) is not integrable at r = 0 "
-            "in {}D (the continuum law diverges); choose another influence",
-            law, influence, g.inverse_r_power, g.degree(), dim));
+        throw std::invalid_argument(
+            fmt::format("law '{}' with influence '{}': its horizon sum of xi^b/|xi|^{} (|b| = {}) is not "
+                        "integrable at r = 0 "
+                        "in {}D (the continuum law diverges); choose another influence",
+                        law, influence, g.inverse_r_power, g.degree(), dim));
   space.name = fmt::format("{} with {}", law, radial);
   return space;
 }

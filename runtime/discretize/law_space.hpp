@@ -44,14 +44,15 @@ namespace pd {
 // w(rho delta, delta) = C(delta) sum_k c_k rho^k for every delta, checked at delta = 1 and
 // 2.7 to 1e-11 relative (the constant C does not change OBQ weights). Throws
 // std::invalid_argument naming the influence when no such sum with -2 <= k <= 6 fits.
-std::vector<RadialPower> influence_power_series(double (*weight)(double r, double delta), std::string_view name);
+std::vector<RadialPower> influence_power_series(double (*weight)(double r, double delta),
+                                                std::string_view name);
 
 // The space of the table above for the law named `law` (its dimension from the name's
 // family: *_plane_strain, *_2d -> 2, *_3d -> 3 is the caller's `dim`) and influence
 // `weight`. Throws std::invalid_argument naming the law when no space is derived for it,
 // or when a sum is not integrable at r = 0 for this influence (the continuum law itself
 // diverges there).
-ReproducingSpace law_reproducing_space(std::string_view law, int dim, double (*weight)(double r, double delta),
-                                       std::string_view influence);
+ReproducingSpace law_reproducing_space(std::string_view law, int dim,
+                                       double (*weight)(double r, double delta), std::string_view influence);
 
 }  // namespace pd

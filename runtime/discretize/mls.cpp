@@ -59,9 +59,10 @@ MlsShape mls_shape_functions(const double* x, int dim, std::span<const double> p
   };
   const int n = static_cast<int>(inside.size());
   if (n < m)
-    throw std::runtime_error(fmt::format("MLS: {} has {} nodes within the support r_w = {:.6g}, fewer than the {} terms "
-                                         "of the quadratic basis (eq. 3.20); enlarge domain.gauss_points.support",
-                                         where(), n, support, m));
+    throw std::runtime_error(
+        fmt::format("MLS: {} has {} nodes within the support r_w = {:.6g}, fewer than the {} terms "
+                    "of the quadratic basis (eq. 3.20); enlarge domain.gauss_points.support",
+                    where(), n, support, m));
   // A = sum_a W_a p(x_a) p(x_a)^T (eq. 3.35).
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
   for (int a = 0; a < n; ++a) {
@@ -73,10 +74,11 @@ MlsShape mls_shape_functions(const double* x, int dim, std::span<const double> p
   // kappa = ||A||_inf ||A^-1||_inf (eqs. 3.39-3.40); a singular A gives Inf or NaN here.
   const double kappa = A.cwiseAbs().rowwise().sum().maxCoeff() * Ainv.cwiseAbs().rowwise().sum().maxCoeff();
   if (!(kappa <= max_condition))
-    throw std::runtime_error(fmt::format("MLS: {}: the moment matrix is ill-conditioned (row-sum condition number "
-                                         "{:.3g} > {:.3g}, eq. 3.39; {} nodes in the support r_w = {:.6g}); enlarge "
-                                         "domain.gauss_points.support",
-                                         where(), kappa, max_condition, n, support));
+    throw std::runtime_error(
+        fmt::format("MLS: {}: the moment matrix is ill-conditioned (row-sum condition number "
+                    "{:.3g} > {:.3g}, eq. 3.39; {} nodes in the support r_w = {:.6g}); enlarge "
+                    "domain.gauss_points.support",
+                    where(), kappa, max_condition, n, support));
   // A v = p(x) (eq. 3.36); x is the origin of the scaled coordinates, so p(x) = e_0.
   Eigen::VectorXd px = Eigen::VectorXd::Zero(m);
   px[0] = 1.0;

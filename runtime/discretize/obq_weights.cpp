@@ -1,9 +1,9 @@
 // Least-norm, equality-constrained quadrature weights per family (eq. 2.12 of paper 001).
 #include "discretize/obq_weights.hpp"
 
-#include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <optional>
 
@@ -34,8 +34,8 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
   });
 }
 
-std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n, double delta,
-                                            int particle, const double* center,
+std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n,
+                                            double delta, int particle, const double* center,
                                             const std::function<double(const BondMonomial&)>& unit_moment) {
   const int dim = space.dim;
   const int m = static_cast<int>(space.terms.size());
@@ -45,7 +45,8 @@ std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const
   Eigen::VectorXd b(m);
   for (int t = 0; t < m; ++t) {
     b[t] = 0;
-    for (const auto& [c, f] : weighted_term(space, space.terms[t])) b[t] += c * std::pow(delta, dim) * unit_moment(f);
+    for (const auto& [c, f] : weighted_term(space, space.terms[t]))
+      b[t] += c * std::pow(delta, dim) * unit_moment(f);
   }
   for (int j = 0; j < n; ++j) {
     double scaled[3] = {0, 0, 0};
@@ -62,9 +63,10 @@ std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const
   qr.setThreshold(kRankThreshold);
   if (n < m || qr.rank() < m)
     throw NotUnisolventError(
-        particle, fmt::format("particle {} at {}: its family of {} bonds is not unisolvent for the reproducing "
-                              "space '{}' ({} functions, rank {}); widen the horizon or perturb the points",
-                              particle, where(dim, center), n, space.name, m, n < m ? n : qr.rank()));
+        particle,
+        fmt::format("particle {} at {}: its family of {} bonds is not unisolvent for the reproducing "
+                    "space '{}' ({} functions, rank {}); widen the horizon or perturb the points",
+                    particle, where(dim, center), n, space.name, m, n < m ? n : qr.rank()));
   // A^T P = Q R, so A = P R^T Q^T; the least-norm solution of A omega = b is
   // omega = Q_m z with R^T z = P^T b.
   const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(m, m).triangularView<Eigen::Upper>();
@@ -82,7 +84,8 @@ namespace {
 // non-unisolvent particle's error is rethrown (the same at any thread count).
 CloudWeights weigh_families(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
                             const std::vector<char>& needed, bool fall_back, const Box2* body) {
-  if (space.dim != bonds.dim) throw std::invalid_argument("obq_weights: the space and the bonds differ in dimension");
+  if (space.dim != bonds.dim)
+    throw std::invalid_argument("obq_weights: the space and the bonds differ in dimension");
   if (!needed.empty() && static_cast<int>(needed.size()) != bonds.particle_count())
     throw std::invalid_argument("obq_weights: one `needed` flag per particle expected");
   CloudWeights out;
@@ -125,8 +128,8 @@ std::vector<double> obq_weights(const Particles& particles, const Bonds& bonds, 
   return weigh_families(particles, bonds, space, needed, false, nullptr).weights;
 }
 
-CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
-                                          const Box2* body) {
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds,
+                                          const ReproducingSpace& space, const Box2* body) {
   return weigh_families(particles, bonds, space, {}, true, body);
 }
 

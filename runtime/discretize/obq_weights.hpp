@@ -21,7 +21,8 @@ namespace pd {
 // a line or a conic): A has rank < m. Names the particle.
 class NotUnisolventError : public std::runtime_error {
  public:
-  NotUnisolventError(int particle, const std::string& message) : std::runtime_error(message), particle_(particle) {}
+  NotUnisolventError(int particle, const std::string& message)
+      : std::runtime_error(message), particle_(particle) {}
   int particle() const { return particle_; }
 
  private:
@@ -38,8 +39,8 @@ std::vector<double> obq_family_weights(const ReproducingSpace& space, const doub
 // The same over any region of the ball: unit_moment(f) is the integral of f over the
 // region scaled by 1/delta (the unit ball's moment for the whole ball). Used for the
 // families a hole cut (ball_disk_shadow_moment_2d), over their intact bonds.
-std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n, double delta,
-                                            int particle, const double* center,
+std::vector<double> obq_family_weights_over(const ReproducingSpace& space, const double* xi, int n,
+                                            double delta, int particle, const double* center,
                                             const std::function<double(const BondMonomial&)>& unit_moment);
 
 // The weights of every family, one per bond in the compressed rows of `bonds`. Every bond
@@ -61,7 +62,7 @@ struct CloudWeights {
   int volume_families = 0;       // families that kept the volume quadrature
   int first_volume_family = -1;  // the lowest such particle, -1 if none
 };
-CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds, const ReproducingSpace& space,
-                                          const Box2* body = nullptr);
+CloudWeights obq_weights_where_unisolvent(const Particles& particles, const Bonds& bonds,
+                                          const ReproducingSpace& space, const Box2* body = nullptr);
 
 }  // namespace pd

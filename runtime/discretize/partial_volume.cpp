@@ -42,9 +42,12 @@ double clamped_chord_integral(double a, double b, double lo, double hi, double R
     if (x1 <= x0) continue;
     const double xm = 0.5 * (x0 + x1);
     const double g = std::fabs(xm) < R ? std::sqrt(R * R - xm * xm) : 0.0;
-    if (g <= lo) sum += lo * (x1 - x0);
-    else if (g >= hi) sum += hi * (x1 - x0);
-    else sum += half_chord_integral(x1, R) - half_chord_integral(x0, R);
+    if (g <= lo)
+      sum += lo * (x1 - x0);
+    else if (g >= hi)
+      sum += hi * (x1 - x0);
+    else
+      sum += half_chord_integral(x1, R) - half_chord_integral(x0, R);
   }
   return sum;
 }
@@ -71,9 +74,12 @@ double quadrature_reach(Quadrature q, double delta, double h, int dim) {
   switch (q) {
     case Quadrature::Volume:
     case Quadrature::Obq:
-    case Quadrature::ObqCut: return delta;
-    case Quadrature::PartialLinear: return delta + 0.5 * h;
-    case Quadrature::PartialExact: return delta + 0.5 * h * std::sqrt(static_cast<double>(dim));
+    case Quadrature::ObqCut:
+      return delta;
+    case Quadrature::PartialLinear:
+      return delta + 0.5 * h;
+    case Quadrature::PartialExact:
+      return delta + 0.5 * h * std::sqrt(static_cast<double>(dim));
   }
   return delta;
 }
@@ -85,8 +91,10 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
   switch (q) {
     case Quadrature::Volume:
     case Quadrature::Obq:
-    case Quadrature::ObqCut: return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
-    case Quadrature::PartialLinear: return linear_volume_factor(r, delta, h);
+    case Quadrature::ObqCut:
+      return r <= delta * (1 + 1e-12) ? 1.0 : 0.0;
+    case Quadrature::PartialLinear:
+      return linear_volume_factor(r, delta, h);
     case Quadrature::PartialExact:
       if (cell_distance(xi, dim, h) >= delta) return 0.0;
       if (dim == 2) return cell_disc_area(xi[0], xi[1], delta, h) / (h * h);

@@ -28,7 +28,8 @@ double radial_weight(const ReproducingSpace& space, double rho) {
   return w;
 }
 
-std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space, const BondMonomial& f) {
+std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space,
+                                                           const BondMonomial& f) {
   if (space.weight.empty()) return {{1.0, f}};
   std::vector<std::pair<double, BondMonomial>> out;
   for (const RadialPower& t : space.weight)

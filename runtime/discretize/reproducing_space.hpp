@@ -31,7 +31,8 @@ double radial_weight(const ReproducingSpace& space, double rho);
 // The term w(|xi|/delta) f(xi) as a sum of monomials of the bond scaled by 1/delta:
 // c_k rho^k f(xi/delta) = c_k (xi/delta)^b / |xi/delta|^(s - k). Each pair is a
 // coefficient and a monomial; their ball moments are closed-form (ball_moments.hpp).
-std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space, const BondMonomial& f);
+std::vector<std::pair<double, BondMonomial>> weighted_term(const ReproducingSpace& space,
+                                                           const BondMonomial& f);
 
 // Every monomial xi^b with min_degree <= |b| <= max_degree, divided by |xi|^inverse_r_power.
 std::vector<BondMonomial> monomials(int dim, int min_degree, int max_degree, int inverse_r_power);

@@ -64,7 +64,8 @@ std::vector<TiedDof> scene_layer_ties(const Scene& scene, const Particles& parti
       } else if (bc.kind == K::Field) {
         auto field = std::make_shared<const AnalyticField>(bc.field, scene.materials[0].elastic);
         if (field->name() == "rotation")
-          throw SceneError(bc.where + ": a rotation is not proportional to the load; a fictitious layer cannot carry it");
+          throw SceneError(
+              bc.where + ": a rotation is not proportional to the load; a fictitious layer cannot carry it");
         c.value = [field](const double* x) { return field->displacement(x); };
       }  // fixed: U* = 0
     }

@@ -34,7 +34,8 @@ std::map<std::string, std::string> parse_identity(const std::string& path, const
   std::string line;
   while (std::getline(in, line)) {
     const auto eq = line.find('=');
-    if (eq == std::string::npos) throw CheckpointError(path + ": corrupt checkpoint identity line '" + line + "'");
+    if (eq == std::string::npos)
+      throw CheckpointError(path + ": corrupt checkpoint identity line '" + line + "'");
     out[line.substr(0, eq)] = line.substr(eq + 1);
   }
   return out;
@@ -87,19 +88,24 @@ Checkpoint parse_checkpoint(const std::string& s, const std::string& path) {
   take(magic, sizeof magic);
   if (std::memcmp(magic, kMagic, 6) != 0) throw CheckpointError(path + ": not a pd checkpoint");
   if (std::memcmp(magic, kMagic, sizeof magic) != 0)
-    throw CheckpointError(fmt::format("{}: a checkpoint of format {} (this pd reads {}): run the scene again from the start",
-                                      path, std::string(magic, 8), std::string(kMagic, 8)));
+    throw CheckpointError(
+        fmt::format("{}: a checkpoint of format {} (this pd reads {}): run the scene again from the start",
+                    path, std::string(magic, 8), std::string(kMagic, 8)));
   std::uint32_t order = 0;
   take(&order, sizeof order);
   if (order != kByteOrder)
-    throw CheckpointError(path + ": the checkpoint was written on a machine of the other byte order (endianness); it "
-                                 "can only be resumed on one like it");
+    throw CheckpointError(
+        path +
+        ": the checkpoint was written on a machine of the other byte order (endianness); it "
+        "can only be resumed on one like it");
   std::uint64_t stored = 0;
   if (s.size() < pos + sizeof stored) throw CheckpointError(path + ": the checkpoint is truncated");
   std::memcpy(&stored, s.data() + s.size() - sizeof stored, sizeof stored);
   if (fnv1a(s.data(), s.size() - sizeof stored) != stored)
-    throw CheckpointError(path + ": the checkpoint is damaged (its checksum does not match its contents: a truncated "
-                                 "copy or flipped bits); use an intact copy or run again from the start");
+    throw CheckpointError(
+        path +
+        ": the checkpoint is damaged (its checksum does not match its contents: a truncated "
+        "copy or flipped bits); use an intact copy or run again from the start");
   const std::size_t end = s.size() - sizeof stored;
   auto take_checked = [&](void* out, std::size_t n) {
     if (pos + n > end) throw CheckpointError(path + ": corrupt checkpoint record");
@@ -108,7 +114,8 @@ Checkpoint parse_checkpoint(const std::string& s, const std::string& path) {
   Checkpoint c;
   std::int64_t identity_bytes = 0;
   take_checked(&identity_bytes, sizeof identity_bytes);
-  if (identity_bytes < 0 || static_cast<std::uint64_t>(identity_bytes) > end) throw CheckpointError(path + ": corrupt checkpoint identity");
+  if (identity_bytes < 0 || static_cast<std::uint64_t>(identity_bytes) > end)
+    throw CheckpointError(path + ": corrupt checkpoint identity");
   std::string identity(static_cast<std::size_t>(identity_bytes), '\0');
   take_checked(identity.data(), identity.size());
   c.identity = parse_identity(path, identity);
@@ -122,7 +129,8 @@ Checkpoint parse_checkpoint(const std::string& s, const std::string& path) {
     if (name == "end") break;
     std::int64_t count = 0;
     take_checked(&count, sizeof count);
-    if (count < 0 || static_cast<std::uint64_t>(count) > s.size()) throw CheckpointError(path + ": corrupt checkpoint record " + name);
+    if (count < 0 || static_cast<std::uint64_t>(count) > s.size())
+      throw CheckpointError(path + ": corrupt checkpoint record " + name);
     if (name == "text") {
       c.text.resize(static_cast<std::size_t>(count));
       take_checked(c.text.data(), c.text.size());

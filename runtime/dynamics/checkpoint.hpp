@@ -30,7 +30,7 @@ class CheckpointError : public SceneError {
 
 struct Checkpoint {
   std::int64_t step = 0;
-  std::map<std::string, std::string> identity;       // what determines the state (checkpoint_identity.hpp)
+  std::map<std::string, std::string> identity;        // what determines the state (checkpoint_identity.hpp)
   std::map<std::string, std::vector<double>> arrays;  // "u", "v", "alpha", "scalars", ...
   std::string text;                                   // the time-series CSV rows so far
 };

@@ -5,8 +5,13 @@
 
 namespace pd {
 
-AdaptiveDynamicRelaxation::AdaptiveDynamicRelaxation(const std::vector<double>& density, std::vector<int> free, Sum sum)
-    : D_(density), free_(std::move(free)), sum_(std::move(sum)), v_(D_.size(), 0.0), f_prev_(D_.size(), 0.0) {}
+AdaptiveDynamicRelaxation::AdaptiveDynamicRelaxation(const std::vector<double>& density,
+                                                     std::vector<int> free, Sum sum)
+    : D_(density),
+      free_(std::move(free)),
+      sum_(std::move(sum)),
+      v_(D_.size(), 0.0),
+      f_prev_(D_.size(), 0.0) {}
 
 void AdaptiveDynamicRelaxation::restore(int iterations, std::vector<double> v, std::vector<double> f_prev) {
   n_ = iterations, v_ = std::move(v), f_prev_ = std::move(f_prev);

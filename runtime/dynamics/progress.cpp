@@ -5,9 +5,14 @@
 
 namespace pd {
 
-Progress::Progress(std::function<void(const std::string&)> log, double interval_seconds, int first_step, int last_step)
-    : log_(std::move(log)), interval_(interval_seconds), first_(first_step), last_(last_step),
-      start_(std::chrono::steady_clock::now()), last_print_(start_) {}
+Progress::Progress(std::function<void(const std::string&)> log, double interval_seconds, int first_step,
+                   int last_step)
+    : log_(std::move(log)),
+      interval_(interval_seconds),
+      first_(first_step),
+      last_(last_step),
+      start_(std::chrono::steady_clock::now()),
+      last_print_(start_) {}
 
 void Progress::update(int step, double time, const std::string& extra) {
   if (interval_ <= 0 || !log_) return;

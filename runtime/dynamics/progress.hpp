@@ -10,7 +10,8 @@ namespace pd {
 
 class Progress {
  public:
-  Progress(std::function<void(const std::string&)> log, double interval_seconds, int first_step, int last_step);
+  Progress(std::function<void(const std::string&)> log, double interval_seconds, int first_step,
+           int last_step);
   // Logs when the interval has passed since the last line (and always at the last step).
   void update(int step, double time, const std::string& extra = "");
 

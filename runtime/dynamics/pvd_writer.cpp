@@ -10,11 +10,13 @@ namespace pd {
 
 std::string pvd_document(const std::vector<PvdEntry>& entries) {
   std::string s = fmt::format(
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\" run_id=\"{}\">\n"
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\" "
+      "run_id=\"{}\">\n"
       "  <Collection>\n",
       run_id());
   for (const PvdEntry& e : entries)
-    s += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time, e.file);
+    s += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time,
+                     e.file);
   s += "  </Collection>\n</VTKFile>\n";
   return s;
 }

@@ -5,8 +5,9 @@
 // can impose u on a Dirichlet layer (`field:` condition), load the rest with b, and
 // compare against the same u (`reference:`). A dead load: scaled by the load factor (a
 // dynamic run applies it in full from t = 0), no stiffness.
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "discretize/discretization.hpp"
 #include "effects/loads.hpp"
@@ -19,7 +20,8 @@ std::unique_ptr<Effect> make_body_force_field(const Scene& s, const Particles& p
   if (!s.body_force) return nullptr;
   const BodyForceField& spec = *s.body_force;
   const AnalyticField field(spec.field, s.materials[0].elastic);
-  if (!field.has_body_force()) throw SceneError(spec.where + ": field: solution '" + field.name() + "' has no body force density");
+  if (!field.has_body_force())
+    throw SceneError(spec.where + ": field: solution '" + field.name() + "' has no body force density");
   const auto ids = region_particles(spec.region, p, s);
   if (ids.empty()) throw SceneError(spec.where + ": the region holds no particle");
   const int d = p.dim;
@@ -32,8 +34,9 @@ std::unique_ptr<Effect> make_body_force_field(const Scene& s, const Particles& p
         throw SceneError(fmt::format("{}: the body force is not finite at particle {}", spec.where, i));
     }
   }
-  return make_nodal_forces(std::move(f), fmt::format("body force density of field {} times particle volume on {} particles",
-                                                     field.name(), ids.size()));
+  return make_nodal_forces(std::move(f),
+                           fmt::format("body force density of field {} times particle volume on {} particles",
+                                       field.name(), ids.size()));
 }
 
 }  // namespace pd

@@ -1,10 +1,10 @@
 // Crack pressure: pair forces across the pressurised cracks' faces (effects/loads.hpp).
-#include "effects/loads.hpp"
-
-#include <cmath>
 #include <fmt/core.h>
 
+#include <cmath>
+
 #include "discretize/discretization.hpp"
+#include "effects/loads.hpp"
 
 namespace pd {
 
@@ -20,7 +20,9 @@ class CrackPressure final : public Effect {
   std::string name() const override { return "crack pressure"; }
   bool is_load() const override { return true; }
   std::size_t allocated_bytes() const override { return pairs_.size() * sizeof(PressurePair); }
-  std::string describe() const override { return fmt::format("crack pressure on {} bond pairs across the crack faces", pairs_.size()); }
+  std::string describe() const override {
+    return fmt::format("crack pressure on {} bond pairs across the crack faces", pairs_.size());
+  }
   void add_forces(const double* u, double load, double* r) const override {
     const int d = p_.dim;
     for (const PressurePair& q : pairs_) {
@@ -36,7 +38,8 @@ class CrackPressure final : public Effect {
   // f_b = g n with n = Y/|Y|: d f_b / d y_b = g (I - n n^T) / |Y| = G; the pair block is
   // [[G, -G], [-G, G]] and K = -dr/du takes its negative. A handful of pairs per crack:
   // the block search costs nothing next to the law's assembly.
-  void add_stiffness(const double* u, double load, const SparsityPattern& pattern, SparseMatrix& K) const override {
+  void add_stiffness(const double* u, double load, const SparsityPattern& pattern,
+                     SparseMatrix& K) const override {
     const int d = p_.dim;
     double* v = K.valuePtr();
     for (const PressurePair& q : pairs_) {
@@ -88,7 +91,8 @@ class CrackPressure final : public Effect {
     double Y[3], l = 0;
     deformed(u, q, Y, l);
     for (int r = 0; r < p_.dim; ++r)
-      for (int c = 0; c < p_.dim; ++c) G[r][c] = load * q.magnitude * ((r == c ? 1.0 : 0.0) - Y[r] * Y[c] / (l * l)) / l;
+      for (int c = 0; c < p_.dim; ++c)
+        G[r][c] = load * q.magnitude * ((r == c ? 1.0 : 0.0) - Y[r] * Y[c] / (l * l)) / l;
   }
   const Particles& p_;
   std::vector<PressurePair> pairs_;
@@ -115,8 +119,10 @@ std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, doubl
       const Point& o = crack.points[0];
       for (std::size_t i = 1; i + 1 < crack.points.size(); ++i) {
         const double u[3] = {crack.points[i][0] - o[0], crack.points[i][1] - o[1], crack.points[i][2] - o[2]};
-        const double v[3] = {crack.points[i + 1][0] - o[0], crack.points[i + 1][1] - o[1], crack.points[i + 1][2] - o[2]};
-        normal[0] += u[1] * v[2] - u[2] * v[1], normal[1] += u[2] * v[0] - u[0] * v[2], normal[2] += u[0] * v[1] - u[1] * v[0];
+        const double v[3] = {crack.points[i + 1][0] - o[0], crack.points[i + 1][1] - o[1],
+                             crack.points[i + 1][2] - o[2]};
+        normal[0] += u[1] * v[2] - u[2] * v[1], normal[1] += u[2] * v[0] - u[0] * v[2],
+            normal[2] += u[0] * v[1] - u[1] * v[0];
       }
       measure = 0.5 * std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       for (double& c : normal) c /= 2 * measure;
@@ -127,7 +133,8 @@ std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, doubl
       for (int e = bonds.offsets[a]; e < bonds.offsets[a + 1]; ++e) {
         const int b = bonds.neighbor[e];
         // Nearest neighbours only (|xi| < 1.2 h): the particles facing each other across the crack.
-        if (b <= a || bonds.length[e] > 1.2 * h || !crack_crosses(crack, p.position(a), p.position(b), d)) continue;
+        if (b <= a || bonds.length[e] > 1.2 * h || !crack_crosses(crack, p.position(a), p.position(b), d))
+          continue;
         const double magnitude = crack.pressure * p.volume[b] / bonds.length[e];
         double cosine = 0;
         for (int c = 0; c < d; ++c) cosine += normal[c] * bonds.xi[e * d + c] / bonds.length[e];
@@ -138,7 +145,8 @@ std::unique_ptr<Effect> make_crack_pressure(std::span<const Crack> cracks, doubl
     // perturbed cloud the |xi| < 1.2 h rule picks tilted and extra pairs, so scale them to
     // keep the total normal load p x measure.
     if (normal_total > 0)
-      for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].magnitude *= crack.pressure * measure / normal_total;
+      for (std::size_t i = first; i < pairs.size(); ++i)
+        pairs[i].magnitude *= crack.pressure * measure / normal_total;
   }
   if (pairs.empty()) return nullptr;
   return std::make_unique<CrackPressure>(p, std::move(pairs));

@@ -31,12 +31,13 @@ class DamageEvolution final : public Effect {
   // symmetric bit for bit (damage/critical_stretch.cpp). The count is then of the bond
   // entries broken in the scope's families.
   long long after_step(const double* u, FamilyScope scope) override {
-    const int broken = scope.every_family() ? damage_.break_bonds(u) : damage_.break_family_bonds(u, *scope.owned);
+    const int broken =
+        scope.every_family() ? damage_.break_bonds(u) : damage_.break_family_bonds(u, *scope.owned);
     if (broken == 0) return 0;
     assembler_.update_moments();
     if (short_damage_) {
-      const int short_broken =
-          scope.every_family() ? short_damage_->break_bonds(u) : short_damage_->break_family_bonds(u, *scope.owned);
+      const int short_broken = scope.every_family() ? short_damage_->break_bonds(u)
+                                                    : short_damage_->break_family_bonds(u, *scope.owned);
       if (short_broken > 0) short_assembler_->update_moments();
     }
     return broken;
@@ -51,13 +52,17 @@ class DamageEvolution final : public Effect {
 };
 }  // namespace
 
-DamageEffect make_damage_evolution(const Scene& s, const DamageBody& m, Bonds& bonds, FamilyAssembler& assembler,
-                                   Bonds* short_bonds, FamilyAssembler* short_assembler) {
+DamageEffect make_damage_evolution(const Scene& s, const DamageBody& m, Bonds& bonds,
+                                   FamilyAssembler& assembler, Bonds* short_bonds,
+                                   FamilyAssembler* short_assembler) {
   if (!s.damage) return {};
-  const double s0 = critical_stretch(*s.damage, s.materials[0], s.dim, s.delta(), m.law, m.params, m.influence.weight);
+  const double s0 =
+      critical_stretch(*s.damage, s.materials[0], s.dim, s.delta(), m.law, m.params, m.influence.weight);
   std::string suffix = critical_stretch_origin(*s.damage, s.dim, m.law);
-  if (!s.dynamics) suffix += fmt::format(", between load steps (at most {} re-solves per step)", s.damage->max_resolves);
-  auto effect = std::make_unique<DamageEvolution>(m.particles, bonds, assembler, s0, s.damage->tension_only, std::move(suffix));
+  if (!s.dynamics)
+    suffix += fmt::format(", between load steps (at most {} re-solves per step)", s.damage->max_resolves);
+  auto effect = std::make_unique<DamageEvolution>(m.particles, bonds, assembler, s0, s.damage->tension_only,
+                                                  std::move(suffix));
   if (short_bonds && short_assembler) effect->also_break(m.particles, *short_bonds, *short_assembler);
   const CriticalStretchDamage* rule = &effect->damage();
   return {std::move(effect), rule};

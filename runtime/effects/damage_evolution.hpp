@@ -13,7 +13,7 @@
 namespace pd {
 
 struct DamageEffect {
-  std::unique_ptr<Effect> effect;            // null without a `damage` section
+  std::unique_ptr<Effect> effect;               // null without a `damage` section
   const CriticalStretchDamage* rule = nullptr;  // its s0 and tension rule (owned by effect)
 };
 
@@ -28,7 +28,8 @@ struct DamageBody {
 
 // The scene's `damage` on `bonds` (read by `assembler`); `short_bonds` and
 // `short_assembler` (optional): the static matrix-free preconditioner's, broken alike.
-DamageEffect make_damage_evolution(const Scene& scene, const DamageBody& body, Bonds& bonds, FamilyAssembler& assembler,
-                                   Bonds* short_bonds = nullptr, FamilyAssembler* short_assembler = nullptr);
+DamageEffect make_damage_evolution(const Scene& scene, const DamageBody& body, Bonds& bonds,
+                                   FamilyAssembler& assembler, Bonds* short_bonds = nullptr,
+                                   FamilyAssembler* short_assembler = nullptr);
 
 }  // namespace pd

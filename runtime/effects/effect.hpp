@@ -34,7 +34,8 @@ class Effect {
   // Adds this effect's nodal forces at load factor `load` to r (nothing by default).
   virtual void add_forces(const double* u, double load, double* r) const;
   // Adds its contribution to K = -dr/du, whose pattern is `pattern` (nothing for dead loads).
-  virtual void add_stiffness(const double* u, double load, const SparsityPattern& pattern, SparseMatrix& K) const;
+  virtual void add_stiffness(const double* u, double load, const SparsityPattern& pattern,
+                             SparseMatrix& K) const;
   // Matrix-free counterparts: Kv += K_effect v, diag += diag(K_effect).
   virtual void add_stiffness_product(const double* u, double load, const double* v, double* Kv) const;
   virtual void add_stiffness_diagonal(const double* u, double load, double* diag) const;

@@ -17,7 +17,8 @@ Inertia::Inertia(std::vector<double> mass, bool inverse, std::string description
   for (std::size_t i = 0; i < mass_.size(); ++i) inverse_mass_[i] = 1.0 / mass_[i];
 }
 
-std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p, const std::vector<double>& row_sums) {
+std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p,
+                                      const std::vector<double>& row_sums) {
   const DynamicsSpec& dyn = *scene.dynamics;
   std::vector<double> mass(static_cast<std::size_t>(p.size()) * p.dim);
   for (int i = 0; i < p.size(); ++i)
@@ -27,9 +28,11 @@ std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p, co
   const double dt = dyn.dt > 0 ? dyn.dt : dyn.safety_factor * st.dt;
   auto inertia = std::make_unique<Inertia>(
       std::move(mass), true,
-      fmt::format("inertia: density per material, velocity Verlet, dt = {:.6g} ({}; Gershgorin stable estimate {:.6g} set by "
+      fmt::format("inertia: density per material, velocity Verlet, dt = {:.6g} ({}; Gershgorin stable "
+                  "estimate {:.6g} set by "
                   "particle {})",
-                  dt, dyn.dt > 0 ? "fixed" : fmt::format("{} x estimate", dyn.safety_factor), st.dt, st.dof / p.dim));
+                  dt, dyn.dt > 0 ? "fixed" : fmt::format("{} x estimate", dyn.safety_factor), st.dt,
+                  st.dof / p.dim));
   inertia->dt = dt;
   inertia->dt_stable = st.dt;
   inertia->stable_dof = st.dof;
@@ -40,11 +43,13 @@ std::unique_ptr<Inertia> make_fictitious_density(const Scene& scene, const std::
   std::vector<double> density(row_sums.size());
   double largest = 0;
   for (double r : row_sums) largest = std::max(largest, r);
-  for (std::size_t i = 0; i < density.size(); ++i) density[i] = 0.25 * (row_sums[i] > 0 ? row_sums[i] : largest);
+  for (std::size_t i = 0; i < density.size(); ++i)
+    density[i] = 0.25 * (row_sums[i] > 0 ? row_sums[i] : largest);
   auto inertia = std::make_unique<Inertia>(
       std::move(density), false,
-      fmt::format("adaptive dynamic relaxation: fictitious density D = sum_j |K_ij| / 4, dt = 1, tolerance {:.3g}",
-                  scene.dynamics->tolerance));
+      fmt::format(
+          "adaptive dynamic relaxation: fictitious density D = sum_j |K_ij| / 4, dt = 1, tolerance {:.3g}",
+          scene.dynamics->tolerance));
   inertia->dt = 1;
   return inertia;
 }

@@ -21,7 +21,9 @@ class Inertia final : public Effect {
   Inertia(std::vector<double> mass, bool inverse, std::string description);
   std::string name() const override { return "inertia"; }
   std::string describe() const override { return description_; }
-  std::size_t allocated_bytes() const override { return (mass_.size() + inverse_mass_.size()) * sizeof(double); }
+  std::size_t allocated_bytes() const override {
+    return (mass_.size() + inverse_mass_.size()) * sizeof(double);
+  }
   const std::vector<double>& mass() const { return mass_; }
   const std::vector<double>& inverse_mass() const { return inverse_mass_; }  // empty unless asked for
   // Explicit dynamics: the time step, the Gershgorin stable estimate and the dof that sets it.
@@ -36,7 +38,8 @@ class Inertia final : public Effect {
 // Explicit dynamics: m = rho V per dof (rho of each particle's material), and the time
 // step: the scene's dt, or safety_factor x the stable estimate from the stiffness row
 // sums S_r = sum_c |K_rc| (effects/time_step.hpp).
-std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p, const std::vector<double>& row_sums);
+std::unique_ptr<Inertia> make_inertia(const Scene& scene, const Particles& p,
+                                      const std::vector<double>& row_sums);
 
 // Adaptive dynamic relaxation: the fictitious density D_ii = S_i / 4 (the largest row sum
 // for a row without stiffness), which makes dt = 1 stable (dynamics/dynamic_relaxation.hpp).
@@ -52,8 +55,8 @@ class ViscousDamping final : public Effect {
   std::string name() const override { return "viscous damping"; }
   std::string describe() const override;
   double coefficient() const { return c_; }
-  void kick(double h, const std::vector<int>& free, const std::vector<double>& inverse_mass, const std::vector<double>& f,
-            std::vector<double>& v) const;
+  void kick(double h, const std::vector<int>& free, const std::vector<double>& inverse_mass,
+            const std::vector<double>& f, std::vector<double>& v) const;
   void final_kick(double h, const std::vector<int>& free, const std::vector<double>& inverse_mass,
                   const std::vector<double>& f, std::vector<double>& v) const;
 

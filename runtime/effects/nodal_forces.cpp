@@ -1,10 +1,10 @@
 // Dead loads: a nodal force vector, and the scene's tractions and constant body forces as one.
-#include "effects/loads.hpp"
-
-#include <cmath>
 #include <fmt/core.h>
 
+#include <cmath>
+
 #include "discretize/discretization.hpp"
+#include "effects/loads.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace pd {
@@ -13,7 +13,8 @@ namespace {
 // Dead loads: a fixed nodal force vector scaled by the load factor.
 class NodalForces final : public Effect {
  public:
-  NodalForces(std::vector<double> f, std::string description) : f_(std::move(f)), description_(std::move(description)) {}
+  NodalForces(std::vector<double> f, std::string description)
+      : f_(std::move(f)), description_(std::move(description)) {}
   std::string name() const override { return "external loads"; }
   bool is_load() const override { return true; }
   std::size_t allocated_bytes() const override { return f_.size() * sizeof(double); }
@@ -56,7 +57,8 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p,
   std::vector<double> f(static_cast<std::size_t>(p.size()) * d, 0.0);
   int tractions = 0, body = 0;
   for (const BoundaryCondition& bc : conditions) {
-    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce)
+      continue;
     if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // carried by the layer's ties
     const auto ids = region_particles(bc.region, p, s);
     if (ids.empty()) throw SceneError(bc.where + ": the region holds no particle");
@@ -72,7 +74,8 @@ std::unique_ptr<Effect> make_external_loads(const Scene& s, const Particles& p,
     }
   }
   if (tractions + body == 0) return nullptr;
-  return make_nodal_forces(std::move(f), fmt::format("{} traction and {} body-force conditions", tractions, body));
+  return make_nodal_forces(std::move(f),
+                           fmt::format("{} traction and {} body-force conditions", tractions, body));
 }
 
 }  // namespace pd

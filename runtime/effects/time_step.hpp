@@ -28,8 +28,8 @@ namespace pd {
 std::vector<double> stiffness_row_sums(const FamilyAssembler& assembler, const double* u);
 
 struct StableStep {
-  double dt = 0;      // 2 / sqrt(max_r S_r / m_r)
-  int dof = -1;       // the dof that sets it
+  double dt = 0;  // 2 / sqrt(max_r S_r / m_r)
+  int dof = -1;   // the dof that sets it
 };
 
 // mass: m_r per dof. Throws if no row has stiffness.

@@ -14,7 +14,9 @@ class TimedEffect final : public Effect {
   std::string describe() const override { return inner_->describe() + suffix_; }
   std::size_t allocated_bytes() const override { return inner_->allocated_bytes(); }
   bool is_load() const override { return inner_->is_load(); }
-  void add_forces(const double* u, double t, double* r) const override { inner_->add_forces(u, time_.value_at(t), r); }
+  void add_forces(const double* u, double t, double* r) const override {
+    inner_->add_forces(u, time_.value_at(t), r);
+  }
 
  private:
   std::unique_ptr<Effect> inner_;

@@ -11,7 +11,9 @@ class SerialSteps final : public StepExecutor {
   explicit SerialSteps(StepState state) : s_(state) {}
   bool root() const override { return true; }
   const std::vector<int>& free_dofs() const override { return s_.model.dofs.free_dofs(); }
-  std::string describe(const std::string&, const std::string&, const std::string&) const override { return {}; }
+  std::string describe(const std::string&, const std::string&, const std::string&) const override {
+    return {};
+  }
   void forces(double t, std::vector<double>& f, std::vector<double>& g) override;
   bool after_step() override;
   void sync() override {}

@@ -48,12 +48,15 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
     T_ = param(spec, "traction", NAN);
     const double P = param(spec, "inclusion_stress", NAN);
     a_ = param(spec, "radius", NAN);
-    const IsotropicElastic mi = IsotropicElastic::from_E_nu(param(spec, "E_inclusion", NAN), param(spec, "nu_inclusion", NAN));
+    const IsotropicElastic mi =
+        IsotropicElastic::from_E_nu(param(spec, "E_inclusion", NAN), param(spec, "nu_inclusion", NAN));
     const IsotropicElastic mm = IsotropicElastic::from_E_nu(E_, nu_);
     if (std::isfinite(T_) == std::isfinite(P) || !(a_ > 0))
-      throw std::invalid_argument("inclusion field needs a positive radius and one of traction (remote) or inclusion_stress");
+      throw std::invalid_argument(
+          "inclusion field needs a positive radius and one of traction (remote) or inclusion_stress");
     if (std::isfinite(P)) {
-      const InclusionCoefficients k = paper001_inclusion_coefficients(P, a_, mi.lambda, mi.G, mm.lambda, mm.G);
+      const InclusionCoefficients k =
+          paper001_inclusion_coefficients(P, a_, mi.lambda, mi.G, mm.lambda, mm.G);
       inner_ = k.A, outer_ = k.B, hole_ = k.C;
     } else {
       outer_ = T_ / (2 * (mm.lambda + mm.G));
@@ -76,8 +79,27 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
     throw std::invalid_argument("unknown analytic solution '" + name_ + "'");
   }
   for (const auto& [k, v] : spec.parameters) {
-    static const char* known[] = {"E", "nu", "x0", "y0", "pressure", "half_length", "traction", "angle", "stretch",
-                                  "radius", "E_inclusion", "nu_inclusion", "inclusion_stress", "e11", "e22", "e33", "e12", "e13", "e23", "z0", "amplitude"};
+    static const char* known[] = {"E",
+                                  "nu",
+                                  "x0",
+                                  "y0",
+                                  "pressure",
+                                  "half_length",
+                                  "traction",
+                                  "angle",
+                                  "stretch",
+                                  "radius",
+                                  "E_inclusion",
+                                  "nu_inclusion",
+                                  "inclusion_stress",
+                                  "e11",
+                                  "e22",
+                                  "e33",
+                                  "e12",
+                                  "e13",
+                                  "e23",
+                                  "z0",
+                                  "amplitude"};
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
     if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");
@@ -108,7 +130,8 @@ std::array<double, 3> AnalyticField::displacement(const double* p) const {
   if (name_ == "affine") {
     // p has 3 coordinates only in 3D scenes: the reader refuses e13, e23, e33 and z0 in 2D,
     // so a 2D field never reads p[2].
-    const double r[3] = {x, y, (strain_[0][2] != 0 || strain_[1][2] != 0 || strain_[2][2] != 0) ? p[2] - z0_ : 0.0};
+    const double r[3] = {x, y,
+                         (strain_[0][2] != 0 || strain_[1][2] != 0 || strain_[2][2] != 0) ? p[2] - z0_ : 0.0};
     std::array<double, 3> u{};
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) u[a] += strain_[a][b] * r[b];

@@ -44,12 +44,12 @@ class AnalyticField {
  private:
   std::string name_;
   double T_ = 0, E_ = 0, nu_ = 0, a_ = 0, x0_ = 0, y0_ = 0;
-  double angle_ = 0, stretch_ = 0;            // rotation
+  double angle_ = 0, stretch_ = 0;           // rotation
   double inner_ = 0, outer_ = 0, hole_ = 0;  // inclusion: u_r = inner r (r < a), outer r + hole / r
-  double strain_[3][3] = {};                  // affine: u = strain (x - (x0, y0, z0))
+  double strain_[3][3] = {};                 // affine: u = strain (x - (x0, y0, z0))
   double z0_ = 0;
-  MichellHole michell_;                       // michell
-  ManufacturedField manufactured_;            // u1, u2
+  MichellHole michell_;             // michell
+  ManufacturedField manufactured_;  // u1, u2
   double amplitude_ = 1;
 };
 

@@ -10,7 +10,9 @@ namespace {
 std::array<double, 2> u1(double x, double y) { return {x * x, 4 * y * y}; }
 // div u = 2x + 8y, grad div u = (2, 8), Laplacian u = (2, 8):
 // div sigma = (lambda + mu) grad div u + mu Laplacian u = (2 lambda + 4 mu, 8 lambda + 16 mu).
-std::array<double, 2> f1(double, double, double lambda, double mu) { return {2 * lambda + 4 * mu, 8 * lambda + 16 * mu}; }
+std::array<double, 2> f1(double, double, double lambda, double mu) {
+  return {2 * lambda + 4 * mu, 8 * lambda + 16 * mu};
+}
 
 }  // namespace
 
@@ -32,13 +34,15 @@ ManufacturedField paper001_u2_wavenumber(double k) {
   return {k == 1 ? "u2" : "u2(k=" + std::to_string(k) + ")", u, f};
 }
 
-InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1, double lambda2, double mu2) {
+InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1,
+                                                      double lambda2, double mu2) {
   const double d = 2 * (lambda1 + mu1) * (lambda2 + 2 * mu2);
-  return {P / (2 * (lambda1 + mu1)), P * (lambda1 + mu1 + mu2) / d, -P * a * a * (lambda1 - lambda2 + mu1 - mu2) / d};
+  return {P / (2 * (lambda1 + mu1)), P * (lambda1 + mu1 + mu2) / d,
+          -P * a * a * (lambda1 - lambda2 + mu1 - mu2) / d};
 }
 
-ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1, double lambda2,
-                                     double mu2) {
+ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1,
+                                     double lambda2, double mu2) {
   const InclusionCoefficients k = paper001_inclusion_coefficients(P, a, lambda1, mu1, lambda2, mu2);
   auto u = [k, a, cx, cy](double x, double y) -> std::array<double, 2> {
     const double dx = x - cx, dy = y - cy, r = std::hypot(dx, dy);

@@ -16,7 +16,8 @@ namespace pd {
 struct ManufacturedField {
   std::string name;
   std::function<std::array<double, 2>(double x, double y)> displacement;
-  std::function<std::array<double, 2>(double x, double y, double lambda, double mu)> div_stress;  // the paper's f
+  std::function<std::array<double, 2>(double x, double y, double lambda, double mu)>
+      div_stress;  // the paper's f
 
   std::array<double, 2> body_force(double x, double y, double lambda, double mu) const {
     const auto f = div_stress(x, y, lambda, mu);
@@ -44,11 +45,12 @@ ManufacturedField paper001_u2_wavenumber(double k);
 struct InclusionCoefficients {
   double A = 0, B = 0, C = 0;
 };
-InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1, double lambda2, double mu2);
+InclusionCoefficients paper001_inclusion_coefficients(double P, double a, double lambda1, double mu1,
+                                                      double lambda2, double mu2);
 // The field centred at (cx, cy); no body force (each phase is in equilibrium, and
 // displacement and traction are continuous at r = a).
-ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1, double lambda2,
-                                     double mu2);
+ManufacturedField paper001_inclusion(double P, double a, double cx, double cy, double lambda1, double mu1,
+                                     double lambda2, double mu2);
 
 // Plane-strain Lame parameters from Young's modulus and Poisson's ratio.
 std::array<double, 2> lame_from_young_poisson(double E, double nu);

@@ -23,9 +23,9 @@
 namespace pd {
 
 struct MichellHole {
-  double T = 1;             // far-field tension along x
-  double a = 0.2;           // hole radius
-  double x0 = 0, y0 = 0;    // hole centre
+  double T = 1;                   // far-field tension along x
+  double a = 0.2;                 // hole radius
+  double x0 = 0, y0 = 0;          // hole centre
   double lambda = 0.5, mu = 0.5;  // 2D Lame constants (plane strain: those of E, nu)
 
   double kappa() const { return (lambda + 3 * mu) / (lambda + mu); }

@@ -11,12 +11,15 @@ namespace pd {
 
 void read_block_domain(const YamlAt& domain, Scene& s) {
   MapReader d(domain);
-  for (const char* key : {"box", "count", "spacing", "placement", "perturbation", "holes", "inclusions", "particles"})
-    if (d.has(key)) d.get(key).fail(std::string(key) + " does not apply to a body of blocks (give it per block)");
+  for (const char* key :
+       {"box", "count", "spacing", "placement", "perturbation", "holes", "inclusions", "particles"})
+    if (d.has(key))
+      d.get(key).fail(std::string(key) + " does not apply to a body of blocks (give it per block)");
   if (d.has("quadrature") && d.text("quadrature") != "volume" && d.text("quadrature") != "partial_linear")
-    d.get("quadrature").fail("a body of blocks supports quadrature: volume or partial_linear (paper 003 eq. 17)");
+    d.get("quadrature")
+        .fail("a body of blocks supports quadrature: volume or partial_linear (paper 003 eq. 17)");
   s.quadrature = d.has("quadrature") && d.text("quadrature") == "partial_linear" ? Quadrature::PartialLinear
-                                                                                  : Quadrature::Volume;
+                                                                                 : Quadrature::Volume;
   const YamlAt list = d.get("blocks");
   require_list(list);
   if (list.node.size() == 0) list.fail("give at least one block");
@@ -34,7 +37,8 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
     block.spacing = b.number("spacing");
     if (!(block.spacing > 0)) b.get("spacing").fail("spacing must be positive");
     for (int c = 0; c < s.dim; ++c)
-      if ((block.hi[c] - block.lo[c]) / block.spacing > 1e5) b.get("spacing").fail("more than 1e5 particles along an axis");
+      if ((block.hi[c] - block.lo[c]) / block.spacing > 1e5)
+        b.get("spacing").fail("more than 1e5 particles along an axis");
     block.where = at.location();
     b.finish();
     blocks.push_back(block);
@@ -49,7 +53,8 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
   s.lo = blocks[0].lo, s.hi = blocks[0].hi;
   s.h = 0;
   for (const LatticeBlock& b : blocks) {
-    for (int c = 0; c < s.dim; ++c) s.lo[c] = std::min(s.lo[c], b.lo[c]), s.hi[c] = std::max(s.hi[c], b.hi[c]);
+    for (int c = 0; c < s.dim; ++c)
+      s.lo[c] = std::min(s.lo[c], b.lo[c]), s.hi[c] = std::max(s.hi[c], b.hi[c]);
     s.h = std::max(s.h, b.spacing);
   }
   s.placement = "cell";

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "input/scene.hpp"
 #include "input/enum_choice.hpp"
+#include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace pd {
@@ -30,7 +30,8 @@ InitialCondition read_initial(const YamlAt& at, int dim) {
     const YamlAt g = m.get("gradient");
     if (!g.node.IsSequence() || static_cast<int>(g.node.size()) != dim)
       g.fail("expected " + std::to_string(dim) + " rows of " + std::to_string(dim) + " numbers (du_i/dx_j)");
-    for (int i = 0; i < dim; ++i) ic.gradient[i] = read_vector(g.element(g.node[i], static_cast<std::size_t>(i)), dim);
+    for (int i = 0; i < dim; ++i)
+      ic.gradient[i] = read_vector(g.element(g.node[i], static_cast<std::size_t>(i)), dim);
     ic.has_gradient = true;
   }
   if (m.has("origin")) {
@@ -43,7 +44,8 @@ InitialCondition read_initial(const YamlAt& at, int dim) {
     const YamlAt axis = g.get("axis");
     const std::string a = as_text(axis);
     ic.axis = a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1;
-    if (ic.axis < 0 || ic.axis >= dim) axis.fail("'" + a + "' is not an axis of a " + std::to_string(dim) + "D scene");
+    if (ic.axis < 0 || ic.axis >= dim)
+      axis.fail("'" + a + "' is not an axis of a " + std::to_string(dim) + "D scene");
     ic.center = g.number("center");
     ic.width = g.number("width");
     if (!(ic.width > 0)) g.get("width").fail("width must be positive");
@@ -62,12 +64,16 @@ DynamicsSpec read_dynamics(const YamlAt& at, int dim) {
   const bool explicit_method = d.method == DynamicsMethod::explicit_verlet;
   if (explicit_method) {
     d.steps = m.integer("steps", 0);
-    if (d.steps < 1) (m.has("steps") ? m.get("steps") : at).fail("steps (the number of time steps) must be at least 1");
+    if (d.steps < 1)
+      (m.has("steps") ? m.get("steps") : at).fail("steps (the number of time steps) must be at least 1");
     d.dt = m.number("dt", 0.0);
-    if (d.dt < 0 || (m.has("dt") && d.dt == 0)) m.get("dt").fail("dt must be positive (omit it to use the stable-step estimate)");
+    if (d.dt < 0 || (m.has("dt") && d.dt == 0))
+      m.get("dt").fail("dt must be positive (omit it to use the stable-step estimate)");
     d.safety_factor = m.number("safety_factor", 0.8);
-    if (!(d.safety_factor > 0 && d.safety_factor <= 1)) m.get("safety_factor").fail("safety_factor must lie in (0, 1]");
-    if (m.has("dt") && m.has("safety_factor")) m.get("safety_factor").fail("give dt or safety_factor, not both");
+    if (!(d.safety_factor > 0 && d.safety_factor <= 1))
+      m.get("safety_factor").fail("safety_factor must lie in (0, 1]");
+    if (m.has("dt") && m.has("safety_factor"))
+      m.get("safety_factor").fail("give dt or safety_factor, not both");
     d.damping = m.number("damping", 0.0);
     if (d.damping < 0) m.get("damping").fail("damping must not be negative");
   } else {
@@ -76,7 +82,8 @@ DynamicsSpec read_dynamics(const YamlAt& at, int dim) {
     d.tolerance = m.number("tolerance", 1e-8);
     if (!(d.tolerance > 0 && d.tolerance < 1)) m.get("tolerance").fail("tolerance must lie in (0, 1)");
     for (const char* key : {"dt", "safety_factor", "damping"})
-      if (m.has(key)) m.get(key).fail(std::string(key) + " belongs to method: explicit (relaxation picks its own)");
+      if (m.has(key))
+        m.get(key).fail(std::string(key) + " belongs to method: explicit (relaxation picks its own)");
   }
   d.output_every = m.integer("output_every", 0);
   d.snapshot_every = m.integer("snapshot_every", 0);
@@ -92,7 +99,8 @@ DynamicsSpec read_dynamics(const YamlAt& at, int dim) {
   if (m.has("initial")) {
     const YamlAt list = m.get("initial");
     require_list(list);
-    for (std::size_t i = 0; i < list.node.size(); ++i) d.initial.push_back(read_initial(list.element(list.node[i], i), dim));
+    for (std::size_t i = 0; i < list.node.size(); ++i)
+      d.initial.push_back(read_initial(list.element(list.node[i], i), dim));
   }
   m.finish();
   return d;
@@ -102,7 +110,8 @@ DamageSpec read_damage(const YamlAt& at) {
   MapReader m(at);
   DamageSpec d;
   d.where = at.location();
-  if (m.has("critical_stretch") == m.has("fracture_energy")) at.fail("give exactly one of critical_stretch, fracture_energy");
+  if (m.has("critical_stretch") == m.has("fracture_energy"))
+    at.fail("give exactly one of critical_stretch, fracture_energy");
   if (m.has("critical_stretch")) {
     d.critical_stretch = m.number("critical_stretch");
     if (!(d.critical_stretch > 0)) m.get("critical_stretch").fail("critical_stretch must be positive");

@@ -15,9 +15,10 @@ int cells_along(const LatticeBlock& b, int c) {
   const double side = b.hi[c] - b.lo[c];
   const double n = std::round(side / b.spacing);
   if (!(side > 0) || n < 1 || std::abs(n * b.spacing - side) > 1e-9 * side)
-    throw std::invalid_argument(fmt::format("{}: the side {} along {} is not a whole number of spacings {} "
-                                            "(each block is filled with whole cells)",
-                                            b.where, side, "xyz"[c], b.spacing));
+    throw std::invalid_argument(
+        fmt::format("{}: the side {} along {} is not a whole number of spacings {} "
+                    "(each block is filled with whole cells)",
+                    b.where, side, "xyz"[c], b.spacing));
   return static_cast<int>(n);
 }
 

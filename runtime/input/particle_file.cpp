@@ -1,8 +1,6 @@
 // Reading a point cloud from CSV.
 #include "input/particle_file.hpp"
 
-#include "input/particle_vtu.hpp"
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -11,6 +9,8 @@
 #include <fstream>
 #include <map>
 #include <set>
+
+#include "input/particle_vtu.hpp"
 
 namespace pd {
 
@@ -45,7 +45,9 @@ ParticleFile read_particle_file(const std::string& path, int dim) {
   ParticleFile f;
   f.path = path;
   f.dim = dim;
-  auto fail = [&](int line, const std::string& message) { throw SceneError(fmt::format("{}:{}: {}", path, line, message)); };
+  auto fail = [&](int line, const std::string& message) {
+    throw SceneError(fmt::format("{}:{}: {}", path, line, message));
+  };
   std::map<std::string, int> column;
   std::string text;
   int line = 0, header_line = 0;
@@ -60,12 +62,15 @@ ParticleFile read_particle_file(const std::string& path, int dim) {
       for (std::size_t k = 0; k < fields.size(); ++k) {
         const std::string& name = fields[k];
         if (name != "x" && name != "y" && name != "z" && name != "volume" && name != "material")
-          fail(line, fmt::format("unknown column '{}' (the columns: x, y{}, volume, material)", name, dim == 3 ? ", z" : ""));
+          fail(line, fmt::format("unknown column '{}' (the columns: x, y{}, volume, material)", name,
+                                 dim == 3 ? ", z" : ""));
         if (name == "z" && dim == 2) fail(line, "a z column in a 2D scene");
-        if (!column.emplace(name, static_cast<int>(k)).second) fail(line, fmt::format("column '{}' given twice", name));
+        if (!column.emplace(name, static_cast<int>(k)).second)
+          fail(line, fmt::format("column '{}' given twice", name));
       }
       for (const char* need : {"x", "y", "z", "volume"})
-        if ((dim == 3 || std::string(need) != "z") && !column.count(need)) fail(line, fmt::format("no column '{}'", need));
+        if ((dim == 3 || std::string(need) != "z") && !column.count(need))
+          fail(line, fmt::format("no column '{}'", need));
       continue;
     }
     const int row = f.size() + 1;
@@ -74,7 +79,8 @@ ParticleFile read_particle_file(const std::string& path, int dim) {
     auto number = [&](const char* name) {
       double v = 0;
       const std::string& s = fields[static_cast<std::size_t>(column.at(name))];
-      if (!parse_number(s, v)) fail(line, fmt::format("row {}: {}: '{}' is not a finite number", row, name, s));
+      if (!parse_number(s, v))
+        fail(line, fmt::format("row {}: {}: '{}' is not a finite number", row, name, s));
       return v;
     };
     std::vector<double> x;
@@ -82,13 +88,17 @@ ParticleFile read_particle_file(const std::string& path, int dim) {
       if (c[0] != 'z' || dim == 3) x.push_back(number(c));
     const double volume = number("volume");
     if (!(volume > 0)) fail(line, fmt::format("row {}: volume must be positive (got {})", row, volume));
-    if (!seen.insert(x).second) fail(line, fmt::format("row {}: a second particle at the same position", row));
+    if (!seen.insert(x).second)
+      fail(line, fmt::format("row {}: a second particle at the same position", row));
     f.x.insert(f.x.end(), x.begin(), x.end());
     f.volume.push_back(volume);
-    f.material.push_back(column.count("material") ? fields[static_cast<std::size_t>(column.at("material"))] : "");
+    f.material.push_back(column.count("material") ? fields[static_cast<std::size_t>(column.at("material"))]
+                                                  : "");
     f.line.push_back(line);
   }
-  if (header_line == 0) throw SceneError(path + ": the particle file is empty (a header line x,y[,z],volume[,material] is needed)");
+  if (header_line == 0)
+    throw SceneError(path +
+                     ": the particle file is empty (a header line x,y[,z],volume[,material] is needed)");
   if (f.size() == 0) fail(header_line, "the particle file has a header but no particle rows");
   return f;
 }
@@ -108,8 +118,8 @@ std::vector<int> particle_materials(const ParticleFile& f, const std::vector<std
       if (r.ec == std::errc() && r.ptr == end && k >= 0 && k < static_cast<int>(names.size())) index = k;
     }
     if (index < 0)
-      throw SceneError(fmt::format("{}:{}: {}: unknown material '{}' (the scene's materials: {})", f.path, f.line[i], f.item(i), m,
-                                   fmt::join(names, ", ")));
+      throw SceneError(fmt::format("{}:{}: {}: unknown material '{}' (the scene's materials: {})", f.path,
+                                   f.line[i], f.item(i), m, fmt::join(names, ", ")));
     out[static_cast<std::size_t>(i)] = index;
   }
   return out;

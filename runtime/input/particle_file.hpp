@@ -25,7 +25,9 @@ struct ParticleFile {
   std::vector<std::string> material;  // [n] as written ("" when the file has no material column)
   std::vector<int> line;              // [n] the file line of each row, for later messages
   bool point_ids = false;             // messages say "point id i" (a .vtu, from 0), not "row i+1" (a CSV)
-  std::string item(int i) const { return point_ids ? "point id " + std::to_string(i) : "row " + std::to_string(i + 1); }
+  std::string item(int i) const {
+    return point_ids ? "point id " + std::to_string(i) : "row " + std::to_string(i + 1);
+  }
   int size() const { return static_cast<int>(volume.size()); }
 };
 

@@ -27,12 +27,12 @@ namespace {
 
 struct Doc {
   std::string path;
-  std::string bytes;            // the whole file
-  std::size_t appended = 0;     // where the appended data starts (after '_'), or npos
+  std::string bytes;             // the whole file
+  std::size_t appended = 0;      // where the appended data starts (after '_'), or npos
   std::size_t appended_end = 0;  // where it ends (the last </AppendedData>)
   std::string appended_encoding;
-  bool swap = false;            // the file's byte order is not the machine's
-  int header_bytes = 4;         // UInt32 or UInt64 block headers
+  bool swap = false;     // the file's byte order is not the machine's
+  int header_bytes = 4;  // UInt32 or UInt64 block headers
   bool zlib = false;
 };
 
@@ -111,7 +111,8 @@ struct Source {
   // `n` bytes at byte `at` of this block's decoded stream (base64 decodes from the start).
   std::string bytes(std::size_t at, std::size_t n) const {
     if (!base64) {
-      if (start + at + n > std::min(end, text->size())) throw std::runtime_error("the data ends before the array does");
+      if (start + at + n > std::min(end, text->size()))
+        throw std::runtime_error("the data ends before the array does");
       return text->substr(start + at, n);
     }
     const std::string all = base64_decode(*text, start, base64_chars(at + n));
@@ -122,7 +123,8 @@ struct Source {
   // compressed block's header apart from its data).
   Source after_chars(std::size_t chars) const {
     std::size_t k = start, seen = 0;
-    while (k < text->size() && seen < chars) seen += std::isspace(static_cast<unsigned char>((*text)[k++])) ? 0 : 1;
+    while (k < text->size() && seen < chars)
+      seen += std::isspace(static_cast<unsigned char>((*text)[k++])) ? 0 : 1;
     return Source{text, k, true};
   }
 };
@@ -155,7 +157,8 @@ std::string block_data(const Doc& d, const Source& s) {
   const std::size_t header_size = hb * (3 + blocks);
   const std::string header = s.bytes(0, header_size);
   const std::uint64_t block_size = header_value(d, header, 1), last = header_value(d, header, 2);
-  const Source data = s.base64 ? s.after_chars(base64_chars(header_size)) : Source{s.text, s.start + header_size, false, s.end};
+  const Source data = s.base64 ? s.after_chars(base64_chars(header_size))
+                               : Source{s.text, s.start + header_size, false, s.end};
   std::uint64_t total = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) total += header_value(d, header, 3 + b);
   const std::string packed = data.bytes(0, total);
@@ -165,7 +168,8 @@ std::string block_data(const Doc& d, const Source& s) {
     const std::uint64_t csize = header_value(d, header, 3 + b);
     uLongf size = (b + 1 == blocks && last != 0) ? last : block_size;
     std::string chunk(size, '\0');
-    if (uncompress(reinterpret_cast<Bytef*>(chunk.data()), &size, reinterpret_cast<const Bytef*>(packed.data() + at), csize) != Z_OK)
+    if (uncompress(reinterpret_cast<Bytef*>(chunk.data()), &size,
+                   reinterpret_cast<const Bytef*>(packed.data() + at), csize) != Z_OK)
       throw std::runtime_error(fmt::format("zlib block {} does not decompress", b));
     chunk.resize(size);
     out += chunk;
@@ -177,9 +181,9 @@ std::string block_data(const Doc& d, const Source& s) {
 // One DataArray as doubles (integers converted exactly up to 2^53).
 std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count, const std::string& what) {
   const std::string type = attribute(a, "type"), format = attribute(a, "format");
-  static const std::map<std::string, int> sizes = {{"Float32", 4}, {"Float64", 8}, {"Int8", 1},  {"UInt8", 1},
-                                                   {"Int16", 2},   {"UInt16", 2},  {"Int32", 4}, {"UInt32", 4},
-                                                   {"Int64", 8},   {"UInt64", 8}};
+  static const std::map<std::string, int> sizes = {
+      {"Float32", 4}, {"Float64", 8}, {"Int8", 1},   {"UInt8", 1}, {"Int16", 2},
+      {"UInt16", 2},  {"Int32", 4},   {"UInt32", 4}, {"Int64", 8}, {"UInt64", 8}};
   if (!sizes.count(type)) fail_at(d, a, fmt::format("{}: type=\"{}\" is not a numeric VTK type", what, type));
   std::vector<double> out;
   if (format == "ascii") {
@@ -199,7 +203,8 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
       text = own_text(a);
       s = Source{&text, 0, true};
     } else {
-      if (d.appended == std::string::npos) fail_at(d, a, what + ": format=\"appended\" but the file has no AppendedData");
+      if (d.appended == std::string::npos)
+        fail_at(d, a, what + ": format=\"appended\" but the file has no AppendedData");
       const std::size_t offset = static_cast<std::size_t>(whole_number(d, a, "offset"));
       if (d.appended_encoding == "raw") {
         s = Source{&d.bytes, d.appended + offset, false, d.appended_end};
@@ -215,7 +220,8 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
       fail_at(d, a, fmt::format("{}: cannot decode the {} data: {}", what, format, e.what()));
     }
     const std::size_t size = static_cast<std::size_t>(sizes.at(type));
-    if (bytes.size() % size != 0) fail_at(d, a, fmt::format("{}: {} bytes is not a whole number of {}", what, bytes.size(), type));
+    if (bytes.size() % size != 0)
+      fail_at(d, a, fmt::format("{}: {} bytes is not a whole number of {}", what, bytes.size(), type));
     out.resize(bytes.size() / size);
     for (std::size_t k = 0; k < out.size(); ++k) {
       char b[8];
@@ -226,21 +232,32 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
         std::memcpy(&v, b, sizeof v);
         return static_cast<double>(v);
       };
-      if (type == "Float32") out[k] = get(float{});
-      else if (type == "Float64") out[k] = get(double{});
-      else if (type == "Int8") out[k] = get(std::int8_t{});
-      else if (type == "UInt8") out[k] = get(std::uint8_t{});
-      else if (type == "Int16") out[k] = get(std::int16_t{});
-      else if (type == "UInt16") out[k] = get(std::uint16_t{});
-      else if (type == "Int32") out[k] = get(std::int32_t{});
-      else if (type == "UInt32") out[k] = get(std::uint32_t{});
-      else if (type == "Int64") out[k] = get(std::int64_t{});
-      else out[k] = get(std::uint64_t{});
+      if (type == "Float32")
+        out[k] = get(float{});
+      else if (type == "Float64")
+        out[k] = get(double{});
+      else if (type == "Int8")
+        out[k] = get(std::int8_t{});
+      else if (type == "UInt8")
+        out[k] = get(std::uint8_t{});
+      else if (type == "Int16")
+        out[k] = get(std::int16_t{});
+      else if (type == "UInt16")
+        out[k] = get(std::uint16_t{});
+      else if (type == "Int32")
+        out[k] = get(std::int32_t{});
+      else if (type == "UInt32")
+        out[k] = get(std::uint32_t{});
+      else if (type == "Int64")
+        out[k] = get(std::int64_t{});
+      else
+        out[k] = get(std::uint64_t{});
     }
   } else {
     fail_at(d, a, fmt::format("{}: format=\"{}\" (VTK writes ascii, binary or appended)", what, format));
   }
-  if (out.size() != count) fail_at(d, a, fmt::format("{}: {} values where {} were expected", what, out.size(), count));
+  if (out.size() != count)
+    fail_at(d, a, fmt::format("{}: {} values where {} were expected", what, out.size(), count));
   return out;
 }
 
@@ -250,7 +267,10 @@ const xmlNode* find_array(const Doc& d, const xmlNode* parent, const char* name)
   if (!parent) return nullptr;
   for (const xmlNode* a : children(parent, "DataArray")) {
     if (name && attribute(a, "Name") != name) continue;
-    if (found) fail_at(d, a, fmt::format("a second DataArray '{}' (the first is on line {})", name ? name : "", xmlGetLineNo(found)));
+    if (found)
+      fail_at(d, a,
+              fmt::format("a second DataArray '{}' (the first is on line {})", name ? name : "",
+                          xmlGetLineNo(found)));
     found = a;
   }
   return found;
@@ -297,12 +317,17 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   if (order != "LittleEndian" && order != "BigEndian" && !order.empty())
     fail_at(d, root, fmt::format("byte_order=\"{}\" (LittleEndian or BigEndian)", order));
   d.swap = (order == "BigEndian") != (std::endian::native == std::endian::big) && !order.empty();
-  if (header == "UInt64") d.header_bytes = 8;
-  else if (!header.empty() && header != "UInt32") fail_at(d, root, fmt::format("header_type=\"{}\" (UInt32 or UInt64)", header));
-  if (compressor == "vtkZLibDataCompressor") d.zlib = true;
+  if (header == "UInt64")
+    d.header_bytes = 8;
+  else if (!header.empty() && header != "UInt32")
+    fail_at(d, root, fmt::format("header_type=\"{}\" (UInt32 or UInt64)", header));
+  if (compressor == "vtkZLibDataCompressor")
+    d.zlib = true;
   else if (!compressor.empty())
-    fail_at(d, root, fmt::format("compressor=\"{}\": only vtkZLibDataCompressor (or none) is read; write with "
-                                 "SetCompressorTypeToZLib() or SetCompressorTypeToNone()", compressor));
+    fail_at(d, root,
+            fmt::format("compressor=\"{}\": only vtkZLibDataCompressor (or none) is read; write with "
+                        "SetCompressorTypeToZLib() or SetCompressorTypeToNone()",
+                        compressor));
   for (const xmlNode* a : children(root, "AppendedData")) {
     d.appended_encoding = attribute(a, "encoding");
     if (d.appended_encoding != "raw" && d.appended_encoding != "base64")
@@ -312,12 +337,14 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   if (grids.size() != 1) fail_at(d, root, "no UnstructuredGrid element");
   const std::vector<const xmlNode*> pieces = children(grids[0], "Piece");
   if (pieces.size() != 1)
-    fail_at(d, grids[0], fmt::format("{} Piece elements: one is read (merge the pieces first)", pieces.size()));
+    fail_at(d, grids[0],
+            fmt::format("{} Piece elements: one is read (merge the pieces first)", pieces.size()));
   const xmlNode* piece = pieces[0];
   const long long n = whole_number(d, piece, "NumberOfPoints");
   if (n == 0) fail_at(d, piece, "the grid has no points");
 
-  const std::vector<const xmlNode*> points = children(piece, "Points"), point_data = children(piece, "PointData");
+  const std::vector<const xmlNode*> points = children(piece, "Points"),
+                                    point_data = children(piece, "PointData");
   if (points.size() != 1) fail_at(d, piece, "no Points element");
   const xmlNode* xa = find_array(d, points[0], nullptr);
   if (!xa) fail_at(d, points[0], "Points without a DataArray");
@@ -329,12 +356,14 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   const xmlNode* ma = point_data.empty() ? nullptr : find_array(d, point_data[0], "material");
   for (const xmlNode* a : {va, ma}) {
     const std::string nc = a ? attribute(a, "NumberOfComponents") : "";
-    if (!nc.empty() && nc != "1") fail_at(d, a, fmt::format("PointData '{}': NumberOfComponents must be 1", attribute(a, "Name")));
+    if (!nc.empty() && nc != "1")
+      fail_at(d, a, fmt::format("PointData '{}': NumberOfComponents must be 1", attribute(a, "Name")));
   }
   const std::size_t count = static_cast<std::size_t>(n);
   const std::vector<double> x3 = read_array(d, xa, 3 * count, "Points");
   const std::vector<double> volume = read_array(d, va, count, "PointData 'volume'");
-  const std::vector<double> material = ma ? read_array(d, ma, count, "PointData 'material'") : std::vector<double>();
+  const std::vector<double> material =
+      ma ? read_array(d, ma, count, "PointData 'material'") : std::vector<double>();
 
   ParticleFile f;
   f.path = path;
@@ -342,19 +371,28 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   f.point_ids = true;
   std::set<std::vector<double>> seen;
   for (std::size_t i = 0; i < count; ++i) {
-    std::vector<double> x(x3.begin() + static_cast<std::ptrdiff_t>(3 * i), x3.begin() + static_cast<std::ptrdiff_t>(3 * i + dim));
+    std::vector<double> x(x3.begin() + static_cast<std::ptrdiff_t>(3 * i),
+                          x3.begin() + static_cast<std::ptrdiff_t>(3 * i + dim));
     for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(x3[3 * i + c])) fail_at(d, xa, fmt::format("Points: point id {}: coordinate {} is not finite", i, c));
+      if (!std::isfinite(x3[3 * i + c]))
+        fail_at(d, xa, fmt::format("Points: point id {}: coordinate {} is not finite", i, c));
     if (dim == 2 && x3[3 * i + 2] != 0)
-      fail_at(d, xa, fmt::format("Points: point id {}: z = {} in a 2D scene (2D points have z = 0)", i, x3[3 * i + 2]));
+      fail_at(
+          d, xa,
+          fmt::format("Points: point id {}: z = {} in a 2D scene (2D points have z = 0)", i, x3[3 * i + 2]));
     if (!(volume[i] > 0) || !std::isfinite(volume[i]))
-      fail_at(d, va, fmt::format("PointData 'volume': point id {}: volume must be positive and finite (got {})", i, volume[i]));
-    if (!seen.insert(x).second) fail_at(d, xa, fmt::format("Points: point id {}: a second particle at the same position", i));
+      fail_at(d, va,
+              fmt::format("PointData 'volume': point id {}: volume must be positive and finite (got {})", i,
+                          volume[i]));
+    if (!seen.insert(x).second)
+      fail_at(d, xa, fmt::format("Points: point id {}: a second particle at the same position", i));
     std::string m;
     if (ma) {
       const double v = material[i];
       if (!(v >= 0) || v != std::floor(v) || v > 1e9)
-        fail_at(d, ma, fmt::format("PointData 'material': point id {}: {} is not a material index (0, 1, ...)", i, v));
+        fail_at(
+            d, ma,
+            fmt::format("PointData 'material': point id {}: {} is not a material index (0, 1, ...)", i, v));
       m = std::to_string(static_cast<long long>(v));
     }
     f.x.insert(f.x.end(), x.begin(), x.end());

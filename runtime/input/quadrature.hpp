@@ -11,7 +11,7 @@
 namespace pd {
 
 enum class Quadrature {
-  Volume,  // a neighbour counts with its whole volume when its centre is inside the horizon
+  Volume,         // a neighbour counts with its whole volume when its centre is inside the horizon
   PartialLinear,  // paper 002 eq. (2.16): the share falls linearly from delta - h/2 to delta + h/2
   PartialExact,   // paper 002 §2.4: the exact cell-horizon overlap (closed form 2D, adaptive 3D)
   Obq,     // per-family least-norm weights exact for paper 001's reproducing space, collocation assembly

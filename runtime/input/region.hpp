@@ -14,11 +14,11 @@ struct Region {
   // particles with a missing neighbour within delta) -- a Dirichlet collar that keeps one
   // horizon thick when a study refines h or changes delta/h.
   enum class Kind { All, Side, Box, Outside, Collar } kind = Kind::All;
-  std::string side;          // left right bottom top back front
-  double thickness = 0;      // Side: depth into the body; 0 = half a spacing (the outermost row).
-                             // Collar: depth from the box faces, set from `horizons` by region_particles
-  double horizons = 0;       // Collar: depth in horizons
-  Point min{}, max{};        // Box / Outside (the complement of the box)
+  std::string side;      // left right bottom top back front
+  double thickness = 0;  // Side: depth into the body; 0 = half a spacing (the outermost row).
+                         // Collar: depth from the box faces, set from `horizons` by region_particles
+  double horizons = 0;   // Collar: depth in horizons
+  Point min{}, max{};    // Box / Outside (the complement of the box)
   // Optional `within: {min, max}`: only the region's particles inside this box (the middle
   // of a side, whatever the placement puts its outermost row).
   bool has_within = false;

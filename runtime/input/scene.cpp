@@ -1,16 +1,17 @@
 // The scene reader: YAML -> Scene, every key checked (runtime/input/yaml_keys.hpp).
 #include "input/scene.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "input/block_domain.hpp"
 #include "input/particle_domain.hpp"
+#include "input/smoothing_influence.hpp"
 #include "input/solver_reader.hpp"
 #include "input/yaml_keys.hpp"
 #include "kernel_abi.hpp"
-#include "input/smoothing_influence.hpp"
 
 namespace pd {
 
@@ -50,7 +51,8 @@ Shape read_shape(const YamlAt& at, int dim, bool inclusion) {
     const YamlAt p = m.get("polygon");
     require_list(p);
     s.kind = Shape::Kind::Polygon;
-    for (std::size_t i = 0; i < p.node.size(); ++i) s.vertices.push_back(to_point(p.element(p.node[i], i), dim));
+    for (std::size_t i = 0; i < p.node.size(); ++i)
+      s.vertices.push_back(to_point(p.element(p.node[i], i), dim));
     if (s.vertices.size() < 3) p.fail("a polygon needs at least 3 vertices");
     ++kinds;
   }
@@ -78,7 +80,8 @@ Region read_region(const YamlAt& at, int dim) {
   int kinds = 0;
   if (m.has("side")) {
     r.kind = Region::Kind::Side;
-    r.side = m.choice("side", "", dim == 2 ? std::vector<std::string>(kSides.begin(), kSides.begin() + 4) : kSides);
+    r.side = m.choice("side", "",
+                      dim == 2 ? std::vector<std::string>(kSides.begin(), kSides.begin() + 4) : kSides);
     ++kinds;
   }
   r.thickness = m.number("thickness", 0.0);
@@ -113,7 +116,8 @@ Region read_region(const YamlAt& at, int dim) {
     r.within_max = to_point(b.get("max"), dim);
     b.finish();
     for (int i = 0; i < dim; ++i)
-      if (r.within_max[i] < r.within_min[i]) m.get("within").fail("max must not be below min in any coordinate");
+      if (r.within_max[i] < r.within_min[i])
+        m.get("within").fail("max must not be below min in any coordinate");
   }
   m.finish();
   return r;
@@ -179,15 +183,20 @@ FieldSpec read_field(const YamlAt& at, int dim) {
     if (m.has(key)) f.parameters[key] = m.number(key);
   m.finish();
   for (const char* key : {"radius", "E_inclusion"})
-    if (f.parameters.count(key) && f.parameters[key] <= 0) m.get(key).fail(std::string(key) + " must be positive");
-  if (f.parameters.count("nu_inclusion") && !(f.parameters["nu_inclusion"] > -1 && f.parameters["nu_inclusion"] < 0.5))
+    if (f.parameters.count(key) && f.parameters[key] <= 0)
+      m.get(key).fail(std::string(key) + " must be positive");
+  if (f.parameters.count("nu_inclusion") &&
+      !(f.parameters["nu_inclusion"] > -1 && f.parameters["nu_inclusion"] < 0.5))
     m.get("nu_inclusion").fail("nu_inclusion must lie in (-1, 0.5)");
-  if (f.parameters.count("stretch") && !(f.parameters["stretch"] > -1)) m.get("stretch").fail("stretch must exceed -1");
-  if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0) m.get("half_length").fail("half_length must be positive");
+  if (f.parameters.count("stretch") && !(f.parameters["stretch"] > -1))
+    m.get("stretch").fail("stretch must exceed -1");
+  if (f.parameters.count("half_length") && f.parameters["half_length"] <= 0)
+    m.get("half_length").fail("half_length must be positive");
   if (dim == 2)
     for (const char* key : {"e13", "e23", "e33", "z0"})
       if (f.parameters.count(key)) m.get(key).fail(std::string(key) + " belongs to 3D scenes");
-  if (f.parameters.count("E") && f.parameters["E"] <= 0) m.get("E").fail("Young's modulus E must be positive");
+  if (f.parameters.count("E") && f.parameters["E"] <= 0)
+    m.get("E").fail("Young's modulus E must be positive");
   if (f.parameters.count("nu") && !(f.parameters["nu"] > -1 && f.parameters["nu"] < 0.5))
     m.get("nu").fail("Poisson's ratio nu must lie in (-1, 0.5)");
   return f;
@@ -233,18 +242,24 @@ MaterialSpec read_material(const YamlAt& at, int dim) {
   // would end in "the residual is not finite". Name the key instead.
   for (const char* key : {"E", "K", "G"})
     if (m.has(key) && std::fabs(m.number(key)) > kLargestModulus)
-      m.get(key).fail(fmt::format("{:g} is too large a modulus for double precision (the solver squares forces; "
-                                  "above {:g} they overflow): give the moduli in units that make them moderate (e.g. "
-                                  "MPa or GPa instead of Pa)",
-                                  m.number(key), kLargestModulus));
-  const std::string plane = m.choice("plane", dim == 2 ? "strain" : "none", dim == 2 ? std::vector<std::string>{"strain", "stress"} : std::vector<std::string>{"none"});
-  s.plane = plane == "strain" ? PlaneAssumption::Strain : plane == "stress" ? PlaneAssumption::Stress : PlaneAssumption::None;
+      m.get(key).fail(
+          fmt::format("{:g} is too large a modulus for double precision (the solver squares forces; "
+                      "above {:g} they overflow): give the moduli in units that make them moderate (e.g. "
+                      "MPa or GPa instead of Pa)",
+                      m.number(key), kLargestModulus));
+  const std::string plane =
+      m.choice("plane", dim == 2 ? "strain" : "none",
+               dim == 2 ? std::vector<std::string>{"strain", "stress"} : std::vector<std::string>{"none"});
+  s.plane = plane == "strain"   ? PlaneAssumption::Strain
+            : plane == "stress" ? PlaneAssumption::Stress
+                                : PlaneAssumption::None;
   s.density = m.number("density", 1.0);
   if (s.density <= 0) m.get("density").fail("density must be positive");
   if (m.has("parameters")) {
     const YamlAt p = m.get("parameters");
     MapReader pm(p);
-    for (auto it = p.node.begin(); it != p.node.end(); ++it) s.parameters[it->first.Scalar()] = pm.number(it->first.Scalar());
+    for (auto it = p.node.begin(); it != p.node.end(); ++it)
+      s.parameters[it->first.Scalar()] = pm.number(it->first.Scalar());
     pm.finish();
   }
   m.finish();
@@ -273,8 +288,11 @@ void read_condition_method(const YamlAt& at, MapReader& m, BoundaryCondition& bc
   using K = BoundaryCondition::Kind;
   if (bc.kind == K::Velocity || bc.kind == K::BodyForce)
     at.fail("a fictitious layer carries fixed, displacement, field or traction conditions");
-  if (bc.kind == K::Traction && dim != 2) at.fail("the fictitious-layer traction (paper 003 eqs. 32-35) is two-dimensional");
-  if (bc.time) at.fail("a fictitious layer's values are applied in full (statics: by the load factor); no time_function");
+  if (bc.kind == K::Traction && dim != 2)
+    at.fail("the fictitious-layer traction (paper 003 eqs. 32-35) is two-dimensional");
+  if (bc.time)
+    at.fail(
+        "a fictitious layer's values are applied in full (statics: by the load factor); no time_function");
   bc.method = BoundaryCondition::Method::fictitious_layer;
   const YamlAt face = m.get("face");
   MapReader fm(face);
@@ -300,7 +318,8 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   }
   for (const char* key : {"displacement", "velocity"}) {
     if (!m.has(key)) continue;
-    bc.kind = std::string(key) == "displacement" ? BoundaryCondition::Kind::Displacement : BoundaryCondition::Kind::Velocity;
+    bc.kind = std::string(key) == "displacement" ? BoundaryCondition::Kind::Displacement
+                                                 : BoundaryCondition::Kind::Velocity;
     const YamlAt d = m.get(key);
     MapReader dm(d);
     for (const char* c : {"x", "y", "z"}) {
@@ -322,7 +341,8 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
   }
   for (const char* key : {"traction", "body_force"}) {
     if (!m.has(key)) continue;
-    bc.kind = std::string(key) == "traction" ? BoundaryCondition::Kind::Traction : BoundaryCondition::Kind::BodyForce;
+    bc.kind = std::string(key) == "traction" ? BoundaryCondition::Kind::Traction
+                                             : BoundaryCondition::Kind::BodyForce;
     bc.values = to_point(m.get(key), dim);
     ++kinds;
   }
@@ -340,7 +360,8 @@ BoundaryCondition read_condition(const YamlAt& at, int dim) {
     if (bc.region.kind != Region::Kind::Side && bc.face_measure <= 0)
       at.fail("a traction on a region that is not a side needs face_measure (the length or area it acts on)");
   }
-  if (bc.kind != BoundaryCondition::Kind::Field && m.has("components")) m.get("components").fail("components belongs to field conditions");
+  if (bc.kind != BoundaryCondition::Kind::Field && m.has("components"))
+    m.get("components").fail("components belongs to field conditions");
   m.finish();
   return bc;
 }
@@ -357,7 +378,8 @@ BodyForceField read_body_force(const YamlAt& at, const Scene& s) {
   m.finish();
   const YamlAt solution = field.child(field.node["solution"], "solution");
   if (b.field.solution != "u1" && b.field.solution != "u2")
-    solution.fail("'" + b.field.solution + "' has no body force density (u1 and u2, paper 001's manufactured solutions, have)");
+    solution.fail("'" + b.field.solution +
+                  "' has no body force density (u1 and u2, paper 001's manufactured solutions, have)");
   if (s.dim != 2) at.fail("the manufactured fields u1 and u2 are 2D");
   if (s.materials[0].plane == PlaneAssumption::Stress)
     at.fail("u1 and u2's body force is the plane-strain one; the body's material is plane stress");
@@ -373,8 +395,10 @@ void read_reference_at(const YamlAt& at, Probe& probe, int dim) {
     return;
   }
   const std::string v = as_text(at);
-  if (v == "particles") probe.reference_at = Probe::ReferenceAt::particles;
-  else if (v != "region") at.fail("'" + v + "': expected region, particles or a point [x, y(, z)]");
+  if (v == "particles")
+    probe.reference_at = Probe::ReferenceAt::particles;
+  else if (v != "region")
+    at.fail("'" + v + "': expected region, particles or a point [x, y(, z)]");
   const Region::Kind k = probe.region.kind;
   if (v == "region" && k != Region::Kind::Box && k != Region::Kind::Side)
     at.fail("region: only a box or side region has a reference point; give particles or a point");
@@ -383,13 +407,15 @@ void read_reference_at(const YamlAt& at, Probe& probe, int dim) {
 // A parameter the law does not take is most likely a misspelt one (`stabb` for `stab`):
 // the law then ran with its default, or refused, so say which names it takes.
 void warn_unused_parameters(const abi::LawDescriptor& law, const YamlAt& material,
-                            const std::map<std::string, double>& parameters, std::vector<std::string>& warnings) {
+                            const std::map<std::string, double>& parameters,
+                            std::vector<std::string>& warnings) {
   for (const std::string& name : unused_parameters(law, parameters)) {
     std::string taken;
     for (int i = 0; i < law.n_params; ++i) taken += (i ? ", " : "") + std::string(law.param_names[i]);
-    const YamlAt at = material.child(material.node["parameters"], "parameters").child(material.node["parameters"][name], name);
-    warnings.push_back(at.location() + ": law " + law.name + " takes no parameter '" + name + "', it is ignored (the law's parameters: " +
-                       (taken.empty() ? "none" : taken) + ")");
+    const YamlAt at = material.child(material.node["parameters"], "parameters")
+                          .child(material.node["parameters"][name], name);
+    warnings.push_back(at.location() + ": law " + law.name + " takes no parameter '" + name +
+                       "', it is ignored (the law's parameters: " + (taken.empty() ? "none" : taken) + ")");
   }
 }
 
@@ -402,12 +428,15 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (s.dim != 2 && s.dim != 3) m.get("dimension").fail("dimension must be 2 or 3");
 
   // A body from a particle file, or a box lattice.
-  const YAML::Node domain = root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
+  const YAML::Node domain =
+      root.IsMap() ? root["domain"] : YAML::Node();  // a missing domain is reported below
   const bool from_file = domain && domain.IsMap() && domain["particles"];
   const bool from_blocks = domain && domain.IsMap() && domain["blocks"];
   std::optional<ParticleFile> cloud;
-  if (from_file) cloud = read_particle_domain(m.get("domain"), s);
-  else if (from_blocks) read_block_domain(m.get("domain"), s);
+  if (from_file)
+    cloud = read_particle_domain(m.get("domain"), s);
+  else if (from_blocks)
+    read_block_domain(m.get("domain"), s);
   else {
     MapReader d(m.get("domain"));
     MapReader box(d.get("box"));
@@ -438,46 +467,70 @@ Scene read(const YAML::Node& root, const std::string& file) {
     }
     if (d.has("obq_symmetric")) {
       s.obq_symmetric = d.boolean("obq_symmetric", false);
-      if (!is_obq(s.quadrature)) d.get("obq_symmetric").fail("obq_symmetric needs quadrature: obq or obq_cut");
+      if (!is_obq(s.quadrature))
+        d.get("obq_symmetric").fail("obq_symmetric needs quadrature: obq or obq_cut");
     }
     if (d.has("perturbation")) {
       MapReader p(d.get("perturbation"));
       s.perturbation = p.number("amplitude", 0.0);
-      if (s.perturbation < 0 || s.perturbation >= 0.5) p.get("amplitude").fail("amplitude is a fraction of h in [0, 0.5)");
+      if (s.perturbation < 0 || s.perturbation >= 0.5)
+        p.get("amplitude").fail("amplitude is a fraction of h in [0, 0.5)");
       s.seed = static_cast<unsigned>(p.integer("seed", 1));
       p.finish();
     }
     if (d.has("compensation")) {
       s.compensation = d.boolean("compensation", false);
       if (s.compensation && is_obq(s.quadrature))
-        d.get("compensation").fail("the compensation factor scales bond volumes; obq and obq_cut replace them by their own weights");
+        d.get("compensation")
+            .fail(
+                "the compensation factor scales bond volumes; obq and obq_cut replace them by their own "
+                "weights");
       if (s.compensation && s.perturbation > 0)
-        d.get("compensation").fail("the compensation factor compares each family with the full family of a regular lattice: not on a perturbed cloud");
+        d.get("compensation")
+            .fail(
+                "the compensation factor compares each family with the full family of a regular lattice: not "
+                "on a perturbed cloud");
     }
     if (d.has("surface_correction")) {
       const std::string match = d.text("surface_correction", "none");
       if (match != "none" && match != "terms" && match != "responses")
-        d.get("surface_correction").fail("surface_correction is none, terms (the references' recipe) or responses (both trial responses matched)");
+        d.get("surface_correction")
+            .fail(
+                "surface_correction is none, terms (the references' recipe) or responses (both trial "
+                "responses matched)");
       s.surface_correction = match != "none";
       s.surface_match_responses = match == "responses";
       if (s.surface_correction && is_obq(s.quadrature))
-        d.get("surface_correction").fail("the surface correction compares each family with the full family of a regular lattice; obq and obq_cut replace the bond volumes by their own weights");
+        d.get("surface_correction")
+            .fail(
+                "the surface correction compares each family with the full family of a regular lattice; obq "
+                "and obq_cut replace the bond volumes by their own weights");
       if (s.surface_correction && s.compensation)
-        d.get("surface_correction").fail("choose one of compensation (paper 002) and surface_correction (paper 003): both correct the same truncated families");
+        d.get("surface_correction")
+            .fail(
+                "choose one of compensation (paper 002) and surface_correction (paper 003): both correct the "
+                "same truncated families");
       if (s.surface_correction && s.perturbation > 0)
-        d.get("surface_correction").fail("the surface correction compares each family with the full family of a regular lattice: not on a perturbed cloud");
+        d.get("surface_correction")
+            .fail(
+                "the surface correction compares each family with the full family of a regular lattice: not "
+                "on a perturbed cloud");
     }
     if (d.has("gauss_points")) {
       // {per_axis: 1|2|3, support: r_w / h}: fixed Gauss points with MLS displacements.
       MapReader g(d.get("gauss_points"));
       s.gauss_points = g.integer("per_axis", 2);
-      if (s.gauss_points < 1 || s.gauss_points > 3) g.get("per_axis").fail("per_axis is 1, 2 or 3 Gauss points per axis of a cell");
+      if (s.gauss_points < 1 || s.gauss_points > 3)
+        g.get("per_axis").fail("per_axis is 1, 2 or 3 Gauss points per axis of a cell");
       s.gauss_support = g.number("support", 3.0);
-      if (!(s.gauss_support >= 1.0)) g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
+      if (!(s.gauss_support >= 1.0))
+        g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
       g.finish();
       if (s.quadrature != Quadrature::Volume || s.compensation || s.surface_correction)
-        d.get("gauss_points").fail("the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
-                                   "another quadrature, compensation or surface_correction");
+        d.get("gauss_points")
+            .fail(
+                "the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
+                "another quadrature, compensation or surface_correction");
     }
     for (const char* key : {"holes", "inclusions"}) {
       if (!d.has(key)) continue;
@@ -504,14 +557,22 @@ Scene read(const YAML::Node& root, const std::string& file) {
   s.law = m.text("law");
   const abi::LawDescriptor* law = abi::find_law(s.law);
   if (law == nullptr) m.get("law").fail("unknown law '" + s.law + "' (pd laws lists them)");
-  if (law->dim != s.dim) m.get("law").fail("law " + s.law + " is " + std::to_string(law->dim) + "D, the scene is " + std::to_string(s.dim) + "D");
+  if (law->dim != s.dim)
+    m.get("law").fail("law " + s.law + " is " + std::to_string(law->dim) + "D, the scene is " +
+                      std::to_string(s.dim) + "D");
   if (s.compensation && law->intact.energy == nullptr)
-    m.get("domain").fail("compensation: law " + s.law + " has no energy kernel, and the compensation factor is a ratio of energy densities (paper 002 eq. 3.61)");
+    m.get("domain").fail("compensation: law " + s.law +
+                         " has no energy kernel, and the compensation factor is a ratio of energy densities "
+                         "(paper 002 eq. 3.61)");
   s.influence = m.text("influence", "const");
-  if (abi::find_influence(s.influence) == nullptr) m.get("influence").fail("unknown influence function '" + s.influence + "' (pd laws lists them)");
+  if (abi::find_influence(s.influence) == nullptr)
+    m.get("influence").fail("unknown influence function '" + s.influence + "' (pd laws lists them)");
   if (law->ignores_influence && s.influence != "const")  // the generator found no path from w to the force
-    s.warnings.push_back(m.get("influence").location() + ": law " + s.law + " does not read the influence function (its "
-                         "micromodulus or kernel is built in): '" + s.influence + "' leaves its forces unchanged and only "
+    s.warnings.push_back(m.get("influence").location() + ": law " + s.law +
+                         " does not read the influence function (its "
+                         "micromodulus or kernel is built in): '" +
+                         s.influence +
+                         "' leaves its forces unchanged and only "
                          "weights the family checks and the bonds a short-horizon preconditioner keeps");
 
   {
@@ -522,9 +583,11 @@ Scene read(const YAML::Node& root, const std::string& file) {
       const YamlAt mi = mats.element(mats.node[i], i);
       s.materials.push_back(read_material(mi, s.dim));
       for (std::size_t j = 0; j + 1 < s.materials.size(); ++j)
-        if (s.materials[j].name == s.materials.back().name) mi.fail("material '" + s.materials.back().name + "' defined twice");
+        if (s.materials[j].name == s.materials.back().name)
+          mi.fail("material '" + s.materials.back().name + "' defined twice");
       try {
-        law_parameters(*law, s.materials.back().elastic, s.materials.back().plane, s.materials.back().parameters);
+        law_parameters(*law, s.materials.back().elastic, s.materials.back().plane,
+                       s.materials.back().parameters);
       } catch (const std::invalid_argument& e) {
         mi.fail(e.what());
       }
@@ -540,7 +603,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (m.has("boundary")) {
     const YamlAt list = m.get("boundary");
     require_list(list);
-    for (std::size_t i = 0; i < list.node.size(); ++i) s.boundary.push_back(read_condition(list.element(list.node[i], i), s.dim));
+    for (std::size_t i = 0; i < list.node.size(); ++i)
+      s.boundary.push_back(read_condition(list.element(list.node[i], i), s.dim));
   }
   if (m.has("cracks")) {
     const YamlAt list = m.get("cracks");
@@ -551,9 +615,11 @@ Scene read(const YAML::Node& root, const std::string& file) {
       Crack crack;
       const YamlAt pts = c.get(s.dim == 2 ? "segment" : "polygon");
       require_list(pts);
-      for (std::size_t j = 0; j < pts.node.size(); ++j) crack.points.push_back(to_point(pts.element(pts.node[j], j), s.dim));
+      for (std::size_t j = 0; j < pts.node.size(); ++j)
+        crack.points.push_back(to_point(pts.element(pts.node[j], j), s.dim));
       if (s.dim == 2 && crack.points.size() != 2) pts.fail("a 2D crack is a segment: two points");
-      if (s.dim == 3 && crack.points.size() < 3) pts.fail("a 3D crack is a planar polygon: at least three points");
+      if (s.dim == 3 && crack.points.size() < 3)
+        pts.fail("a 3D crack is a planar polygon: at least three points");
       if (s.dim == 2 && crack.points[0] == crack.points[1]) pts.fail("the two points coincide");
       if (s.dim == 3) check_crack_polygon(pts, crack.points);
       crack.pressure = c.number("pressure", 0.0);
@@ -575,9 +641,12 @@ Scene read(const YAML::Node& root, const std::string& file) {
     s.solver = read_solver(m.get("solver"));
     // The distributed families run the bond kernels; the Gauss families' assembler is serial.
     if (s.solver.backend == Backend::petsc && s.gauss_points > 0)
-      MapReader(m.get("solver")).get("backend").fail(
-          "backend petsc does not integrate over Gauss points (domain.gauss_points): its ranks run the bond families "
-          "only; use the serial backend");
+      MapReader(m.get("solver"))
+          .get("backend")
+          .fail(
+              "backend petsc does not integrate over Gauss points (domain.gauss_points): its ranks run the "
+              "bond families "
+              "only; use the serial backend");
   }
   if (m.has("output")) {
     MapReader o(m.get("output"));
@@ -588,9 +657,14 @@ Scene read(const YAML::Node& root, const std::string& file) {
       MapReader sm(o.get("smoothing"));
       s.output.smoothing_influence = sm.text("influence");
       const abi::InfluenceDescriptor* inf = abi::find_influence(s.output.smoothing_influence);
-      if (inf == nullptr) sm.get("influence").fail("unknown influence function '" + s.output.smoothing_influence + "' (pd laws lists them)");
+      if (inf == nullptr)
+        sm.get("influence")
+            .fail("unknown influence function '" + s.output.smoothing_influence + "' (pd laws lists them)");
       if (!can_smooth_with(inf->weight))
-        sm.get("influence").fail("'" + s.output.smoothing_influence + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
+        sm.get("influence")
+            .fail("'" + s.output.smoothing_influence +
+                  "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself "
+                  "by w(0): choose a bounded influence function");
       sm.finish();
     }
     if (o.has("j_integral")) s.output.j_integral = read_j_contours(o.get("j_integral"), s.dim);
@@ -610,7 +684,9 @@ Scene read(const YAML::Node& root, const std::string& file) {
       const YamlAt comp = p.get("component");
       const std::string c = as_text(comp);
       if (stress) {
-        if (c.size() != 2) comp.fail("a stress component is two letters, force then bond component (xx, xy, ...): '" + c + "'");
+        if (c.size() != 2)
+          comp.fail("a stress component is two letters, force then bond component (xx, xy, ...): '" + c +
+                    "'");
         probe.quantity = Probe::Quantity::stress;
         probe.component = component_index(comp, c.substr(0, 1), s.dim);
         probe.stress_column = component_index(comp, c.substr(1, 1), s.dim);
@@ -618,7 +694,8 @@ Scene read(const YAML::Node& root, const std::string& file) {
         probe.component = component_index(comp, c, s.dim);
       }
       if (p.has("reference")) {
-        if (stress) p.get("reference").fail("the analytic fields give displacements: a stress probe has no reference");
+        if (stress)
+          p.get("reference").fail("the analytic fields give displacements: a stress probe has no reference");
         probe.reference = read_field(p.get("reference"), s.dim);
       }
       if (p.has("reference_at")) read_reference_at(p.get("reference_at"), probe, s.dim);
@@ -632,31 +709,42 @@ Scene read(const YAML::Node& root, const std::string& file) {
   if (m.has("damage")) {
     s.damage = read_damage(m.get("damage"));
     if (s.dynamics && !s.damage->max_resolves_where.empty())
-      throw SceneError(s.damage->max_resolves_where + ": max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds every step");
+      throw SceneError(
+          s.damage->max_resolves_where +
+          ": max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds every step");
   }
   if (s.dynamics && !s.output.j_integral.empty())
     m.get("output").fail("j_integral post-processes the static solution; dynamic scenes do not support it");
   if (s.dynamics && !s.output.smoothing_influence.empty())
-    m.get("output").fail("smoothing post-processes the static solution; dynamic scenes do not support it yet");
+    m.get("output").fail(
+        "smoothing post-processes the static solution; dynamic scenes do not support it yet");
   if (!s.dynamics) {
     for (const BoundaryCondition& bc : s.boundary) {
       if (bc.time) throw SceneError(bc.time_where + ": time functions need a dynamics section");
-      if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": velocity conditions need a dynamics section");
+      if (bc.kind == BoundaryCondition::Kind::Velocity)
+        throw SceneError(bc.where + ": velocity conditions need a dynamics section");
     }
     for (const Crack& c : s.cracks)
-      if (c.time) throw SceneError(c.time_where + ": time functions need a dynamics section (a static crack pressure follows the load factor)");
+      if (c.time)
+        throw SceneError(
+            c.time_where +
+            ": time functions need a dynamics section (a static crack pressure follows the load factor)");
   }
   if (s.dynamics && s.dynamics->method == DynamicsMethod::relaxation) {
     for (const BoundaryCondition& bc : s.boundary) {
-      if (bc.time) throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
-      if (bc.kind == BoundaryCondition::Kind::Velocity) throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
+      if (bc.time)
+        throw SceneError(bc.time_where + ": relaxation solves the static problem: no time functions");
+      if (bc.kind == BoundaryCondition::Kind::Velocity)
+        throw SceneError(bc.where + ": relaxation solves the static problem: no velocity conditions");
     }
     for (const Crack& c : s.cracks)
-      if (c.time) throw SceneError(c.time_where + ": relaxation solves the static problem: no time functions");
+      if (c.time)
+        throw SceneError(c.time_where + ": relaxation solves the static problem: no time functions");
   }
   if (s.dynamics && s.dynamics->method == DynamicsMethod::relaxation)
     for (const InitialCondition& ic : s.dynamics->initial)
-      if (ic.velocity != Point{}) throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");
+      if (ic.velocity != Point{})
+        throw SceneError(ic.where + ": relaxation starts at rest: give an initial displacement only");
   m.finish();
   return s;
 }

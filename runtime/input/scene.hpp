@@ -10,19 +10,19 @@
 #include <string>
 #include <vector>
 
-#include "input/quadrature.hpp"
 #include "input/dynamics_spec.hpp"
+#include "input/quadrature.hpp"
 #include "input/region.hpp"
+#include "input/solver_spec.hpp"
 #include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
 #include "particles.hpp"
-#include "input/solver_spec.hpp"
 
 namespace pd {
 
 struct Shape {  // a hole or an inclusion
   enum class Kind { Circle, Polygon, Box } kind = Kind::Circle;
-  Point center{};      // circle (sphere in 3D)
+  Point center{};  // circle (sphere in 3D)
   double radius = 0;
   std::vector<Point> vertices;  // polygon (2D)
   Point min{}, max{};           // box
@@ -48,11 +48,12 @@ struct BoundaryCondition {
   // Velocity: a prescribed velocity (dynamic scenes only).
   enum class Kind { Fixed, Displacement, Field, Traction, BodyForce, Velocity } kind = Kind::Fixed;
   Region region;
-  std::array<bool, 3> components{};  // which components are constrained (Fixed, Displacement, Field, Velocity)
-  Point values{};                    // prescribed displacement, velocity, traction or body force
+  std::array<bool, 3>
+      components{};  // which components are constrained (Fixed, Displacement, Field, Velocity)
+  Point values{};    // prescribed displacement, velocity, traction or body force
   FieldSpec field;
-  double face_measure = 0;           // Traction: length/area the traction acts on (0: the region's domain face)
-  std::string where;                 // "file:line: boundary[i]", for messages found after reading
+  double face_measure = 0;  // Traction: length/area the traction acts on (0: the region's domain face)
+  std::string where;        // "file:line: boundary[i]", for messages found after reading
   // Dynamic scenes: the values are scaled by f(t) (a velocity's displacement is the
   // integral). Without one: constant 1, i.e. applied at t = 0.
   std::optional<TimeFunction> time;
@@ -107,8 +108,8 @@ struct Probe {
   // What is averaged: a displacement component, or a component (row, column) of the
   // peridynamic stress (assembly/peridynamic_stress.hpp; `quantity: stress`, `component: xy`).
   enum class Quantity { displacement, stress } quantity = Quantity::displacement;
-  int component = 0;      // displacement component, or the stress row (force component)
-  int stress_column = 0;  // stress column (bond component)
+  int component = 0;                   // displacement component, or the stress row (force component)
+  int stress_column = 0;               // stress column (bond component)
   std::optional<FieldSpec> reference;  // analytic field to compare the mean against (displacement only)
   // Where the reference is taken (docs/scene_format.md, `reference_at`): the region's
   // point (the paper's, default), an explicit point, or the mean over the particles.
@@ -126,11 +127,12 @@ struct Scene {
   double perturbation = 0;         // fraction of h
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
-  std::string obq_space = "paper001";         // domain.obq_space: paper001, paper001_odd, law
-  bool obq_symmetric = false;                 // domain.obq_symmetric
-  bool compensation = false;                   // domain.compensation (paper 002 eq. 3.61, assembly/compensation.hpp)
-  bool surface_correction = false;             // domain.surface_correction (paper 003 eq. 19, assembly/surface_correction.hpp)
-  bool surface_match_responses = false;        // ... : responses (else terms)
+  std::string obq_space = "paper001";          // domain.obq_space: paper001, paper001_odd, law
+  bool obq_symmetric = false;                  // domain.obq_symmetric
+  bool compensation = false;  // domain.compensation (paper 002 eq. 3.61, assembly/compensation.hpp)
+  bool surface_correction =
+      false;  // domain.surface_correction (paper 003 eq. 19, assembly/surface_correction.hpp)
+  bool surface_match_responses = false;  // ... : responses (else terms)
   // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
   // each cell (0: off, the quadrature above) and the MLS support in units of h.
   int gauss_points = 0;

@@ -12,12 +12,17 @@ namespace {
 bool preconditioner_fits(LinearMethod linear, Preconditioner pre) {
   if (pre == Preconditioner::automatic) return true;
   switch (linear) {
-    case LinearMethod::automatic: return pre != Preconditioner::short_horizon;
+    case LinearMethod::automatic:
+      return pre != Preconditioner::short_horizon;
     case LinearMethod::cholmod:
-    case LinearMethod::umfpack: return false;
-    case LinearMethod::cg: return pre == Preconditioner::ic || pre == Preconditioner::diagonal;
-    case LinearMethod::bicgstab: return pre == Preconditioner::ilut;
-    case LinearMethod::matrix_free: return pre == Preconditioner::short_horizon || pre == Preconditioner::diagonal;
+    case LinearMethod::umfpack:
+      return false;
+    case LinearMethod::cg:
+      return pre == Preconditioner::ic || pre == Preconditioner::diagonal;
+    case LinearMethod::bicgstab:
+      return pre == Preconditioner::ilut;
+    case LinearMethod::matrix_free:
+      return pre == Preconditioner::short_horizon || pre == Preconditioner::diagonal;
   }
   return false;
 }
@@ -29,19 +34,22 @@ SolverSpec read_solver(const YamlAt& at) {
   s.linear = enum_choice(sv, "linear", LinearMethod::automatic);
   s.preconditioner = enum_choice(sv, "preconditioner", Preconditioner::automatic);
   s.preconditioner_ratio = sv.number("preconditioner_ratio", 2.0);
-  if (!(s.preconditioner_ratio >= 1.0)) sv.get("preconditioner_ratio").fail("must be at least 1 (a horizon of one spacing)");
+  if (!(s.preconditioner_ratio >= 1.0))
+    sv.get("preconditioner_ratio").fail("must be at least 1 (a horizon of one spacing)");
   if (!preconditioner_fits(s.linear, s.preconditioner))
-    sv.get("preconditioner").fail(fmt::format("preconditioner '{}' does not go with linear solver '{}' (cg: ic or diagonal; "
-                                              "bicgstab: ilut; matrix_free: short_horizon or diagonal)",
-                                              name_of(s.preconditioner), name_of(s.linear)));
+    sv.get("preconditioner")
+        .fail(fmt::format("preconditioner '{}' does not go with linear solver '{}' (cg: ic or diagonal; "
+                          "bicgstab: ilut; matrix_free: short_horizon or diagonal)",
+                          name_of(s.preconditioner), name_of(s.linear)));
   s.nonlinear = enum_choice(sv, "nonlinear", NonlinearMethod::newton);
   s.backend = enum_choice(sv, "backend", Backend::serial);
   s.petsc_options = sv.text("petsc_options", "");
   if (s.backend != Backend::petsc && sv.has("petsc_options"))
     sv.get("petsc_options").fail("petsc_options needs backend: petsc");
   if (s.backend == Backend::petsc && s.linear != LinearMethod::automatic)
-    sv.get("linear").fail("backend petsc chooses its Krylov method and preconditioner through petsc_options "
-                          "(-ksp_type, -pc_type); leave linear at auto");
+    sv.get("linear").fail(
+        "backend petsc chooses its Krylov method and preconditioner through petsc_options "
+        "(-ksp_type, -pc_type); leave linear at auto");
   s.load_steps = sv.integer("load_steps", 1);
   if (s.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
   s.tolerance = sv.number("tolerance", 1e-10);
@@ -51,7 +59,8 @@ SolverSpec read_solver(const YamlAt& at) {
   s.krylov_max_iterations = sv.integer("krylov_max_iterations", 0);
   if (s.krylov_max_iterations < 0) sv.get("krylov_max_iterations").fail("must be 0 (automatic) or positive");
   const double direct_max = sv.number("direct_max_nonzeros", 2e6);
-  if (!(direct_max >= 0) || direct_max > 9e18) sv.get("direct_max_nonzeros").fail("must be a non-negative count");
+  if (!(direct_max >= 0) || direct_max > 9e18)
+    sv.get("direct_max_nonzeros").fail("must be a non-negative count");
   s.direct_max_nonzeros = static_cast<long long>(direct_max);
   const double preconditioner_max = sv.number("preconditioner_max_nonzeros", 4e7);
   if (!(preconditioner_max >= 0) || preconditioner_max > 9e18)

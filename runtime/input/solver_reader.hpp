@@ -1,8 +1,8 @@
 // Reads the scene's `solver` section (docs/scene_format.md).
 #pragma once
 
-#include "input/yaml_keys.hpp"
 #include "input/solver_spec.hpp"
+#include "input/yaml_keys.hpp"
 
 namespace pd {
 

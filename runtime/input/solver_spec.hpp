@@ -23,39 +23,56 @@ enum class Backend { serial, petsc };
 constexpr std::string_view name_of(NonlinearMethod) { return "newton"; }
 constexpr std::string_view name_of(LinearMethod m) {
   switch (m) {
-    case LinearMethod::automatic: return "auto";
-    case LinearMethod::cholmod: return "cholmod";
-    case LinearMethod::umfpack: return "umfpack";
-    case LinearMethod::cg: return "cg";
-    case LinearMethod::bicgstab: return "bicgstab";
-    case LinearMethod::matrix_free: return "matrix_free";
+    case LinearMethod::automatic:
+      return "auto";
+    case LinearMethod::cholmod:
+      return "cholmod";
+    case LinearMethod::umfpack:
+      return "umfpack";
+    case LinearMethod::cg:
+      return "cg";
+    case LinearMethod::bicgstab:
+      return "bicgstab";
+    case LinearMethod::matrix_free:
+      return "matrix_free";
   }
   return "?";
 }
 constexpr std::string_view name_of(Preconditioner p) {
   switch (p) {
-    case Preconditioner::automatic: return "auto";
-    case Preconditioner::ic: return "ic";
-    case Preconditioner::diagonal: return "diagonal";
-    case Preconditioner::ilut: return "ilut";
-    case Preconditioner::short_horizon: return "short_horizon";
+    case Preconditioner::automatic:
+      return "auto";
+    case Preconditioner::ic:
+      return "ic";
+    case Preconditioner::diagonal:
+      return "diagonal";
+    case Preconditioner::ilut:
+      return "ilut";
+    case Preconditioner::short_horizon:
+      return "short_horizon";
   }
   return "?";
 }
 constexpr std::string_view name_of(Backend b) { return b == Backend::petsc ? "petsc" : "serial"; }
 // Every value, in the order the scene reader lists them in its error messages.
-template <class E> struct all_values;
-template <> struct all_values<NonlinearMethod> {
+template <class E>
+struct all_values;
+template <>
+struct all_values<NonlinearMethod> {
   static constexpr std::array values{NonlinearMethod::newton};
 };
-template <> struct all_values<LinearMethod> {
-  static constexpr std::array values{LinearMethod::automatic, LinearMethod::cholmod,  LinearMethod::umfpack,
-                                     LinearMethod::cg,        LinearMethod::bicgstab, LinearMethod::matrix_free};
+template <>
+struct all_values<LinearMethod> {
+  static constexpr std::array values{LinearMethod::automatic, LinearMethod::cholmod,
+                                     LinearMethod::umfpack,   LinearMethod::cg,
+                                     LinearMethod::bicgstab,  LinearMethod::matrix_free};
 };
-template <> struct all_values<Backend> {
+template <>
+struct all_values<Backend> {
   static constexpr std::array values{Backend::serial, Backend::petsc};
 };
-template <> struct all_values<Preconditioner> {
+template <>
+struct all_values<Preconditioner> {
   static constexpr std::array values{Preconditioner::automatic, Preconditioner::ic, Preconditioner::diagonal,
                                      Preconditioner::ilut, Preconditioner::short_horizon};
 };
@@ -68,7 +85,7 @@ struct SolverSpec {
   double preconditioner_ratio = 2.0;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
   NonlinearMethod nonlinear = NonlinearMethod::newton;  // the only one so far; the key keeps scenes explicit
   int load_steps = 1;
-  double tolerance = 1e-10;     // on the residual norm relative to the load
+  double tolerance = 1e-10;           // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
   int max_iterations = 30;
   double krylov_tolerance = 1e-12;

@@ -34,9 +34,12 @@ double table_integral(const std::vector<std::pair<double, double>>& tab, double 
 
 double TimeFunction::value_at(double t) const {
   switch (kind) {
-    case Kind::Constant: return value;
-    case Kind::Ramp: return t <= 0 ? 0.0 : t >= duration ? 1.0 : t / duration;
-    case Kind::Sine: return std::sin(2 * std::numbers::pi * t / period + phase);
+    case Kind::Constant:
+      return value;
+    case Kind::Ramp:
+      return t <= 0 ? 0.0 : t >= duration ? 1.0 : t / duration;
+    case Kind::Sine:
+      return std::sin(2 * std::numbers::pi * t / period + phase);
     case Kind::Table: {
       if (t <= table.front().first) return table.front().second;
       for (std::size_t i = 1; i < table.size(); ++i)
@@ -53,9 +56,12 @@ double TimeFunction::value_at(double t) const {
 
 double TimeFunction::derivative(double t) const {
   switch (kind) {
-    case Kind::Constant: return 0;
-    case Kind::Ramp: return t >= 0 && t < duration ? 1.0 / duration : 0.0;
-    case Kind::Sine: return 2 * std::numbers::pi / period * std::cos(2 * std::numbers::pi * t / period + phase);
+    case Kind::Constant:
+      return 0;
+    case Kind::Ramp:
+      return t >= 0 && t < duration ? 1.0 / duration : 0.0;
+    case Kind::Sine:
+      return 2 * std::numbers::pi / period * std::cos(2 * std::numbers::pi * t / period + phase);
     case Kind::Table:
       for (std::size_t i = 1; i < table.size(); ++i)
         if (t >= table[i - 1].first && t < table[i].first)
@@ -67,7 +73,8 @@ double TimeFunction::derivative(double t) const {
 
 double TimeFunction::integral(double t) const {
   switch (kind) {
-    case Kind::Constant: return value * t;
+    case Kind::Constant:
+      return value * t;
     case Kind::Ramp:
       if (t <= 0) return 0;
       return t <= duration ? 0.5 * t * t / duration : 0.5 * duration + (t - duration);
@@ -75,17 +82,22 @@ double TimeFunction::integral(double t) const {
       const double w = 2 * std::numbers::pi / period;
       return (std::cos(phase) - std::cos(w * t + phase)) / w;
     }
-    case Kind::Table: return table_integral(table, t);
+    case Kind::Table:
+      return table_integral(table, t);
   }
   return 0;
 }
 
 std::string TimeFunction::describe() const {
   switch (kind) {
-    case Kind::Constant: return fmt::format("constant {:.6g}", value);
-    case Kind::Ramp: return fmt::format("ramp over {:.6g}", duration);
-    case Kind::Sine: return fmt::format("sine, period {:.6g}, phase {:.6g}", period, phase);
-    case Kind::Table: return fmt::format("table of {} points", table.size());
+    case Kind::Constant:
+      return fmt::format("constant {:.6g}", value);
+    case Kind::Ramp:
+      return fmt::format("ramp over {:.6g}", duration);
+    case Kind::Sine:
+      return fmt::format("sine, period {:.6g}, phase {:.6g}", period, phase);
+    case Kind::Table:
+      return fmt::format("table of {} points", table.size());
   }
   return "";
 }
@@ -118,7 +130,8 @@ TimeFunction read_time_function(const YamlAt& at) {
       const YamlAt e = list.element(list.node[i], i);
       const auto v = as_numbers(e);
       if (v.size() != 2) e.fail("a table row is [t, f]");
-      if (!f.table.empty() && !(v[0] > f.table.back().first)) e.fail("the times of a table must increase strictly");
+      if (!f.table.empty() && !(v[0] > f.table.back().first))
+        e.fail("the times of a table must increase strictly");
       f.table.emplace_back(v[0], v[1]);
     }
     if (f.table.size() < 2) list.fail("a table needs at least two rows");

@@ -12,9 +12,9 @@ struct YamlAt;
 
 struct TimeFunction {
   enum class Kind { Constant, Ramp, Sine, Table } kind = Kind::Constant;
-  double value = 1;     // constant: f = value
-  double duration = 0;  // ramp: f = t / duration up to duration, then 1
-  double period = 0, phase = 0;  // sine: f = sin(2 pi t / period + phase)
+  double value = 1;                              // constant: f = value
+  double duration = 0;                           // ramp: f = t / duration up to duration, then 1
+  double period = 0, phase = 0;                  // sine: f = sin(2 pi t / period + phase)
   std::vector<std::pair<double, double>> table;  // (t, f), t strictly increasing; held constant outside
 
   double value_at(double t) const;

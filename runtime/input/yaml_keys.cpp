@@ -22,7 +22,9 @@ YamlAt YamlAt::child(const YAML::Node& n, const std::string& key) const {
   return {n, file, path.empty() ? key : path + "." + key};
 }
 
-YamlAt YamlAt::element(const YAML::Node& n, std::size_t i) const { return {n, file, path + "[" + std::to_string(i) + "]"}; }
+YamlAt YamlAt::element(const YAML::Node& n, std::size_t i) const {
+  return {n, file, path + "[" + std::to_string(i) + "]"};
+}
 
 namespace {
 int line_of(const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 : 0; }
@@ -36,8 +38,9 @@ void reject_duplicate_keys(const YamlAt& at) {
     const std::string key = it->first.Scalar();
     const auto [seen, fresh] = first_line.emplace(key, line_of(it->first));
     if (!fresh)
-      at.child(it->first, key).fail("duplicate key '" + key + "' (first given on line " + std::to_string(seen->second) +
-                                    "; a key may appear once in a map)");
+      at.child(it->first, key)
+          .fail("duplicate key '" + key + "' (first given on line " + std::to_string(seen->second) +
+                "; a key may appear once in a map)");
   }
 }
 }  // namespace
@@ -62,7 +65,8 @@ std::string read_input_file(const std::string& path, const std::string& what) {
   if (!std::filesystem::exists(status)) throw SceneError(path + ": no such " + what + " file");
   if (std::filesystem::is_directory(status))
     throw SceneError(path + ": is a directory, not a " + what + " file (give the .yaml file itself)");
-  if (!std::filesystem::is_regular_file(status)) throw SceneError(path + ": not a regular file, cannot read it as a " + what + " file");
+  if (!std::filesystem::is_regular_file(status))
+    throw SceneError(path + ": not a regular file, cannot read it as a " + what + " file");
   std::ifstream in(path);
   if (!in) throw SceneError(path + ": cannot open the " + what + " file (permissions?)");
   std::ostringstream text;
@@ -108,7 +112,9 @@ void require_list(const YamlAt& at) {
 }
 
 double MapReader::number(const std::string& key) { return as_number(get(key)); }
-double MapReader::number(const std::string& key, double fallback) { return has(key) ? number(key) : (used_.insert(key), fallback); }
+double MapReader::number(const std::string& key, double fallback) {
+  return has(key) ? number(key) : (used_.insert(key), fallback);
+}
 
 int MapReader::integer(const std::string& key, int fallback) {
   if (!has(key)) return used_.insert(key), fallback;
@@ -133,7 +139,8 @@ std::string MapReader::text(const std::string& key, const std::string& fallback)
   return has(key) ? text(key) : (used_.insert(key), fallback);
 }
 
-std::string MapReader::choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed) {
+std::string MapReader::choice(const std::string& key, const std::string& fallback,
+                              const std::vector<std::string>& allowed) {
   const std::string v = text(key, fallback);
   if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
     std::string list;

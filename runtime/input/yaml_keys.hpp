@@ -42,7 +42,8 @@ class MapReader {
   bool boolean(const std::string& key, bool fallback);
   std::string text(const std::string& key);
   std::string text(const std::string& key, const std::string& fallback);
-  std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
+  std::string choice(const std::string& key, const std::string& fallback,
+                     const std::vector<std::string>& allowed);
   std::vector<double> numbers(const std::string& key);  // a list of numbers
   void finish() const;
   const YamlAt& at() const { return at_; }

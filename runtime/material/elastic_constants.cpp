@@ -15,7 +15,8 @@ void require(bool ok, const std::string& what) {
 
 IsotropicElastic IsotropicElastic::from_E_nu(double E, double nu) {
   require(std::isfinite(E) && E > 0, "Young's modulus E must be positive, got " + std::to_string(E));
-  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5, "Poisson's ratio nu must lie in (-1, 0.5), got " + std::to_string(nu));
+  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5,
+          "Poisson's ratio nu must lie in (-1, 0.5), got " + std::to_string(nu));
   IsotropicElastic m;
   m.E = E;
   m.nu = nu;
@@ -41,7 +42,8 @@ IsotropicElastic IsotropicElastic::plane_stress_equivalent() const {
   return from_E_nu(E * (1 + 2 * nu) / ((1 + nu) * (1 + nu)), nu / (1 + nu));
 }
 
-std::vector<std::string> unused_parameters(const abi::LawDescriptor& law, const std::map<std::string, double>& extra) {
+std::vector<std::string> unused_parameters(const abi::LawDescriptor& law,
+                                           const std::map<std::string, double>& extra) {
   std::vector<std::string> unused;
   for (const auto& [name, value] : extra) {
     bool taken = false;
@@ -53,9 +55,14 @@ std::vector<std::string> unused_parameters(const abi::LawDescriptor& law, const 
 
 std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
                                    PlaneAssumption plane, const std::map<std::string, double>& extra) {
-  const IsotropicElastic m = (law.dim == 2 && plane == PlaneAssumption::Stress) ? elastic.plane_stress_equivalent() : elastic;
-  const std::map<std::string, double> derived{{"E", m.E},           {"nu", m.nu},         {"K", m.K},
-                                              {"G", m.G},           {"mu", m.G},          {"lambda", m.lambda},
+  const IsotropicElastic m =
+      (law.dim == 2 && plane == PlaneAssumption::Stress) ? elastic.plane_stress_equivalent() : elastic;
+  const std::map<std::string, double> derived{{"E", m.E},
+                                              {"nu", m.nu},
+                                              {"K", m.K},
+                                              {"G", m.G},
+                                              {"mu", m.G},
+                                              {"lambda", m.lambda},
                                               {"kappa2", m.lambda + m.G}};
   std::vector<double> out;
   for (int i = 0; i < law.n_params; ++i) {

@@ -29,7 +29,8 @@ struct IsotropicElastic {
 // Any other name must be in `extra`; a missing one throws std::invalid_argument
 // naming the law and the parameter.
 // The names in `extra` (a material's `parameters`) that the law does not take.
-std::vector<std::string> unused_parameters(const abi::LawDescriptor& law, const std::map<std::string, double>& extra);
+std::vector<std::string> unused_parameters(const abi::LawDescriptor& law,
+                                           const std::map<std::string, double>& extra);
 
 std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
                                    PlaneAssumption plane, const std::map<std::string, double>& extra);

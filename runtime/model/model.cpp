@@ -9,15 +9,15 @@
 
 #include "assembly/compensation.hpp"
 #include "assembly/surface_correction.hpp"
+#include "constraints/constraints.hpp"
 #include "discretize/crack_cut.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
-#include "input/yaml_keys.hpp"  // SceneError
-#include "discretize/partial_volume.hpp"
 #include "discretize/law_space.hpp"
+#include "discretize/partial_volume.hpp"
+#include "input/yaml_keys.hpp"  // SceneError
 #include "material/admissible_poisson.hpp"
 #include "material/elastic_constants.hpp"
-#include "constraints/constraints.hpp"
 #include "stopwatch.hpp"
 
 namespace pd {
@@ -29,7 +29,8 @@ namespace {
 std::optional<Box2> obq_cut_body(const Scene& scene) {
   if (scene.quadrature != Quadrature::ObqCut) return std::nullopt;
   if (scene.dim != 2 || scene.point_cloud || !scene.holes.empty())
-    throw std::invalid_argument(scene.file + ": domain.quadrature: obq_cut needs a 2D box body without holes "
+    throw std::invalid_argument(scene.file +
+                                ": domain.quadrature: obq_cut needs a 2D box body without holes "
                                 "(use obq)");
   const double grow = scene.placement == "node" ? 0.5 * scene.h : 0.0;
   Box2 body;
@@ -45,41 +46,53 @@ Model build_model(const Scene& scene) {
   m.influence = abi::find_influence(scene.influence);
   if (!m.law || !m.influence) throw std::invalid_argument("unknown law or influence function");
   m.particles = discretize(scene);
-  m.bonds = scene.particle_spacing.empty()
-                ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
-                : find_block_bonds(m.particles, scene.particle_horizons(), scene.particle_spacing, scene.quadrature,
-                                   m.influence->weight);  // domain.blocks
+  m.bonds =
+      scene.particle_spacing.empty()
+          ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
+          : find_block_bonds(m.particles, scene.particle_horizons(), scene.particle_spacing, scene.quadrature,
+                             m.influence->weight);  // domain.blocks
   m.bond_count = m.bonds.bond_count() / 2;
   std::vector<int> crossed;
   m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
   m.warnings = scene.warnings;
   for (std::size_t c = 0; c < scene.cracks.size(); ++c)
     if (crossed[c] == 0)
-      m.warnings.push_back(scene.cracks[c].where + ": the crack crosses no bond (it lies outside the body, in a hole, "
+      m.warnings.push_back(scene.cracks[c].where +
+                           ": the crack crosses no bond (it lies outside the body, in a hole, "
                            "or between particles closer than a spacing): it has no effect");
   const Particles& p = m.particles;
   for (int i = 0; i < p.size(); ++i)
     if (m.bonds.family_size(i) == 0)
       throw SceneError(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", i,
-                                           p.x[i * p.dim], p.x[i * p.dim + 1]));
+                                   p.x[i * p.dim], p.x[i * p.dim + 1]));
   m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
   for (const MaterialSpec& mat : scene.materials)
     m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
   if (scene.compensation) {
-    const CompensationInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight};
+    const CompensationInputs in{m.law,   &m.params,        scene.delta(),
+                                scene.h, scene.quadrature, m.influence->weight};
     apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
   }
   if (scene.surface_correction) {
     if (!scene.particle_spacing.empty())
-      throw SceneError(scene.file + ": domain.surface_correction: not with domain.blocks (the factors compare each "
+      throw SceneError(scene.file +
+                       ": domain.surface_correction: not with domain.blocks (the factors compare each "
                        "family with the full family of one regular lattice)");
-    const SurfaceCorrectionInputs in{m.law, &m.params, scene.delta(), scene.h, scene.quadrature, m.influence->weight,
-                                     scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
-    apply_surface_correction(m.bonds, surface_correction_factors(m.particles, m.bonds, in), m.law->has_dilatation_sum);
+    const SurfaceCorrectionInputs in{
+        m.law,
+        &m.params,
+        scene.delta(),
+        scene.h,
+        scene.quadrature,
+        m.influence->weight,
+        scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
+    apply_surface_correction(m.bonds, surface_correction_factors(m.particles, m.bonds, in),
+                             m.law->has_dilatation_sum);
   }
   if (is_obq(scene.quadrature)) {
     const std::optional<Box2> body = obq_cut_body(scene);
-    ReproducingSpace space = scene.obq_space == "paper001_odd" ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
+    ReproducingSpace space =
+        scene.obq_space == "paper001_odd" ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
     if (scene.obq_space == "law") try {
         space = law_reproducing_space(m.law->name, scene.dim, m.influence->weight, m.influence->name);
       } catch (const std::invalid_argument& e) {
@@ -92,7 +105,8 @@ Model build_model(const Scene& scene) {
   if (scene.gauss_points > 0) {
     // The Gauss bonds are not cut by cracks and do not break; the cells are of one spacing.
     if (!scene.cracks.empty() || scene.damage || !scene.particle_spacing.empty())
-      throw SceneError(scene.file + ": domain.gauss_points: not with cracks, damage or domain.blocks (the Gauss bonds "
+      throw SceneError(scene.file +
+                       ": domain.gauss_points: not with cracks, damage or domain.blocks (the Gauss bonds "
                        "are not cut and do not break; the cells need one spacing)");
     GaussPointOptions o;
     o.per_axis = scene.gauss_points;
@@ -100,7 +114,8 @@ Model build_model(const Scene& scene) {
     m.gauss_points = std::make_unique<GaussPoints>(
         build_gauss_points(m.particles, scene.h, scene.delta(), m.influence->weight, o));
   }
-  for (const MaterialSpec& mat : scene.materials) warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
+  for (const MaterialSpec& mat : scene.materials)
+    warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
   m.dofs = scene_constraints(scene, m.particles);
   m.build_seconds = seconds_since(t0);
   return m;
@@ -114,7 +129,8 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.threads = threads;
   options.collocation = model.collocation.get();
   options.gauss_points = model.gauss_points.get();
-  model.assembler = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+  model.assembler =
+      std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
   model.assembler_options = options;
   return options;
 }
@@ -129,7 +145,8 @@ void attach_short_horizon(Model& model, const Scene& scene, double short_delta) 
     AssemblerOptions options;
     options.intact = model.cut_by_cracks == 0 && !scene.damage;
     options.collocation = model.collocation.get();
-    model.approximation = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+    model.approximation =
+        std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
     return;
   }
   // The same law's stiffness on a horizon of ratio h: far fewer nonzeros, and spectrally
@@ -149,7 +166,8 @@ void attach_short_horizon(Model& model, const Scene& scene, double short_delta) 
   const int cut = cut_bonds(scene.cracks, model.particles, model.short_bonds);
   AssemblerOptions options;
   options.intact = cut == 0 && !scene.damage;
-  model.approximation = std::make_unique<FamilyAssembler>(model.particles, model.short_bonds, *model.law, model.params, options);
+  model.approximation = std::make_unique<FamilyAssembler>(model.particles, model.short_bonds, *model.law,
+                                                          model.params, options);
 }
 
 }  // namespace pd

@@ -37,8 +37,8 @@ struct Model {
   // The constrained dofs and their values at full load (constraints/constraints.hpp), with the
   // load path of a rotation and each dof's function of time (DofMap::apply_motion).
   DofMap dofs;
-  long long bond_count = 0;    // each bond once (not per direction)
-  int cut_by_cracks = 0;       // bonds the scene's pre-cracks cut, each once
+  long long bond_count = 0;           // each bond once (not per direction)
+  int cut_by_cracks = 0;              // bonds the scene's pre-cracks cut, each once
   std::vector<std::string> warnings;  // the scene's and the set-up's (a crack that crosses no bond)
   // domain.quadrature: obq — the per-bond weights and collocation assembly (eq. 2.13 of
   // paper 001), and the log line that says how many families kept the volume rule.
@@ -58,8 +58,8 @@ struct Model {
   // run's inertia and viscous damping last). Declared last: they read the assemblers and bonds above.
   std::vector<std::unique_ptr<Effect>> effects;
   const CriticalStretchDamage* damage = nullptr;  // the damage effect's rule (null without `damage`)
-  const Inertia* inertia = nullptr;          // dynamic runs: rho V (explicit) or the fictitious density (relaxation)
-  const ViscousDamping* damping = nullptr;   // explicit dynamics with dynamics.damping > 0
+  const Inertia* inertia = nullptr;  // dynamic runs: rho V (explicit) or the fictitious density (relaxation)
+  const ViscousDamping* damping = nullptr;  // explicit dynamics with dynamics.damping > 0
 };
 
 // Throws std::invalid_argument on an unknown law or influence, std::runtime_error

@@ -2,10 +2,10 @@
 // A new effect is one file in effects/ plus one line here (and its scene key).
 #include <fmt/core.h>
 
-#include "effects/time_step.hpp"
 #include "effects/damage_evolution.hpp"
 #include "effects/inertia.hpp"
 #include "effects/loads.hpp"
+#include "effects/time_step.hpp"
 #include "model/model.hpp"
 
 namespace pd {
@@ -27,16 +27,20 @@ void add_static_loads(Model& m, const Scene& s) {
 // of time (relaxation has none: every load in full).
 void add_timed_loads(Model& m, const Scene& s) {
   for (const BoundaryCondition& bc : s.boundary) {
-    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce)
+      continue;
     if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // carried by the layer's ties
-    add(m.effects, make_timed(make_external_loads(s, m.particles, std::span(&bc, 1)), bc.time.value_or(TimeFunction{}),
-                              bc.time ? ", times " + bc.time->describe() : std::string()));
+    add(m.effects,
+        make_timed(make_external_loads(s, m.particles, std::span(&bc, 1)), bc.time.value_or(TimeFunction{}),
+                   bc.time ? ", times " + bc.time->describe() : std::string()));
   }
   for (const Crack& crack : s.cracks)
     if (auto e = make_crack_pressure(std::span(&crack, 1), s.h, m.particles, m.bonds))
-      add(m.effects, make_timed(std::move(e), crack.time.value_or(TimeFunction{}),
-                                crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
-  if (auto e = make_body_force_field(s, m.particles)) add(m.effects, make_timed(std::move(e), TimeFunction{}, ", constant in time"));
+      add(m.effects,
+          make_timed(std::move(e), crack.time.value_or(TimeFunction{}),
+                     crack.time ? ", times " + crack.time->describe() : std::string(", constant in time")));
+  if (auto e = make_body_force_field(s, m.particles))
+    add(m.effects, make_timed(std::move(e), TimeFunction{}, ", constant in time"));
 }
 // A dynamic run's inertia: explicit dynamics' rho V (and its time step) with the viscous
 // damping, or relaxation's fictitious density; both from the row sums of the stiffness at
@@ -70,12 +74,14 @@ void add_inertia(Model& m, const Scene& s) {
 
 void attach_effects(Model& m, const Scene& s) {
   if (!m.assembler) throw std::logic_error("attach_effects: attach the assembler first");
-  if (s.dynamics) add_timed_loads(m, s);
-  else add_static_loads(m, s);
+  if (s.dynamics)
+    add_timed_loads(m, s);
+  else
+    add_static_loads(m, s);
   add(m.effects, make_pre_cracks(m.cut_by_cracks));
-  DamageEffect damage = make_damage_evolution(s, DamageBody{m.particles, *m.law, m.params[0], *m.influence}, m.bonds,
-                                              *m.assembler, m.approximation ? &m.short_bonds : nullptr,
-                                              m.approximation.get());
+  DamageEffect damage =
+      make_damage_evolution(s, DamageBody{m.particles, *m.law, m.params[0], *m.influence}, m.bonds,
+                            *m.assembler, m.approximation ? &m.short_bonds : nullptr, m.approximation.get());
   m.damage = damage.rule;
   add(m.effects, std::move(damage.effect));
   if (s.dynamics) add_inertia(m, s);

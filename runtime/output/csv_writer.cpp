@@ -23,10 +23,14 @@ std::string csv_document(const Particles& P, std::span<const double> u, std::spa
     for (int c = 0; c < d; ++c) fmt::format_to(out, ",u_{}", axis[c]);
   for (const OutputField& f : fields)
     for (int c = 0; c < f.components; ++c) {
-      if (f.components == 1) fmt::format_to(out, ",{}", f.name);
-      else if (f.components == d) fmt::format_to(out, ",{}_{}", f.name, axis[c]);
-      else if (f.components == d * d) fmt::format_to(out, ",{}_{}{}", f.name, axis[c / d], axis[c % d]);  // tensor, row-major
-      else fmt::format_to(out, ",{}_{}", f.name, c);
+      if (f.components == 1)
+        fmt::format_to(out, ",{}", f.name);
+      else if (f.components == d)
+        fmt::format_to(out, ",{}_{}", f.name, axis[c]);
+      else if (f.components == d * d)
+        fmt::format_to(out, ",{}_{}{}", f.name, axis[c / d], axis[c % d]);  // tensor, row-major
+      else
+        fmt::format_to(out, ",{}_{}", f.name, c);
     }
   b.push_back('\n');
   for (int i = 0; i < n; ++i) {
@@ -35,7 +39,8 @@ std::string csv_document(const Particles& P, std::span<const double> u, std::spa
     if (!u.empty())
       for (int c = 0; c < d; ++c) fmt::format_to(out, ",{:.17g}", u[static_cast<std::size_t>(i) * d + c]);
     for (const OutputField& f : fields)
-      for (int c = 0; c < f.components; ++c) fmt::format_to(out, ",{:.17g}", f.values[static_cast<std::size_t>(i) * f.components + c]);
+      for (int c = 0; c < f.components; ++c)
+        fmt::format_to(out, ",{:.17g}", f.values[static_cast<std::size_t>(i) * f.components + c]);
     b.push_back('\n');
   }
   return fmt::to_string(b);

@@ -14,6 +14,7 @@ namespace pd {
 // atomically.
 void write_csv_file(const std::string& path, const Particles& particles, std::span<const double> u,
                     std::span<const OutputField> fields);
-std::string csv_document(const Particles& particles, std::span<const double> u, std::span<const OutputField> fields);
+std::string csv_document(const Particles& particles, std::span<const double> u,
+                         std::span<const OutputField> fields);
 
 }  // namespace pd

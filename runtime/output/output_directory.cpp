@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 std::string free_space(const std::string& dir) {
   struct statvfs s {};
   if (::statvfs(dir.c_str(), &s) != 0) return "";
-  return fmt::format(" ({:.1f} MB free)", static_cast<double>(s.f_bavail) * static_cast<double>(s.f_frsize) / 1e6);
+  return fmt::format(" ({:.1f} MB free)",
+                     static_cast<double>(s.f_bavail) * static_cast<double>(s.f_frsize) / 1e6);
 }
 
 // Creates, fills and removes a probe file: a full disk shows up as a failed write (the
@@ -31,7 +32,8 @@ void probe(const std::string& dir) {
   const std::string path = fmt::format("{}/.pd.probe.{}", dir, run_id());
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0)
-    throw OutputDirectoryError(fmt::format("output directory {}: cannot create a file in it: {}", dir, std::strerror(errno)));
+    throw OutputDirectoryError(
+        fmt::format("output directory {}: cannot create a file in it: {}", dir, std::strerror(errno)));
   const std::string block(4096, 'p');
   std::size_t written = 0;
   int err = 0;
@@ -45,8 +47,8 @@ void probe(const std::string& dir) {
   ::close(fd);
   ::unlink(path.c_str());
   if (!ok)
-    throw OutputDirectoryError(
-        fmt::format("output directory {}: cannot write to it: {}{}", dir, std::strerror(err), free_space(dir)));
+    throw OutputDirectoryError(fmt::format("output directory {}: cannot write to it: {}{}", dir,
+                                           std::strerror(err), free_space(dir)));
 }
 }  // namespace
 
@@ -57,7 +59,8 @@ OutputDirectoryClaim::OutputDirectoryClaim(const std::string& directory) {
     throw OutputDirectoryError(fmt::format("output directory {}: exists and is not a directory", dir));
   directory_ = dir;
   created_ = fs::create_directories(dir, ec);
-  if (ec) throw OutputDirectoryError(fmt::format("output directory {}: cannot create it: {}", dir, ec.message()));
+  if (ec)
+    throw OutputDirectoryError(fmt::format("output directory {}: cannot create it: {}", dir, ec.message()));
   try {
     probe(dir);
   } catch (...) {
@@ -69,21 +72,26 @@ OutputDirectoryClaim::OutputDirectoryClaim(const std::string& directory) {
   // between our open and our flock has unlinked it, and a third run may lock a new one.
   for (int attempt = 0; attempt < 100; ++attempt) {
     fd_ = ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw OutputDirectoryError(fmt::format("{}: cannot create the lock file: {}", lock_path_, std::strerror(errno)));
+    if (fd_ < 0)
+      throw OutputDirectoryError(
+          fmt::format("{}: cannot create the lock file: {}", lock_path_, std::strerror(errno)));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const int err = errno;
       char owner[64] = {};
       const ssize_t n = ::pread(fd_, owner, sizeof owner - 1, 0);
       ::close(fd_);
       fd_ = -1;
-      if (err != EWOULDBLOCK) throw OutputDirectoryError(fmt::format("{}: cannot lock: {}", lock_path_, std::strerror(err)));
+      if (err != EWOULDBLOCK)
+        throw OutputDirectoryError(fmt::format("{}: cannot lock: {}", lock_path_, std::strerror(err)));
       std::string who(owner, n > 0 ? static_cast<std::size_t>(n) : 0);
       while (!who.empty() && (who.back() == '\n' || who.back() == '\0')) who.pop_back();
-      throw OutputDirectoryError(fmt::format("output directory {}: another run ({}) is writing into it; wait for it or "
-                                             "give another --out",
-                                             dir, who.empty() ? "unknown" : who));
+      throw OutputDirectoryError(
+          fmt::format("output directory {}: another run ({}) is writing into it; wait for it or "
+                      "give another --out",
+                      dir, who.empty() ? "unknown" : who));
     }
-    struct stat held {}, now {};
+    struct stat held {
+    }, now{};
     if (::fstat(fd_, &held) == 0 && ::stat(lock_path_.c_str(), &now) == 0 && held.st_ino == now.st_ino &&
         held.st_dev == now.st_dev)
       break;

@@ -2,11 +2,11 @@
 #include "output/staging.hpp"
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -35,7 +35,9 @@ StagingDirectory::StagingDirectory(const std::string& directory)
     : directory_(directory.empty() ? "." : directory), staging_(directory_ + "/" + kPrefix + run_id()) {
   std::error_code ec;
   fs::create_directory(staging_, ec);
-  if (ec) throw std::runtime_error(fmt::format("{}: cannot create the staging directory: {}", staging_, ec.message()));
+  if (ec)
+    throw std::runtime_error(
+        fmt::format("{}: cannot create the staging directory: {}", staging_, ec.message()));
 }
 
 StagingDirectory::~StagingDirectory() {
@@ -49,7 +51,8 @@ std::vector<std::string> StagingDirectory::leftovers() const {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(directory_, ec)) {
     const std::string name = e.path().filename().string();
-    if (e.is_directory() && name.rfind(kPrefix, 0) == 0 && e.path() != fs::path(staging_)) out.push_back(e.path().string());
+    if (e.is_directory() && name.rfind(kPrefix, 0) == 0 && e.path() != fs::path(staging_))
+      out.push_back(e.path().string());
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -57,9 +60,11 @@ std::vector<std::string> StagingDirectory::leftovers() const {
 
 std::vector<std::string> StagingDirectory::publish() {
   const fs::path dir(directory_), staged(staging_);
-  std::vector<std::string> names;  // relative to the staging directory: "result.vtu", "snapshots/step_00000010.vtu"
+  std::vector<std::string>
+      names;  // relative to the staging directory: "result.vtu", "snapshots/step_00000010.vtu"
   for (const auto& e : fs::recursive_directory_iterator(staged))
-    if (e.is_regular_file() && e.path().extension() != ".tmp") names.push_back(fs::relative(e.path(), staged).generic_string());
+    if (e.is_regular_file() && e.path().extension() != ".tmp")
+      names.push_back(fs::relative(e.path(), staged).generic_string());
   std::sort(names.begin(), names.end());
   std::error_code ec;
   if (names.empty()) {  // a run that wrote nothing leaves DIR as it was

@@ -18,11 +18,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -42,7 +51,8 @@ class AppendedArrays {
   template <class T>
   void add(const char* type, const std::string& name, int components, const std::vector<T>& values) {
     fmt::format_to(std::back_inserter(xml_),
-                   "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" offset=\"{}\"/>\n",
+                   "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
+                   "offset=\"{}\"/>\n",
                    type, xml_escape(name), components, data_.size());
     const std::uint64_t bytes = values.size() * sizeof(T);
     append(&bytes, sizeof bytes);
@@ -53,7 +63,8 @@ class AppendedArrays {
     const int nc = vtk_components(components);
     std::vector<double> out(static_cast<std::size_t>(n) * nc, 0.0);
     for (int i = 0; i < n; ++i)
-      for (int c = 0; c < components; ++c) out[static_cast<std::size_t>(i) * nc + c] = v[static_cast<std::size_t>(i) * stride + c];
+      for (int c = 0; c < components; ++c)
+        out[static_cast<std::size_t>(i) * nc + c] = v[static_cast<std::size_t>(i) * stride + c];
     add("Float64", name, nc, out);
   }
   const std::string& data() const { return data_; }
@@ -71,15 +82,16 @@ std::string vtu_document(const Particles& P, std::span<const double> u, std::spa
   const int n = P.size(), d = P.dim;
   check_output_fields(fields, n);
   if (!u.empty() && u.size() != static_cast<std::size_t>(n) * d)
-    throw std::invalid_argument("vtu: displacement has " + std::to_string(u.size()) + " values for " + std::to_string(n) +
-                                " particles in " + std::to_string(d) + "D");
+    throw std::invalid_argument("vtu: displacement has " + std::to_string(u.size()) + " values for " +
+                                std::to_string(n) + " particles in " + std::to_string(d) + "D");
   static_assert(std::endian::native == std::endian::little || std::endian::native == std::endian::big);
   const char* byte_order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   fmt::memory_buffer b;
   auto out = std::back_inserter(b);
   fmt::format_to(out,
                  "<?xml version=\"1.0\"?>\n"
-                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" header_type=\"UInt64\" run_id=\"{}\">\n"
+                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
+                 "header_type=\"UInt64\" run_id=\"{}\">\n"
                  "  <UnstructuredGrid>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
                  "      <Points>\n",
@@ -91,12 +103,16 @@ std::string vtu_document(const Particles& P, std::span<const double> u, std::spa
   for (int i = 0; i < n; ++i) connectivity[i] = i, offsets[i] = i + 1;
   arrays.add("Int64", "connectivity", 1, connectivity);
   arrays.add("Int64", "offsets", 1, offsets);
-  arrays.add("UInt8", "types", 1, std::vector<std::uint8_t>(static_cast<std::size_t>(n), 1));  // 1 = VTK_VERTEX
+  arrays.add("UInt8", "types", 1,
+             std::vector<std::uint8_t>(static_cast<std::size_t>(n), 1));  // 1 = VTK_VERTEX
   fmt::format_to(out, "      </Cells>\n      <PointData{}>\n",
                  u.empty() ? std::string() : std::string(" Vectors=\"displacement\""));
   if (!u.empty()) arrays.add_points("displacement", d, n, u.data(), d);
-  for (const OutputField& f : fields) arrays.add_points(f.name, f.components, n, f.values.data(), f.components);
-  fmt::format_to(out, "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _");
+  for (const OutputField& f : fields)
+    arrays.add_points(f.name, f.components, n, f.values.data(), f.components);
+  fmt::format_to(
+      out,
+      "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _");
   b.append(arrays.data());
   fmt::format_to(out, "\n  </AppendedData>\n</VTKFile>\n");
   return fmt::to_string(b);

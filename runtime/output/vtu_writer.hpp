@@ -21,6 +21,7 @@ void write_vtu_file(const std::string& path, const Particles& particles, std::sp
                     std::span<const OutputField> fields);
 
 // The same document as a string (for tests and for callers that compress or embed it).
-std::string vtu_document(const Particles& particles, std::span<const double> u, std::span<const OutputField> fields);
+std::string vtu_document(const Particles& particles, std::span<const double> u,
+                         std::span<const OutputField> fields);
 
 }  // namespace pd

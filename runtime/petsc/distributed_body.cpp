@@ -171,8 +171,10 @@ void DistributedBody::add_pair_blocks(const double* M, int L, const std::vector<
   const int d = dim_, m = (L + 1) * d;
   values.resize(static_cast<std::size_t>(d) * m);
   for (int r = 0; r < d; ++r)
-    for (int c = 0; c < m; ++c) values[static_cast<std::size_t>(r) * m + c] = -M[static_cast<std::size_t>(r) * m + c];
-  check(MatSetValuesBlocked(K, 1, ids.data(), L + 1, ids.data(), values.data(), ADD_VALUES), "MatSetValuesBlocked");
+    for (int c = 0; c < m; ++c)
+      values[static_cast<std::size_t>(r) * m + c] = -M[static_cast<std::size_t>(r) * m + c];
+  check(MatSetValuesBlocked(K, 1, ids.data(), L + 1, ids.data(), values.data(), ADD_VALUES),
+        "MatSetValuesBlocked");
   for (int k = 1; k <= L; ++k) {
     const PetscInt cols[2] = {ids[0], ids[k]};
     for (int r = 0; r < d; ++r)

@@ -60,8 +60,8 @@ class DistributedBody {
 
  private:
   void agree_finite(int bad_particle, const char* stage, const FamilyAssembler& a) const;
-  void add_pair_blocks(const double* M, int L, const std::vector<PetscInt>& ids, std::vector<PetscScalar>& values,
-                       Mat K) const;
+  void add_pair_blocks(const double* M, int L, const std::vector<PetscInt>& ids,
+                       std::vector<PetscScalar>& values, Mat K) const;
   template <class Kernel>
   void scatter_family_vectors(const FamilyAssembler& a, const char* stage, double sign,
                               const std::vector<double>& u, std::vector<double>& out, Kernel&& kernel) const;

@@ -71,8 +71,8 @@ Partition make_partition(const Particles& particles, const Bonds& bonds, int ran
   return part;
 }
 
-void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling, std::vector<int>& diagonal,
-                      std::vector<int>& off) {
+void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling,
+                      std::vector<int>& diagonal, std::vector<int>& off) {
   const int n = bonds.particle_count();
   diagonal.assign(static_cast<std::size_t>(part.owned()), 0);
   off.assign(static_cast<std::size_t>(part.owned()), 0);

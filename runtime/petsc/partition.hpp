@@ -42,7 +42,7 @@ Partition make_partition(const Particles& particles, const Bonds& bonds, int ran
 // every family that holds i (i's own and its neighbours'); Coupling::pairwise (one
 // horizon, a law without states): to i and its own neighbours only.
 // diagonal: columns owned by this rank; off: the others.
-void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling, std::vector<int>& diagonal,
-                      std::vector<int>& off);
+void block_row_counts(const Partition& part, const Bonds& bonds, Coupling coupling,
+                      std::vector<int>& diagonal, std::vector<int>& off);
 
 }  // namespace pd

@@ -16,7 +16,8 @@ std::vector<double> gather_concatenated(const std::vector<double>& mine, MPI_Com
   int rank = 0, ranks = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
-  if (mine.size() > static_cast<std::size_t>(INT_MAX)) throw std::runtime_error("gather to rank 0: over 2^31 values on one rank");
+  if (mine.size() > static_cast<std::size_t>(INT_MAX))
+    throw std::runtime_error("gather to rank 0: over 2^31 values on one rank");
   const int count = static_cast<int>(mine.size());
   std::vector<int> counts(rank == 0 ? ranks : 0), offsets(counts.size());
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
@@ -49,7 +50,8 @@ void gather_family_alpha(const Partition& part, Bonds& bonds, MPI_Comm comm) {
   std::vector<double> mine;
   for (int i = 0; i < part.owned(); ++i) {
     const int p = part.owned_particle(i);
-    mine.insert(mine.end(), bonds.alpha.begin() + bonds.offsets[p], bonds.alpha.begin() + bonds.offsets[p + 1]);
+    mine.insert(mine.end(), bonds.alpha.begin() + bonds.offsets[p],
+                bonds.alpha.begin() + bonds.offsets[p + 1]);
   }
   const std::vector<double> all = gather_concatenated(mine, comm);
   if (part.rank != 0) return;
@@ -59,7 +61,8 @@ void gather_family_alpha(const Partition& part, Bonds& bonds, MPI_Comm comm) {
                 bonds.alpha.begin() + bonds.offsets[p]);
     at += static_cast<std::size_t>(bonds.offsets[p + 1] - bonds.offsets[p]);
   }
-  if (at != all.size()) throw std::logic_error("gather_family_alpha: the ranks' families do not cover the bonds");
+  if (at != all.size())
+    throw std::logic_error("gather_family_alpha: the ranks' families do not cover the bonds");
 }
 
 }  // namespace pd

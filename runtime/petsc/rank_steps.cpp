@@ -18,8 +18,10 @@ RankSteps::RankSteps(StepState state)
     : s_(state), body_(state.model.particles, state.model.bonds, PETSC_COMM_WORLD), part_(body_.partition()) {
   const Model& model = s_.model;
   if (model.dofs.tied_count() > 0)
-    throw SceneError(s_.scene_file + ": solver.backend: the PETSc backend does not take fictitious layers (multipoint "
-                     "constraints) in dynamics: a layer's dof reads a master another rank may not hold; use the serial backend");
+    throw SceneError(s_.scene_file +
+                     ": solver.backend: the PETSc backend does not take fictitious layers (multipoint "
+                     "constraints) in dynamics: a layer's dof reads a master another rank may not hold; use "
+                     "the serial backend");
   const int d = model.particles.dim;
   std::vector<char> constrained(s_.u.size(), 0);
   for (int i : model.dofs.constrained_dofs()) constrained[i] = 1;
@@ -48,9 +50,10 @@ RankSteps::~RankSteps() {
 
 std::string RankSteps::describe(const std::string& method, const std::string& per_update,
                                 const std::string& global_sums) const {
-  return fmt::format("distributed: {} over {} MPI ranks (PETSc), rank 0 owns {} particles and {} ghosts; one ghost "
-                     "update per {}{}",
-                     method, part_.ranks, part_.owned(), part_.ghosts.size(), per_update, global_sums);
+  return fmt::format(
+      "distributed: {} over {} MPI ranks (PETSc), rank 0 owns {} particles and {} ghosts; one ghost "
+      "update per {}{}",
+      method, part_.ranks, part_.owned(), part_.ghosts.size(), per_update, global_sums);
 }
 
 void RankSteps::sync() {
@@ -120,7 +123,8 @@ void RankSteps::check_agrees(double value, const std::string& what) const {
   double high = 0, low = 0;
   MPI_Allreduce(&value, &high, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
   MPI_Allreduce(&value, &low, 1, MPI_DOUBLE, MPI_MIN, PETSC_COMM_WORLD);
-  if (high != low) throw std::logic_error(fmt::format("the ranks' {} differ ({:.17g} .. {:.17g})", what, low, high));
+  if (high != low)
+    throw std::logic_error(fmt::format("the ranks' {} differ ({:.17g} .. {:.17g})", what, low, high));
 }
 
 // The ranks agree on a signal every step (one integer all-reduce), so all stop at the

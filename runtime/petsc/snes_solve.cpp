@@ -32,7 +32,8 @@ std::string linear_failure_reason(KSP ksp) {
 std::string linear_failure_hint(KSP ksp) {
   return fmt::format(
       " (the Krylov solve: {}). The preconditioner does not suit this system; try "
-      "--petsc-options='-pc_type hypre' or '-pc_gamg_agg_nsmooths 0' (high stiffness contrast), a parallel direct "
+      "--petsc-options='-pc_type hypre' or '-pc_gamg_agg_nsmooths 0' (high stiffness contrast), a parallel "
+      "direct "
       "factor '-pc_type lu -pc_factor_mat_solver_type mumps' (a non-symmetric or indefinite system such as "
       "quadrature: obq), or the serial backend",
       linear_failure_reason(ksp));
@@ -153,8 +154,9 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
     // gamma 0.9, exponent 2, at most max_forcing): loose linear solves far from the
     // solution, tight near it. -snes_ksp_ew false turns it off (then krylov_tolerance).
     check(SNESKSPSetUseEW(snes, PETSC_TRUE), "SNESKSPSetUseEW");
-    check(SNESKSPSetParametersEW(snes, 2, s.max_forcing, s.max_forcing, 0.9, 2.0, PETSC_DEFAULT, PETSC_DEFAULT),
-          "SNESKSPSetParametersEW");
+    check(
+        SNESKSPSetParametersEW(snes, 2, s.max_forcing, s.max_forcing, 0.9, 2.0, PETSC_DEFAULT, PETSC_DEFAULT),
+        "SNESKSPSetParametersEW");
   }
   check(SNESSetFromOptions(snes), "SNESSetFromOptions");  // the scene's and the command line's options win
   {
@@ -168,7 +170,8 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
         "SNES newtonls on {} ranks, the generated tangent-vector product as a shell "
         "matrix, the preconditioner assembled on {} bonds ({})",
         ranks, pb.preconditioner->inputs().bonds->bond_count(),
-        pb.preconditioner->inputs().bonds == pb.tangent->inputs().bonds ? "the tangent's horizon" : "a shorter horizon");
+        pb.preconditioner->inputs().bonds == pb.tangent->inputs().bonds ? "the tangent's horizon"
+                                                                        : "a shorter horizon");
   }
   // GAMG is the default; when it fails a linear solve and the options name no
   // preconditioner, the load step is solved again once with hypre's BoomerAMG (as the serial
@@ -206,8 +209,9 @@ NewtonResult solve_distributed(const DistributedProblem& pb, Eigen::VectorXd& u,
         may_fall_back = false;
         const std::string why = linear_failure_reason(ksp);
         if (part.rank == 0 && log)
-          log(fmt::format("  the linear solve with GAMG failed ({}); load step {}/{} again with hypre BoomerAMG", why,
-                          step, s.load_steps));
+          log(fmt::format(
+              "  the linear solve with GAMG failed ({}); load step {}/{} again with hypre BoomerAMG", why,
+              step, s.load_steps));
         check(PCSetType(pc, PCHYPRE), "PCSetType");
         KSPType kt;
         check(KSPGetType(ksp, &kt), "KSPGetType");

@@ -22,9 +22,11 @@ class Lattice {
       const double fx = (p.x[2 * i] - ox_) / h, fy = (p.x[2 * i + 1] - oy_) / h;
       const long long cx = std::llround(fx), cy = std::llround(fy);
       if (std::fabs(fx - static_cast<double>(cx)) > 1e-6 || std::fabs(fy - static_cast<double>(cy)) > 1e-6)
-        throw std::runtime_error(fmt::format(
-            "{}: the J-integral needs a uniform lattice of spacing h (central differences, the paper's discretisation); "
-            "particle {} at ({:.9g}, {:.9g}) is off it (perturbed or non-uniform cloud)", where, i, p.x[2 * i], p.x[2 * i + 1]));
+        throw std::runtime_error(
+            fmt::format("{}: the J-integral needs a uniform lattice of spacing h (central differences, the "
+                        "paper's discretisation); "
+                        "particle {} at ({:.9g}, {:.9g}) is off it (perturbed or non-uniform cloud)",
+                        where, i, p.x[2 * i], p.x[2 * i + 1]));
       index_[key(cx, cy)] = i;
     }
   }
@@ -40,13 +42,16 @@ class Lattice {
   // (a line within 1e-6 h of an end counts as on it: the box a user types lands on
   // particle centres as often as not, and rounding must not decide their side).
   static std::pair<long long, long long> lines_inside(double lo, double hi, double o, double h) {
-    return {static_cast<long long>(std::ceil((lo - o) / h - 1e-6)), static_cast<long long>(std::floor((hi - o) / h + 1e-6))};
+    return {static_cast<long long>(std::ceil((lo - o) / h - 1e-6)),
+            static_cast<long long>(std::floor((hi - o) / h + 1e-6))};
   }
   double ox() const { return ox_; }
   double oy() const { return oy_; }
 
  private:
-  static long long key(long long cx, long long cy) { return (cx + (1LL << 30)) * (1LL << 31) + (cy + (1LL << 30)); }
+  static long long key(long long cx, long long cy) {
+    return (cx + (1LL << 30)) * (1LL << 31) + (cy + (1LL << 30));
+  }
   double h_, ox_ = 0, oy_ = 0;
   std::unordered_map<long long, int> index_;
 };
@@ -62,13 +67,15 @@ std::array<double, 2> dudx1(const Lattice& lat, const Particles& p, const double
 }
 }  // namespace
 
-JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour,
-                           const double* external) {
+JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h,
+                           const JContour& contour, const double* external) {
   const abi::KernelVariant& kernels = assembler.variant();
   const std::string& where = contour.where;
   if (kernels.energy == nullptr)
-    throw std::runtime_error(fmt::format("{}: law {} has no energy kernel, and the J-integral's contour term needs the "
-                                         "strain-energy density W", where, assembler.law().name));
+    throw std::runtime_error(
+        fmt::format("{}: law {} has no energy kernel, and the J-integral's contour term needs the "
+                    "strain-energy density W",
+                    where, assembler.law().name));
   const FamilyInputs& in = assembler.inputs();
   const Particles& p = *in.particles;
   const Bonds& bonds = *in.bonds;
@@ -101,7 +108,8 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
     return i >= 0 ? energy(i) : j >= 0 ? energy(j) : 0.0;
   };
   // n1 = +1 on the right side, -1 on the left; 0 on top and bottom.
-  for (long long cy = r0; cy <= r1; ++cy) res.contour_term += h * (edge_w(c1, c1 + 1, cy) - edge_w(c0, c0 - 1, cy));
+  for (long long cy = r0; cy <= r1; ++cy)
+    res.contour_term += h * (edge_w(c1, c1 + 1, cy) - edge_w(c0, c0 - 1, cy));
 
   // The double sum: family i in R with neighbours in Q, and family j in Q with
   // neighbours in R. Forces of neighbour k of family q: -V_q V_k t_q<k>.
@@ -109,7 +117,8 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
   double general = 0, pair = 0;
   for (int q = 0; q < n; ++q) {
     bool crosses = false;
-    for (int e = bonds.offsets[q]; e < bonds.offsets[q + 1] && !crosses; ++e) crosses = inside[bonds.neighbor[e]] != inside[q];
+    for (int e = bonds.offsets[q]; e < bonds.offsets[q + 1] && !crosses; ++e)
+      crosses = inside[bonds.neighbor[e]] != inside[q];
     if (!crosses) continue;
     const abi::Family fam = gather.gather(q, u);
     if (!has_intact_bond(fam)) continue;
@@ -139,30 +148,34 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
   res.J = res.contour_term - general - res.load_term;
   res.pairwise = res.contour_term - pair - res.load_term;
   if (!std::isfinite(res.J) || !std::isfinite(res.pairwise))
-    throw std::runtime_error(fmt::format("{}: the J-integral is not finite (law {})", where, assembler.law().name));
+    throw std::runtime_error(
+        fmt::format("{}: the J-integral is not finite (law {})", where, assembler.law().name));
   return res;
 }
 
 std::string j_integral_line(const JIntegralResult& r) {
-  return fmt::format("  J-integral (paper 004) on [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}]: J = {:.9g} (contour {:.9g}, bonds {:.9g}, "
-                     "loads {:.9g}; pairwise eq. 21: {:.9g}; {} particles inside, {} bonds crossing)",
-                     r.edge_min[0], r.edge_max[0], r.edge_min[1], r.edge_max[1], r.J, r.contour_term, r.bond_term,
-                     r.load_term, r.pairwise,
-                     r.inside, r.crossing_bonds);
+  return fmt::format(
+      "  J-integral (paper 004) on [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}]: J = {:.9g} (contour {:.9g}, bonds "
+      "{:.9g}, "
+      "loads {:.9g}; pairwise eq. 21: {:.9g}; {} particles inside, {} bonds crossing)",
+      r.edge_min[0], r.edge_max[0], r.edge_min[1], r.edge_max[1], r.J, r.contour_term, r.bond_term,
+      r.load_term, r.pairwise, r.inside, r.crossing_bonds);
 }
 
 nlohmann::ordered_json j_integral_json(const std::vector<JIntegralResult>& results) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const JIntegralResult& r : results)
-    list.push_back({{"contour", {{"min", {r.contour.min[0], r.contour.min[1]}}, {"max", {r.contour.max[0], r.contour.max[1]}}}},
-                    {"integrated", {{"min", {r.edge_min[0], r.edge_min[1]}}, {"max", {r.edge_max[0], r.edge_max[1]}}}},
-                    {"J", r.J},
-                    {"contour_term", r.contour_term},
-                    {"bond_term", r.bond_term},
-                    {"load_term", r.load_term},
-                    {"pairwise_eq21", r.pairwise},
-                    {"particles_inside", r.inside},
-                    {"crossing_bonds", r.crossing_bonds}});
+    list.push_back(
+        {{"contour",
+          {{"min", {r.contour.min[0], r.contour.min[1]}}, {"max", {r.contour.max[0], r.contour.max[1]}}}},
+         {"integrated", {{"min", {r.edge_min[0], r.edge_min[1]}}, {"max", {r.edge_max[0], r.edge_max[1]}}}},
+         {"J", r.J},
+         {"contour_term", r.contour_term},
+         {"bond_term", r.bond_term},
+         {"load_term", r.load_term},
+         {"pairwise_eq21", r.pairwise},
+         {"particles_inside", r.inside},
+         {"crossing_bonds", r.crossing_bonds}});
   return list;
 }
 

@@ -22,10 +22,9 @@
 // the contour runs halfway between them and the first particles outside.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "assembly/assembler.hpp"
 #include "input/scene.hpp"
@@ -33,14 +32,14 @@
 namespace pd {
 
 struct JIntegralResult {
-  JContour contour;          // as given
+  JContour contour;              // as given
   Point edge_min{}, edge_max{};  // the contour actually integrated (halfway between lattice lines)
-  double contour_term = 0;   // sum W n1 dS
-  double bond_term = 0;      // the double sum over bonds leaving R
-  double load_term = 0;      // sum_{i in R} b_i . du_i/dx1 (external loads inside R)
-  double J = 0;              // contour_term - bond_term - load_term
-  double pairwise = 0;       // contour_term - (eq. 21 with the pair force), = J for bond-based laws
-  int inside = 0;            // particles in R
+  double contour_term = 0;       // sum W n1 dS
+  double bond_term = 0;          // the double sum over bonds leaving R
+  double load_term = 0;          // sum_{i in R} b_i . du_i/dx1 (external loads inside R)
+  double J = 0;                  // contour_term - bond_term - load_term
+  double pairwise = 0;           // contour_term - (eq. 21 with the pair force), = J for bond-based laws
+  int inside = 0;                // particles in R
   long long crossing_bonds = 0;  // bonds from R to Q (each once)
 };
 
@@ -53,8 +52,8 @@ struct JIntegralResult {
 // pressure). Loads on particles inside R add - sum_{i in R} b_i . du_i/dx1 (equilibrium
 // with a body force in the derivation; the classical loaded-crack-face term), which keeps
 // J path independent when the crack faces inside the contour are loaded.
-JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h, const JContour& contour,
-                           const double* external = nullptr);
+JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h,
+                           const JContour& contour, const double* external = nullptr);
 
 // One line for the run log, and the summary.json entries (docs/scene_format.md).
 std::string j_integral_line(const JIntegralResult& r);

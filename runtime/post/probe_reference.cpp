@@ -26,24 +26,35 @@ Point probe_region_point(const Probe& probe, const Scene& s) {
       x[c] = r.has_within ? 0.5 * (std::max(s.lo[c], r.within_min[c]) + std::min(s.hi[c], r.within_max[c]))
                           : 0.5 * (s.lo[c] + s.hi[c]);
     const std::string& side = r.side;
-    if (side == "left") x[0] = s.lo[0];
-    else if (side == "right") x[0] = s.hi[0];
-    else if (side == "bottom") x[1] = s.lo[1];
-    else if (side == "top") x[1] = s.hi[1];
-    else if (side == "back") x[2] = s.lo[2];
-    else if (side == "front") x[2] = s.hi[2];
+    if (side == "left")
+      x[0] = s.lo[0];
+    else if (side == "right")
+      x[0] = s.hi[0];
+    else if (side == "bottom")
+      x[1] = s.lo[1];
+    else if (side == "top")
+      x[1] = s.hi[1];
+    else if (side == "back")
+      x[2] = s.lo[2];
+    else if (side == "front")
+      x[2] = s.hi[2];
     return x;
   }
-  throw SceneError(probe.where + ": reference_at: region needs a box or side region; give reference_at: particles or a point");
+  throw SceneError(
+      probe.where +
+      ": reference_at: region needs a box or side region; give reference_at: particles or a point");
 }
 
-double probe_reference(const Probe& probe, const AnalyticField& field, const std::vector<int>& ids, const Particles& p,
-                       const Scene& scene) {
+double probe_reference(const Probe& probe, const AnalyticField& field, const std::vector<int>& ids,
+                       const Particles& p, const Scene& scene) {
   const int c = probe.component;
   switch (probe.reference_at) {
-    case Probe::ReferenceAt::region: return field.displacement(probe_region_point(probe, scene).data())[c];
-    case Probe::ReferenceAt::point: return field.displacement(probe.reference_point.data())[c];
-    case Probe::ReferenceAt::particles: break;
+    case Probe::ReferenceAt::region:
+      return field.displacement(probe_region_point(probe, scene).data())[c];
+    case Probe::ReferenceAt::point:
+      return field.displacement(probe.reference_point.data())[c];
+    case Probe::ReferenceAt::particles:
+      break;
   }
   double sum = 0;
   for (int i : ids) sum += field.displacement(p.position(i))[c];

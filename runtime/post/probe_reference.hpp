@@ -21,7 +21,7 @@ Point probe_region_point(const Probe& probe, const Scene& scene);
 // The reference of one probe over its particles `ids`: the analytic field at the region
 // point, at the probe's explicit point, or (`reference_at: particles`) its mean over the
 // particles themselves.
-double probe_reference(const Probe& probe, const AnalyticField& field, const std::vector<int>& ids, const Particles& p,
-                       const Scene& scene);
+double probe_reference(const Probe& probe, const AnalyticField& field, const std::vector<int>& ids,
+                       const Particles& p, const Scene& scene);
 
 }  // namespace pd

@@ -12,7 +12,9 @@ std::vector<double> smooth_field(const Particles& particles, const Bonds& bonds,
   if (field.size() != static_cast<std::size_t>(n) * components)
     throw std::invalid_argument("smooth_field: the field does not have one value per particle and component");
   if (!can_smooth_with(w))
-    throw std::invalid_argument("smooth_field: the influence function is singular at r = 0, and eq. (49) weights the particle itself by w(0)");
+    throw std::invalid_argument(
+        "smooth_field: the influence function is singular at r = 0, and eq. (49) weights the particle itself "
+        "by w(0)");
   std::vector<double> out(field.size(), 0.0);
 #pragma omp parallel for schedule(static)
   for (int p = 0; p < n; ++p) {
@@ -26,7 +28,8 @@ std::vector<double> smooth_field(const Particles& particles, const Bonds& bonds,
       const int q = bonds.neighbor[b];
       const double weight = w(bonds.length[b], delta) * particles.volume[q];
       total += weight;
-      for (int c = 0; c < components; ++c) o[c] += weight * field[static_cast<std::size_t>(q) * components + c];
+      for (int c = 0; c < components; ++c)
+        o[c] += weight * field[static_cast<std::size_t>(q) * components + c];
     }
     for (int c = 0; c < components; ++c) o[c] /= total;
   }

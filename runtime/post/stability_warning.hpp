@@ -36,7 +36,7 @@ inline constexpr double zero_energy_warning_amplitude = 0.2;
 std::string zero_energy_warning(const ZeroEnergyContent& c, const std::string& law);
 
 // Measures the content of a solved u and logs it, and the warning when there is one.
-void log_zero_energy_content(const Particles& p, const Bonds& b, const std::vector<double>& u, const std::string& law,
-                             const std::function<void(const std::string&)>& log);
+void log_zero_energy_content(const Particles& p, const Bonds& b, const std::vector<double>& u,
+                             const std::string& law, const std::function<void(const std::string&)>& log);
 
 }  // namespace pd

@@ -1,11 +1,10 @@
 // The dynamic run's outputs: time-series rows, checkpoints and restarts, snapshots, result files.
-#include "run/dynamic_run.hpp"
-
 #include <fmt/core.h>
 
 #include <chrono>
 #include <stdexcept>
 
+#include "assembly/peridynamic_stress.hpp"
 #include "damage/critical_stretch.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/checkpoint_identity.hpp"
@@ -15,7 +14,7 @@
 #include "output/atomic_file.hpp"
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
-#include "assembly/peridynamic_stress.hpp"
+#include "run/dynamic_run.hpp"
 #include "run/run_outputs.hpp"
 #include "stopwatch.hpp"
 
@@ -66,11 +65,14 @@ std::string DynamicRun::series_csv_row(const SeriesRow& r) const {
 
 void DynamicRun::restore(const std::string& path, int& step, std::vector<double>& scalars) {
   const Checkpoint c = read_checkpoint(path);
-  check_checkpoint_belongs(path, c, checkpoint_identity(scene, model.particles, model.bonds, explicit_dynamics() ? dt() : 0.0), scene.dynamics->steps);
+  check_checkpoint_belongs(
+      path, c, checkpoint_identity(scene, model.particles, model.bonds, explicit_dynamics() ? dt() : 0.0),
+      scene.dynamics->steps);
   auto array = [&](const char* name, std::size_t size) -> const std::vector<double>& {
     const auto it = c.arrays.find(name);
     if (it == c.arrays.end() || it->second.size() != size)
-      throw std::runtime_error(fmt::format("{}: the checkpoint does not match this scene ({} missing or of another size)", path, name));
+      throw std::runtime_error(fmt::format(
+          "{}: the checkpoint does not match this scene ({} missing or of another size)", path, name));
     return it->second;
   };
   u = array("u", u.size());
@@ -84,14 +86,17 @@ void DynamicRun::restore(const std::string& path, int& step, std::vector<double>
     for (std::size_t i = 0; i + width <= s.size(); i += width) {
       SeriesRow r;
       r.step = static_cast<int>(s[i]), r.time = s[i + 1], r.kinetic = s[i + 2], r.strain = s[i + 3];
-      r.external_work = s[i + 4], r.broken_bonds = static_cast<long long>(s[i + 5]), r.residual_ratio = s[i + 6];
-      r.probes.assign(s.begin() + static_cast<std::ptrdiff_t>(i + kRowFixed), s.begin() + static_cast<std::ptrdiff_t>(i + width));
+      r.external_work = s[i + 4], r.broken_bonds = static_cast<long long>(s[i + 5]),
+      r.residual_ratio = s[i + 6];
+      r.probes.assign(s.begin() + static_cast<std::ptrdiff_t>(i + kRowFixed),
+                      s.begin() + static_cast<std::ptrdiff_t>(i + width));
       series.push_back(r);
     }
   }
   snapshots.clear();
   if (const auto it = c.arrays.find("snapshots"); it != c.arrays.end())
-    for (std::size_t i = 0; i + 1 < it->second.size(); i += 2) snapshots.emplace_back(static_cast<int>(it->second[i]), it->second[i + 1]);
+    for (std::size_t i = 0; i + 1 < it->second.size(); i += 2)
+      snapshots.emplace_back(static_cast<int>(it->second[i]), it->second[i + 1]);
   step = static_cast<int>(c.step);
   if (!model.assembler->intact()) model.assembler->update_moments();
   summary.dynamics->restarted_from = path;
@@ -123,10 +128,13 @@ void DynamicRun::save_checkpoint(int step, const std::vector<double>& scalars) {
 std::vector<OutputField> DynamicRun::output_fields() const {
   std::vector<OutputField> fields;
   if (!v.empty()) fields.push_back({"velocity", model.particles.dim, v});
-  fields.push_back({"material", 1, std::vector<double>(model.particles.material.begin(), model.particles.material.end())});
-  if (model.damage || !model.assembler->intact()) fields.push_back({"damage", 1, particle_damage(model.bonds)});
+  fields.push_back(
+      {"material", 1, std::vector<double>(model.particles.material.begin(), model.particles.material.end())});
+  if (model.damage || !model.assembler->intact())
+    fields.push_back({"damage", 1, particle_damage(model.bonds)});
   append_law_outputs(*model.assembler, model.particles, u, fields);
-  if (scene.output.stress) fields.push_back({"stress", model.particles.dim * model.particles.dim, stress_field()});
+  if (scene.output.stress)
+    fields.push_back({"stress", model.particles.dim * model.particles.dim, stress_field()});
   return fields;
 }
 
@@ -139,7 +147,8 @@ void DynamicRun::write_snapshot(int step, double t) {
   write_vtu_file(scene.output.directory + "/" + name, model.particles, u, output_fields());
   if (snapshots.empty() || snapshots.back().first != step) snapshots.emplace_back(step, t);
   std::vector<PvdEntry> entries;
-  for (const auto& [st, time] : snapshots) entries.push_back({time, fmt::format("snapshots/step_{:08d}.vtu", st)});
+  for (const auto& [st, time] : snapshots)
+    entries.push_back({time, fmt::format("snapshots/step_{:08d}.vtu", st)});
   write_pvd_file(scene.output.directory + "/animation.pvd", entries);
   ++summary.dynamics->snapshots;
 }
@@ -163,14 +172,17 @@ void DynamicRun::write_results() {
   write_file_atomically(dir + "/energies.csv", csv);
   summary.files.push_back(dir + "/energies.csv");
   const auto fields = output_fields();
-  if (scene.output.vtu) write_vtu_file(dir + "/result.vtu", model.particles, u, fields), summary.files.push_back(dir + "/result.vtu");
-  if (scene.output.csv) write_csv_file(dir + "/result.csv", model.particles, u, fields), summary.files.push_back(dir + "/result.csv");
+  if (scene.output.vtu)
+    write_vtu_file(dir + "/result.vtu", model.particles, u, fields),
+        summary.files.push_back(dir + "/result.vtu");
+  if (scene.output.csv)
+    write_csv_file(dir + "/result.csv", model.particles, u, fields),
+        summary.files.push_back(dir + "/result.csv");
   if (!snapshots.empty()) summary.files.push_back(dir + "/animation.pvd");
   if (summary.dynamics->checkpoints > 0) summary.files.push_back(dir + "/checkpoint.bin");
   summary.files.push_back(dir + "/summary.json");
   summary.output_seconds = seconds_since(t1);
   write_file_atomically(dir + "/summary.json", summary.json());
 }
-
 
 }  // namespace pd

@@ -12,8 +12,8 @@
 #include "discretize/discretization.hpp"
 #include "effects/inertia.hpp"
 #include "exec/serial_steps.hpp"
-#include "petsc/rank_steps_factory.hpp"
 #include "input/yaml_keys.hpp"
+#include "petsc/rank_steps_factory.hpp"
 #include "run/run_outputs.hpp"
 #include "stopwatch.hpp"
 
@@ -22,7 +22,8 @@ namespace pd {
 void check_dynamic_scene(const Scene& scene) {
   if (!scene.dynamics) throw std::invalid_argument("dynamic run: the scene has no dynamics section");
   if (is_obq(scene.quadrature))
-    throw std::invalid_argument(scene.file + ": domain.quadrature: " + std::string(quadrature_name(scene.quadrature)) +
+    throw std::invalid_argument(scene.file +
+                                ": domain.quadrature: " + std::string(quadrature_name(scene.quadrature)) +
                                 " is implemented for static solves only");
 }
 
@@ -38,8 +39,8 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
   const AssemblerOptions options = attach_assembler(model, scene, false, dyn.threads);
   if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
   summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
-  summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name, summary.variant,
-                                        model.influence->name));
+  summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name,
+                                        summary.variant, model.influence->name));
   // The loads (each scaled by its own function of time), the pre-cracks, damage
   // evolution, and the inertia (with the viscous damping) or relaxation's fictitious density.
   attach_effects(model, scene);
@@ -52,12 +53,14 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
   if (run.explicit_dynamics()) {
     run.v.assign(N, 0.0);
     if (dyn.dt > model.inertia->dt_stable)
-      run.log(fmt::format("  warning: dt = {:.6g} exceeds the stable estimate {:.6g}", dyn.dt, model.inertia->dt_stable));
+      run.log(fmt::format("  warning: dt = {:.6g} exceeds the stable estimate {:.6g}", dyn.dt,
+                          model.inertia->dt_stable));
   }
   summary.newton.unknowns = static_cast<std::int64_t>(model.dofs.free_count());
   summary.setup_seconds = model.build_seconds + seconds_since(t0);
-  run.log(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene.file,
-                      summary.particles, summary.bonds, scene.delta(), scene.delta() / scene.h, summary.setup_seconds));
+  run.log(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s",
+                      scene.file, summary.particles, summary.bonds, scene.delta(), scene.delta() / scene.h,
+                      summary.setup_seconds));
   for (const auto& e : summary.effects) run.log("  effect: " + e);
   for (const auto& w : summary.warnings) run.log("  warning: " + w);
   return run;

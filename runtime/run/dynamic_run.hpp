@@ -46,7 +46,7 @@ struct DynamicRun {
   RunSummary summary;
 
   bool explicit_dynamics() const { return scene.dynamics->method == DynamicsMethod::explicit_verlet; }
-  double dt() const;  // the inertia's time step (1 for relaxation)
+  double dt() const;               // the inertia's time step (1 for relaxation)
   DynamicsReport& start_report();  // summary.dynamics, new, with the method
   void apply_initial_conditions();
   void prescribe(double t) { model.dofs.apply_motion(t, u, v); }
@@ -88,7 +88,8 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
 RunSummary run_explicit(DynamicRun& run, bool write, int stop_after);
 RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after);
 inline RunSummary run_dynamic(DynamicRun& run, bool write = true, int stop_after = 0) {
-  return run.explicit_dynamics() ? run_explicit(run, write, stop_after) : run_relaxation(run, write, stop_after);
+  return run.explicit_dynamics() ? run_explicit(run, write, stop_after)
+                                 : run_relaxation(run, write, stop_after);
 }
 
 }  // namespace pd

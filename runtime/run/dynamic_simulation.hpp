@@ -11,12 +11,15 @@ class DynamicSimulation {
  public:
   using Log = DynamicRun::Log;
   DynamicSimulation(Scene scene, Log log)
-      : scene_(std::move(scene)), model_((check_dynamic_scene(scene_), build_model(scene_))),
+      : scene_(std::move(scene)),
+        model_((check_dynamic_scene(scene_), build_model(scene_))),
         run_(prepare_dynamic_run(model_, scene_, std::move(log))) {}
   DynamicSimulation(const DynamicSimulation&) = delete;
   DynamicSimulation& operator=(const DynamicSimulation&) = delete;
   // Runs from t = 0, or from scene.dynamics->restart when set (run_dynamic).
-  RunSummary run(bool write_outputs = true, int stop_after = 0) { return run_dynamic(run_, write_outputs, stop_after); }
+  RunSummary run(bool write_outputs = true, int stop_after = 0) {
+    return run_dynamic(run_, write_outputs, stop_after);
+  }
 
   const Particles& particles() const { return model_.particles; }
   const Bonds& bonds() const { return model_.bonds; }

@@ -9,13 +9,13 @@ namespace pd {
 
 struct DynamicsReport {
   DynamicsMethod method = DynamicsMethod::explicit_verlet;  // velocity Verlet or ADR
-  int first_step = 0;        // 0, or the checkpoint's step on a restart
-  int last_step = 0;         // the step (iteration) the run ended at
-  double dt = 0;             // the step used (explicit); 1 for relaxation
-  double dt_stable = 0;      // the Gershgorin estimate of the stable step (explicit)
-  std::string dt_rule;       // how dt was chosen
-  double damping = 0;        // explicit: the viscous coefficient; relaxation: the last adaptive c
-  double time = 0;           // simulated time at the end
+  int first_step = 0;                                       // 0, or the checkpoint's step on a restart
+  int last_step = 0;                                        // the step (iteration) the run ended at
+  double dt = 0;                                            // the step used (explicit); 1 for relaxation
+  double dt_stable = 0;  // the Gershgorin estimate of the stable step (explicit)
+  std::string dt_rule;   // how dt was chosen
+  double damping = 0;    // explicit: the viscous coefficient; relaxation: the last adaptive c
+  double time = 0;       // simulated time at the end
   double kinetic = 0, strain = 0, external_work = 0;
   bool strain_available = false;  // false when the law has no energy kernel
   bool converged = false;         // relaxation: |r_free| <= tolerance x reference

@@ -36,7 +36,8 @@ ExplicitStart start_explicit(DynamicRun& run, StepExecutor& exec, ExternalWork& 
   if (!dyn.restart.empty()) {
     std::vector<double> scalars;
     run.restore(dyn.restart, start.step, scalars);
-    if (scalars.size() < 2) throw std::runtime_error(dyn.restart + ": the checkpoint has no energy accumulators");
+    if (scalars.size() < 2)
+      throw std::runtime_error(dyn.restart + ": the checkpoint has no energy accumulators");
     if (exec.root()) work.restore(scalars[0]);
     start.broken_start = static_cast<long long>(scalars[1]);
   } else {

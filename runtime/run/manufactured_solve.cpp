@@ -58,8 +58,9 @@ bool meets_circle(const double* xa, const double* xb, const double* c, double R)
 // keeps its whole-ball weights and is counted. Every broken bond then weighs 0 in both
 // directions (collocation needs a pair's two weights zero together; a broken bond
 // carries no force whatever its weight).
-void reweigh_cut_families(const Particles& P, const Bonds& B, const ReproducingSpace& space, const std::vector<char>& needed,
-                          const ManufacturedSetup& s, std::vector<double>& w, ManufacturedResult& r) {
+void reweigh_cut_families(const Particles& P, const Bonds& B, const ReproducingSpace& space,
+                          const std::vector<char>& needed, const ManufacturedSetup& s, std::vector<double>& w,
+                          ManufacturedResult& r) {
   for (std::size_t b = 0; b < w.size(); ++b)
     if (B.alpha[b] == 0) w[b] = 0;
   for (int p = 0; p < P.size(); ++p) {
@@ -74,10 +75,11 @@ void reweigh_cut_families(const Particles& P, const Bonds& B, const ReproducingS
       }
     if (static_cast<int>(intact.size()) == B.family_size(p)) continue;
     const double delta = B.delta[p];
-    const double unit_x[2] = {x[0] / delta, x[1] / delta}, unit_c[2] = {s.hole_center[0] / delta, s.hole_center[1] / delta};
+    const double unit_x[2] = {x[0] / delta, x[1] / delta},
+                 unit_c[2] = {s.hole_center[0] / delta, s.hole_center[1] / delta};
     try {
-      const std::vector<double> v =
-          obq_family_weights_over(space, xi.data(), static_cast<int>(intact.size()), delta, p, x, [&](const BondMonomial& f) {
+      const std::vector<double> v = obq_family_weights_over(
+          space, xi.data(), static_cast<int>(intact.size()), delta, p, x, [&](const BondMonomial& f) {
             return ball_disk_shadow_moment_2d(f, 1.0, unit_x, unit_c, s.hole_radius / delta);
           });
       for (std::size_t k = 0; k < intact.size(); ++k) w[intact[k]] = v[k];
@@ -94,7 +96,8 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   const abi::InfluenceDescriptor* influence = abi::find_influence(s.influence);
   if (!law || law->dim != 2 || law->n_params != 2)
     throw std::invalid_argument("solve_manufactured: law '" + s.law + "' is not a 2D law of (lambda, mu)");
-  if (!influence) throw std::invalid_argument("solve_manufactured: no influence function '" + s.influence + "'");
+  if (!influence)
+    throw std::invalid_argument("solve_manufactured: no influence function '" + s.influence + "'");
   auto law_params = [&](double lambda, double mu) {
     std::vector<double> v(2);
     for (int i = 0; i < 2; ++i) v[i] = std::string(law->param_names[i]) == "lambda" ? lambda : mu;
@@ -109,12 +112,18 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   Particles P = square_cloud(s, collar);
   for (int p = 0; p < P.size() && s.inclusion_radius > 0; ++p) {
     const double* x = P.position(p);
-    P.material[p] = std::hypot(x[0] - s.inclusion_centre[0], x[1] - s.inclusion_centre[1]) < s.inclusion_radius ? 1 : 0;
+    P.material[p] =
+        std::hypot(x[0] - s.inclusion_centre[0], x[1] - s.inclusion_centre[1]) < s.inclusion_radius ? 1 : 0;
   }
   // A particle's own (lambda, mu), for the body force.
-  auto lame = [&](int p) { return P.material[p] == 1 ? std::array<double, 2>{s.inclusion_lambda, s.inclusion_mu} : std::array<double, 2>{s.lambda, s.mu}; };
+  auto lame = [&](int p) {
+    return P.material[p] == 1 ? std::array<double, 2>{s.inclusion_lambda, s.inclusion_mu}
+                              : std::array<double, 2>{s.lambda, s.mu};
+  };
   // Distance of a point from the boundary of the square (negative in an outside collar).
-  auto depth = [&](const double* x) { return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]}); };
+  auto depth = [&](const double* x) {
+    return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]});
+  };
   Bonds B = find_bonds(P, delta, influence->weight);
   const int n = P.size();
   std::vector<char> solved(n);
@@ -122,7 +131,8 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   r.particles = n;
   for (int p = 0; p < n; ++p) {
     const double* x = P.position(p);
-    const bool in_hole = s.hole_radius > 0 && std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) < s.hole_radius;
+    const bool in_hole =
+        s.hole_radius > 0 && std::hypot(x[0] - s.hole_center[0], x[1] - s.hole_center[1]) < s.hole_radius;
     solved[p] = depth(x) >= layer && !in_hole;
     r.solved += solved[p];
   }
@@ -182,8 +192,10 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
     for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
       const int row = index[it.row()];
       if (row < 0) continue;
-      if (index[col] >= 0) triplets.emplace_back(row, index[col], it.value());
-      else rhs[row] -= it.value() * exact[col];
+      if (index[col] >= 0)
+        triplets.emplace_back(row, index[col], it.value());
+      else
+        rhs[row] -= it.value() * exact[col];
     }
   SparseMatrix A(unknowns, unknowns);
   A.setFromTriplets(triplets.begin(), triplets.end());
@@ -220,7 +232,8 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
         r.u[2 * p + c] = solved[p] ? u[index[2 * p + c]] : exact[2 * p + c];
       }
   }
-  if (r.measured == 0) throw std::invalid_argument("solve_manufactured: no solved particle inside the error margin");
+  if (r.measured == 0)
+    throw std::invalid_argument("solve_manufactured: no solved particle inside the error margin");
   sum = component_sum[0] + component_sum[1];
   r.rms_error = std::sqrt(sum / r.measured);
   for (int c = 0; c < 2; ++c) r.rms_component[c] = std::sqrt(component_sum[c] / r.measured);

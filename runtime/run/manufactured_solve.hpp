@@ -14,12 +14,12 @@
 namespace pd {
 
 struct ManufacturedSetup {
-  int n = 24;                    // particles per side
-  double lo = 0, hi = 1;         // the square [lo, hi]^2 (the paper's: the unit square); h = (hi - lo) / n
-  double horizon_ratio = 3.5;    // delta / h
-  double perturbation = 0.2;     // uniform, times h
+  int n = 24;                  // particles per side
+  double lo = 0, hi = 1;       // the square [lo, hi]^2 (the paper's: the unit square); h = (hi - lo) / n
+  double horizon_ratio = 3.5;  // delta / h
+  double perturbation = 0.2;   // uniform, times h
   int seed = 1;
-  double layer_horizons = 1.0;   // Dirichlet layer width in horizons
+  double layer_horizons = 1.0;  // Dirichlet layer width in horizons
   // false: the layer is the outer part of the square (the paper's "layer of size delta
   // around the boundary of Omega", read as inside); true: a collar of ceil(layer / h)
   // lattice rows is added outside the square and every particle of the square is solved.
@@ -27,8 +27,8 @@ struct ManufacturedSetup {
   double lambda = 0.5, mu = 0.5;
   std::string law = "lps_plane_strain";  // takes (lambda, mu)
   std::string influence = "inv";         // K = 1/r up to a constant (the law divides by m)
-  bool obq = true;               // OBQ weights + collocation; false: the volume quadrature
-  bool odd_terms = false;        // OBQ space: paper001_odd_space instead of paper001_space
+  bool obq = true;                       // OBQ weights + collocation; false: the volume quadrature
+  bool odd_terms = false;                // OBQ space: paper001_odd_space instead of paper001_space
   // 0: the error over all solved particles (the paper's); > 0: only over those at least
   // this far from the boundary, a region that does not change with h.
   double error_margin = 0;

@@ -16,12 +16,12 @@
 #include <functional>
 #include <stdexcept>
 
+#include "constraints/constraints.hpp"
 #include "damage/critical_stretch.hpp"
 #include "dynamics/dynamic_relaxation.hpp"
 #include "dynamics/progress.hpp"
 #include "effects/inertia.hpp"
 #include "exec/step_executor.hpp"
-#include "constraints/constraints.hpp"
 #include "run/dynamic_run.hpp"
 #include "run/relaxation_state.hpp"
 #include "stopwatch.hpp"
@@ -107,7 +107,8 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
     exec.after_step();
     exec.forces(0.0, f, g);
     ratio = norm(f) / reference;  // the same on every process: all stop together
-    if (!std::isfinite(ratio)) throw std::runtime_error(fmt::format("adaptive dynamic relaxation diverged at iteration {}", s));
+    if (!std::isfinite(ratio))
+      throw std::runtime_error(fmt::format("adaptive dynamic relaxation diverged at iteration {}", s));
     const bool done = ratio <= dyn.tolerance;
     const bool row = s % dyn.output_every == 0 || done;
     const bool snapshot = dyn.snapshot_every > 0 && (s % dyn.snapshot_every == 0 || done);
@@ -116,7 +117,8 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
     if (row && root) run.series.push_back(run.make_row(s, s, ratio));
     if (write && snapshot) run.write_snapshot(s, s);
     if (checkpoint) {
-      RelaxationRestart state{adr.iterations(), reference, broken_start, adr.velocity(), adr.previous_force()};
+      RelaxationRestart state{adr.iterations(), reference, broken_start, adr.velocity(),
+                              adr.previous_force()};
       exec.gather({&state.v, &state.f_prev});
       if (root) run.save_checkpoint(s, relaxation_scalars(state));
     }
@@ -131,11 +133,13 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   rep.strain_available = model.assembler->has_energy();
   if (rep.strain_available && root) rep.strain = model.assembler->strain_energy(u.data());
   run.summary.newton.converged = rep.converged;
-  run.log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}", rep.converged ? "converged" : "not converged", s, ratio));
+  run.log(fmt::format("  relaxation: {} after {} iterations, |r|/ref = {:.3e}",
+                      rep.converged ? "converged" : "not converged", s, ratio));
   RunSummary summary = root ? run.finish(broken_start, t0, write) : run.finish_elsewhere(t0);
   if (!rep.converged && stop_after == 0)
-    throw std::runtime_error(fmt::format("adaptive dynamic relaxation did not converge in {} iterations (|r|/ref = {:.3e} > {:.3g})", s,
-                                         ratio, dyn.tolerance));
+    throw std::runtime_error(fmt::format(
+        "adaptive dynamic relaxation did not converge in {} iterations (|r|/ref = {:.3e} > {:.3g})", s, ratio,
+        dyn.tolerance));
   return summary;
 }
 

@@ -23,14 +23,17 @@ constexpr std::size_t kHead = 3;
 }
 
 std::vector<double> relaxation_scalars(const RelaxationRestart& state) {
-  std::vector<double> scalars{static_cast<double>(state.iterations), state.reference, static_cast<double>(state.broken_start)};
+  std::vector<double> scalars{static_cast<double>(state.iterations), state.reference,
+                              static_cast<double>(state.broken_start)};
   scalars.insert(scalars.end(), state.v.begin(), state.v.end());
   scalars.insert(scalars.end(), state.f_prev.begin(), state.f_prev.end());
   return scalars;
 }
 
-RelaxationRestart relaxation_restart(const std::vector<double>& scalars, std::size_t N, const std::string& file) {
-  if (scalars.size() != kHead + 2 * N) throw std::runtime_error(file + ": not a relaxation checkpoint of this scene");
+RelaxationRestart relaxation_restart(const std::vector<double>& scalars, std::size_t N,
+                                     const std::string& file) {
+  if (scalars.size() != kHead + 2 * N)
+    throw std::runtime_error(file + ": not a relaxation checkpoint of this scene");
   const auto v_begin = scalars.begin() + kHead, f_begin = v_begin + static_cast<std::ptrdiff_t>(N);
   RelaxationRestart state;
   state.iterations = static_cast<int>(scalars[0]);

@@ -28,6 +28,7 @@ struct RelaxationRestart {
 };
 std::vector<double> relaxation_scalars(const RelaxationRestart& state);
 // Throws std::runtime_error naming `file` when the scalars are not those of N dofs.
-RelaxationRestart relaxation_restart(const std::vector<double>& scalars, std::size_t N, const std::string& file);
+RelaxationRestart relaxation_restart(const std::vector<double>& scalars, std::size_t N,
+                                     const std::string& file);
 
 }  // namespace pd

@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "discretize/discretization.hpp"
-#include "post/probe_reference.hpp"
 #include "fields/analytic.hpp"
 #include "input/yaml_keys.hpp"
+#include "post/probe_reference.hpp"
 
 namespace pd {
 
@@ -34,8 +34,10 @@ double probe_mean(const Probe& probe, const std::vector<int>& ids, int dim, cons
                   const std::vector<double>* stress) {
   double sum = 0;
   if (probe.quantity == Probe::Quantity::stress) {
-    if (stress == nullptr) throw std::logic_error(probe.where + ": a stress probe evaluated without the stress field");
-    const std::size_t dd = static_cast<std::size_t>(dim) * dim, at = static_cast<std::size_t>(probe.component) * dim + probe.stress_column;
+    if (stress == nullptr)
+      throw std::logic_error(probe.where + ": a stress probe evaluated without the stress field");
+    const std::size_t dd = static_cast<std::size_t>(dim) * dim,
+                      at = static_cast<std::size_t>(probe.component) * dim + probe.stress_column;
     for (int p : ids) sum += (*stress)[static_cast<std::size_t>(p) * dd + at];
   } else {
     for (int p : ids) sum += u[static_cast<std::size_t>(p) * dim + probe.component];
@@ -44,8 +46,8 @@ double probe_mean(const Probe& probe, const std::vector<int>& ids, int dim, cons
 }
 
 std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
-                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u,
-                                         const std::vector<double>* stress) {
+                                         const std::vector<std::vector<int>>& ids,
+                                         const std::vector<double>& u, const std::vector<double>* stress) {
   std::vector<ProbeResult> out;
   for (std::size_t k = 0; k < scene.probes.size(); ++k) {
     const Probe& pr = scene.probes[k];
@@ -76,8 +78,8 @@ double field_error(const Scene& scene, const FieldSpec& reference, const Particl
   return den > 0 ? num / den : num;
 }
 
-double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles, const DofMap& dofs,
-                      const std::vector<double>& u, int& count) {
+double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles,
+                      const DofMap& dofs, const std::vector<double>& u, int& count) {
   const AnalyticField field(reference, scene.materials[0].elastic);
   const int d = particles.dim;
   double sum = 0;
@@ -94,13 +96,14 @@ double rms_error_free(const Scene& scene, const FieldSpec& reference, const Part
 }
 
 std::string probe_log_line(const ProbeResult& p) {
-  return p.has_reference ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
-                                       p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))
-                         : fmt::format("  probe {}: {:.9g}", p.name, p.value);
+  return p.has_reference
+             ? fmt::format("  probe {}: {:.9g} (analytic {:.9g}, error {:.3e}, relative {:.3e})", p.name,
+                           p.value, p.reference, p.error, p.error / std::max(std::fabs(p.reference), 1e-300))
+             : fmt::format("  probe {}: {:.9g}", p.name, p.value);
 }
 
-void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles, const std::vector<double>& u,
-                        std::vector<OutputField>& fields) {
+void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles,
+                        const std::vector<double>& u, std::vector<OutputField>& fields) {
   const auto& law = assembler.law();
   if (law.n_outputs == 0) return;
   const int n = particles.size();

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "constraints/dof_map.hpp"
 #include "input/scene.hpp"
 #include "output/particle_fields.hpp"
 #include "particles.hpp"
 #include "run/run_summary.hpp"
-#include "constraints/dof_map.hpp"
 
 namespace pd {
 
@@ -23,7 +23,8 @@ std::vector<std::vector<int>> probe_particles(const Scene& scene, const Particle
 // `stress` ([n*dim*dim], peridynamic_stress) is needed when a probe asks for stress
 // (std::logic_error otherwise); wants_stress says when to compute it.
 std::vector<ProbeResult> evaluate_probes(const Scene& scene, const Particles& particles,
-                                         const std::vector<std::vector<int>>& ids, const std::vector<double>& u,
+                                         const std::vector<std::vector<int>>& ids,
+                                         const std::vector<double>& u,
                                          const std::vector<double>* stress = nullptr);
 // The mean of probe k's quantity over its particles.
 double probe_mean(const Probe& probe, const std::vector<int>& ids, int dim, const std::vector<double>& u,
@@ -39,14 +40,14 @@ double field_error(const Scene& scene, const FieldSpec& reference, const Particl
 // Paper 001 §4's error: the RMS sqrt(sum_i |u_i - u_anal(x_i)|^2 / N) over the N particles
 // whose every dof is free (the solved ones; a Dirichlet collar is left out). `count` gets N;
 // 0 when no particle is free (the RMS is then 0).
-double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles, const DofMap& dofs,
-                      const std::vector<double>& u, int& count);
+double rms_error_free(const Scene& scene, const FieldSpec& reference, const Particles& particles,
+                      const DofMap& dofs, const std::vector<double>& u, int& count);
 
 // The probe's line in the run log.
 std::string probe_log_line(const ProbeResult& p);
 
 // The law's per-particle outputs (law.output_names) at u, one field each.
-void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles, const std::vector<double>& u,
-                        std::vector<OutputField>& fields);
+void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles,
+                        const std::vector<double>& u, std::vector<OutputField>& fields);
 
 }  // namespace pd

@@ -1,10 +1,11 @@
 // The run summary: text for the log, JSON for summary.json.
+#include "run/run_summary.hpp"
+
 #include <fmt/core.h>
 
 #include <nlohmann/json.hpp>
 
 #include "output/run_id.hpp"
-#include "run/run_summary.hpp"
 #include "version.hpp"
 
 namespace pd {
@@ -35,16 +36,25 @@ std::string RunSummary::json() const {
   j["unknowns"] = newton.unknowns;
   if (dynamics) {
     const DynamicsReport& d = *dynamics;
-    nlohmann::ordered_json dj{{"method", std::string(name_of(d.method))}, {"first_step", d.first_step}, {"last_step", d.last_step},
-                              {"time", d.time}, {"dt", d.dt}};
-    if (d.method == DynamicsMethod::explicit_verlet) dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
-    if (d.method == DynamicsMethod::relaxation) dj["last_adaptive_coefficient"] = d.damping;
-    else if (d.damping > 0) dj["viscous_damping"] = d.damping;
+    nlohmann::ordered_json dj{{"method", std::string(name_of(d.method))},
+                              {"first_step", d.first_step},
+                              {"last_step", d.last_step},
+                              {"time", d.time},
+                              {"dt", d.dt}};
+    if (d.method == DynamicsMethod::explicit_verlet)
+      dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
+    if (d.method == DynamicsMethod::relaxation)
+      dj["last_adaptive_coefficient"] = d.damping;
+    else if (d.damping > 0)
+      dj["viscous_damping"] = d.damping;
     nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
-    if (d.strain_available) energy["strain"] = d.strain;
-    else energy["strain"] = "unavailable (the law has no energy kernel)";
+    if (d.strain_available)
+      energy["strain"] = d.strain;
+    else
+      energy["strain"] = "unavailable (the law has no energy kernel)";
     if (d.method == DynamicsMethod::explicit_verlet) dj["energy"] = energy;
-    if (d.method == DynamicsMethod::relaxation) dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
+    if (d.method == DynamicsMethod::relaxation)
+      dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
     dj["bonds_broken"] = d.bonds_broken;
     if (!d.restarted_from.empty()) dj["restarted_from"] = d.restarted_from;
     dj["checkpoints"] = d.checkpoints;
@@ -53,19 +63,29 @@ std::string RunSummary::json() const {
     j["seconds"] = {{"setup", setup_seconds}, {"solve", solve_seconds}, {"output", output_seconds}};
   } else {
     j["nonzeros"] = newton.nonzeros;
-    j["linear_solver"] = {{"path", solver_path}, {"method", newton.linear_solver}, {"choice", newton.linear_choice}};
+    j["linear_solver"] = {
+        {"path", solver_path}, {"method", newton.linear_solver}, {"choice", newton.linear_choice}};
     nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
     for (const auto& it : newton.history) {
       nlohmann::ordered_json e{{"load_step", it.step}, {"load", it.load}};
       if (bonds_broken_by_damage) e["resolve"] = it.round;  // 0: the first solve of the step
-      e.update({{"iteration", it.iteration}, {"residual", it.residual}, {"increment", it.increment},
-                {"line_search", it.step_length}, {"linear_iterations", it.linear_iterations}});
+      e.update({{"iteration", it.iteration},
+                {"residual", it.residual},
+                {"increment", it.increment},
+                {"line_search", it.step_length},
+                {"linear_iterations", it.linear_iterations}});
       iterations.push_back(e);
     }
-    j["newton"] = {{"converged", newton.converged}, {"stagnated_on_rounding_floor", newton.stagnated}, {"iterations", iterations}};
-    if (bonds_broken_by_damage) j["damage"] = {{"bonds_broken", *bonds_broken_by_damage}, {"resolves", newton.resolves}};
-    j["seconds"] = {{"setup", setup_seconds}, {"assembly", newton.assembly_seconds}, {"linear_solve", newton.linear_seconds},
-                    {"solve", solve_seconds}, {"output", output_seconds}};
+    j["newton"] = {{"converged", newton.converged},
+                   {"stagnated_on_rounding_floor", newton.stagnated},
+                   {"iterations", iterations}};
+    if (bonds_broken_by_damage)
+      j["damage"] = {{"bonds_broken", *bonds_broken_by_damage}, {"resolves", newton.resolves}};
+    j["seconds"] = {{"setup", setup_seconds},
+                    {"assembly", newton.assembly_seconds},
+                    {"linear_solve", newton.linear_seconds},
+                    {"solve", solve_seconds},
+                    {"output", output_seconds}};
   }
   if (!j_integrals.empty()) j["j_integral"] = j_integral_json(j_integrals);
   nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
@@ -87,47 +107,60 @@ std::string RunSummary::json() const {
 }
 
 std::string RunSummary::text() const {
-  std::string s = fmt::format("particles: {}\nbonds: {}\nbroken bonds: {}\nkernel variant: {}\neffects:\n", particles,
-                              bonds, broken_bonds, variant);
+  std::string s = fmt::format("particles: {}\nbonds: {}\nbroken bonds: {}\nkernel variant: {}\neffects:\n",
+                              particles, bonds, broken_bonds, variant);
   for (const auto& e : effects) s += "  - " + e + "\n";
   if (dynamics) {
     const DynamicsReport& d = *dynamics;
     s += fmt::format("unknowns: {}\n{}: steps {}..{}, t = {:.6g}, dt = {:.6g}{}\n", newton.unknowns,
-                     d.method == DynamicsMethod::explicit_verlet ? "explicit dynamics (velocity Verlet)" : "adaptive dynamic relaxation",
+                     d.method == DynamicsMethod::explicit_verlet ? "explicit dynamics (velocity Verlet)"
+                                                                 : "adaptive dynamic relaxation",
                      d.first_step, d.last_step, d.time, d.dt,
-                     d.method == DynamicsMethod::explicit_verlet ? fmt::format(" ({}; stable estimate {:.6g})", d.dt_rule, d.dt_stable) : "");
+                     d.method == DynamicsMethod::explicit_verlet
+                         ? fmt::format(" ({}; stable estimate {:.6g})", d.dt_rule, d.dt_stable)
+                         : "");
     if (d.method == DynamicsMethod::explicit_verlet)
       s += fmt::format("energy: kinetic {:.9g} strain {} external work {:.9g}\n", d.kinetic,
-                       d.strain_available ? fmt::format("{:.9g}", d.strain) : std::string("unavailable (no energy kernel)"),
+                       d.strain_available ? fmt::format("{:.9g}", d.strain)
+                                          : std::string("unavailable (no energy kernel)"),
                        d.external_work);
     else
-      s += fmt::format("relaxation: {} |r|/ref = {:.3e}, last damping c = {:.4g}\n", d.converged ? "converged" : "NOT converged",
-                       d.residual_ratio, d.damping);
+      s += fmt::format("relaxation: {} |r|/ref = {:.3e}, last damping c = {:.4g}\n",
+                       d.converged ? "converged" : "NOT converged", d.residual_ratio, d.damping);
     if (d.bonds_broken > 0) s += fmt::format("bonds broken during the run: {}\n", d.bonds_broken);
-    s += fmt::format("seconds: setup {:.4f} solve {:.4f} output {:.4f}\n", setup_seconds, solve_seconds, output_seconds);
+    s += fmt::format("seconds: setup {:.4f} solve {:.4f} output {:.4f}\n", setup_seconds, solve_seconds,
+                     output_seconds);
   } else {
-    s += fmt::format("unknowns: {}\nnonzeros: {}\nsolver path: {}\nlinear solver: {} ({})\nnewton iterations: {}\n",
-                     newton.unknowns, newton.nonzeros, solver_path, newton.linear_solver, newton.linear_choice,
-                     newton.iterations());
+    s += fmt::format(
+        "unknowns: {}\nnonzeros: {}\nsolver path: {}\nlinear solver: {} ({})\nnewton iterations: {}\n",
+        newton.unknowns, newton.nonzeros, solver_path, newton.linear_solver, newton.linear_choice,
+        newton.iterations());
     for (const auto& it : newton.history)
-      s += fmt::format("  step {}{} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step,
-                       it.round > 0 ? fmt::format(" re-solve {}", it.round) : "", it.iteration, it.residual, it.step_length,
-                       it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
+      s +=
+          fmt::format("  step {}{} iteration {} residual {:.6e} line-search {:.3g}{}\n", it.step,
+                      it.round > 0 ? fmt::format(" re-solve {}", it.round) : "", it.iteration, it.residual,
+                      it.step_length,
+                      it.linear_iterations ? fmt::format(" linear iterations {}", it.linear_iterations) : "");
     if (bonds_broken_by_damage)
-      s += fmt::format("bonds broken between load steps: {} ({} re-solves)\n", *bonds_broken_by_damage, newton.resolves);
-    s += fmt::format("seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
-                     setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
+      s += fmt::format("bonds broken between load steps: {} ({} re-solves)\n", *bonds_broken_by_damage,
+                       newton.resolves);
+    s += fmt::format(
+        "seconds: setup {:.4f} assembly {:.4f} linear solve {:.4f} total solve {:.4f} output {:.4f}\n",
+        setup_seconds, newton.assembly_seconds, newton.linear_seconds, solve_seconds, output_seconds);
   }
   if (has_field_error) s += fmt::format("field error (eq. 48): {:.9e}\n", field_error);
   if (has_field_error)
-    s += fmt::format("RMS error over the {} free particles (paper 001 §4): {:.9e}\n", rms_particles, rms_error);
+    s += fmt::format("RMS error over the {} free particles (paper 001 §4): {:.9e}\n", rms_particles,
+                     rms_error);
   if (!smoothing.empty())
-    s += fmt::format("smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
-                     has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");
+    s += fmt::format(
+        "smoothing (eq. 49, {}): oscillation {:.6e}{}\n", smoothing, oscillation,
+        has_field_error ? fmt::format(", smoothed field error {:.9e}", smoothed_field_error) : "");
   for (const auto& r : j_integrals) s += j_integral_line(r).substr(2) + "\n";
   if (!probes.empty()) s += "probes:\n";
   for (const auto& p : probes)
-    s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name, p.value, p.reference, p.error)
+    s += p.has_reference ? fmt::format("  {}: value {:.12g} reference {:.12g} error {:.6e}\n", p.name,
+                                       p.value, p.reference, p.error)
                          : fmt::format("  {}: value {:.12g}\n", p.name, p.value);
   s.pop_back();  // one log call per line: the log adds the last newline (no empty line after it)
   return s;

@@ -16,7 +16,7 @@ namespace pd {
 struct ProbeResult {
   std::string name;
   int particles = 0;
-  double value = 0;      // mean displacement component over the region
+  double value = 0;  // mean displacement component over the region
   bool has_reference = false;
   double reference = 0;  // mean of the analytic field over the same particles
   double error = 0;      // |value - reference| (paper 000 eq. 36)
@@ -30,10 +30,10 @@ struct RunSummary {
   std::string variant;
   std::vector<std::string> effects;
   std::vector<std::string> warnings;  // the scene's and the setup's, each also logged as "  warning: ..."
-  std::string solver_path;  // the linear-solver path and why (SolverPlan::reason)
-  NewtonResult newton;                    // static runs
+  std::string solver_path;            // the linear-solver path and why (SolverPlan::reason)
+  NewtonResult newton;                // static runs
   std::optional<long long> bonds_broken_by_damage;  // static runs with `damage`: broken between load steps
-  std::optional<DynamicsReport> dynamics;  // dynamic and relaxation runs only
+  std::optional<DynamicsReport> dynamics;           // dynamic and relaxation runs only
   std::vector<ProbeResult> probes;
   bool has_field_error = false;
   double field_error = 0;  // paper 000 eq. (48): sum |u_anal - u|^2 / sum |u_anal|^2

@@ -15,7 +15,10 @@ class Simulation {
   using Log = RunLog;
   // Builds the model and plans the solver (setup, timed).
   Simulation(Scene scene, Log log)
-      : scene_(std::move(scene)), log_(std::move(log)), model_(build_model(scene_)), run_(plan_static_run(model_, scene_, log_)) {}
+      : scene_(std::move(scene)),
+        log_(std::move(log)),
+        model_(build_model(scene_)),
+        run_(plan_static_run(model_, scene_, log_)) {}
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
   // Solves and writes the outputs; throws on failure (nothing half-written).

@@ -32,8 +32,12 @@ void write_static_outputs(StaticRun& run, const Model& model, const Scene& scene
   // The files form one result: when a signal stops the writing half-way, the files this
   // run already renamed into place go too (a result without its summary is partial).
   try {
-    if (scene.output.vtu) write_vtu_file(dir + "/result.vtu", model.particles, u, fields), summary.files.push_back(dir + "/result.vtu");
-    if (scene.output.csv) write_csv_file(dir + "/result.csv", model.particles, u, fields), summary.files.push_back(dir + "/result.csv");
+    if (scene.output.vtu)
+      write_vtu_file(dir + "/result.vtu", model.particles, u, fields),
+          summary.files.push_back(dir + "/result.vtu");
+    if (scene.output.csv)
+      write_csv_file(dir + "/result.csv", model.particles, u, fields),
+          summary.files.push_back(dir + "/result.csv");
     summary.files.push_back(dir + "/summary.json");
     summary.output_seconds = seconds_since(t1);
     write_file_atomically(dir + "/summary.json", summary.json());

@@ -1,4 +1,6 @@
 // run_static: Newton over the load steps on the model's system, then what the answer reports.
+#include "run/static_run.hpp"
+
 #include <fmt/core.h>
 
 #include <chrono>
@@ -6,16 +8,15 @@
 #include <span>
 #include <stdexcept>
 
+#include "assembly/peridynamic_stress.hpp"
+#include "constraints/constraints.hpp"
 #include "damage/critical_stretch.hpp"
 #include "effects/loads.hpp"
-#include "assembly/peridynamic_stress.hpp"
+#include "input/yaml_keys.hpp"
 #include "post/smoothing.hpp"
 #include "post/stability_warning.hpp"
-#include "input/yaml_keys.hpp"
-#include "constraints/constraints.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/run_outputs.hpp"
-#include "run/static_run.hpp"
 #include "solve/distributed_backend.hpp"
 #include "stopwatch.hpp"
 
@@ -29,16 +30,19 @@ NewtonSettings newton_settings(const SolverSpec& sv, const SolverPlan& plan) {
   s.relative_tolerance = sv.tolerance;
   s.increment_tolerance = sv.increment_tolerance;
   s.matrix_free = plan.matrix_free();
-  s.matrix_free_preconditioner = plan.short_horizon_preconditioner() ? MatrixFreePreconditioner::approximate_tangent
-                                                                     : MatrixFreePreconditioner::jacobi;
+  s.matrix_free_preconditioner = plan.short_horizon_preconditioner()
+                                     ? MatrixFreePreconditioner::approximate_tangent
+                                     : MatrixFreePreconditioner::jacobi;
   s.linear.method = s.matrix_free ? LinearMethod::automatic : plan.linear;
   s.linear.preconditioner = plan.preconditioner;
   s.linear.tolerance = sv.krylov_tolerance;
   s.linear.max_iterations = sv.krylov_max_iterations;
   s.linear.direct_max_nonzeros = sv.direct_max_nonzeros;
   s.krylov_tolerance = sv.krylov_tolerance;
-  if (sv.krylov_max_iterations > 0) s.krylov_max_iterations = sv.krylov_max_iterations;
-  else s.krylov_max_iterations = 20000;
+  if (sv.krylov_max_iterations > 0)
+    s.krylov_max_iterations = sv.krylov_max_iterations;
+  else
+    s.krylov_max_iterations = 20000;
   return s;
 }
 
@@ -50,15 +54,21 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
   const auto free_force = [&](const Effect& e) {
     std::vector<double> zero(run.u.size(), 0.0), force(run.u.size(), 0.0);
     e.add_forces(zero.data(), 1.0, force.data());
-    return dofs.restrict_free(Eigen::Map<const Eigen::VectorXd>(force.data(), static_cast<Eigen::Index>(force.size()))).norm();
+    return dofs
+        .restrict_free(
+            Eigen::Map<const Eigen::VectorXd>(force.data(), static_cast<Eigen::Index>(force.size())))
+        .norm();
   };
   for (const BoundaryCondition& bc : scene.boundary) {
-    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce) continue;
-    if (bc.method == BoundaryCondition::Method::fictitious_layer) continue;  // a load through the layer's ties
+    if (bc.kind != BoundaryCondition::Kind::Traction && bc.kind != BoundaryCondition::Kind::BodyForce)
+      continue;
+    if (bc.method == BoundaryCondition::Method::fictitious_layer)
+      continue;  // a load through the layer's ties
     if (free_force(*make_external_loads(scene, model.particles, std::span(&bc, 1))) > 0.0) continue;
-    const std::string w = bc.where + ": the " + (bc.kind == BoundaryCondition::Kind::Traction ? "traction" : "body force") +
-                          " acts only on components whose displacement is prescribed: the constraints take it and it "
-                          "does no work (check the regions)";
+    const std::string w =
+        bc.where + ": the " + (bc.kind == BoundaryCondition::Kind::Traction ? "traction" : "body force") +
+        " acts only on components whose displacement is prescribed: the constraints take it and it "
+        "does no work (check the regions)";
     run.summary.warnings.push_back(w);
     log("  warning: " + w);
   }
@@ -78,8 +88,8 @@ long long after_load_step(const Model& model, const Scene& scene, const RunLog& 
   long long changes = 0;
   for (const auto& e : model.effects) changes += e->after_step(u.data(), FamilyScope{});
   if (changes == 0) return 0;
-  log(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again", load, step,
-                  scene.solver.load_steps, changes, broken_bond_count(model.bonds)));
+  log(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again",
+                  load, step, scene.solver.load_steps, changes, broken_bond_count(model.bonds)));
   // A piece cut loose by the new crack faces would make K singular: say which.
   check_held(model.particles, model.bonds, model.dofs);
   return changes;
@@ -94,10 +104,12 @@ void smooth(StaticRun& run, const Model& model, const Scene& scene, const RunLog
   for (std::size_t i = 0; i < u.size(); ++i) num += std::pow(u[i] - run.u_smooth[i], 2), den += u[i] * u[i];
   run.summary.smoothing = w->name;
   run.summary.oscillation = den > 0 ? std::sqrt(num / den) : 0.0;
-  log(fmt::format("  smoothing (paper 000 eq. 49, influence {}): |u - u_s| / |u| = {:.6e}", w->name, run.summary.oscillation));
+  log(fmt::format("  smoothing (paper 000 eq. 49, influence {}): |u - u_s| / |u| = {:.6e}", w->name,
+                  run.summary.oscillation));
   if (scene.reference) {
     run.summary.smoothed_field_error = field_error(scene, *scene.reference, model.particles, run.u_smooth);
-    log(fmt::format("  field error of the smoothed solution (eq. 48): {:.6e}", run.summary.smoothed_field_error));
+    log(fmt::format("  field error of the smoothed solution (eq. 48): {:.6e}",
+                    run.summary.smoothed_field_error));
   }
 }
 
@@ -106,14 +118,18 @@ void report(StaticRun& run, const Model& model, const Scene& scene, const RunLog
   RunSummary& summary = run.summary;
   const std::vector<double>& u = run.u;
   if (wants_stress(scene)) run.stress = peridynamic_stress(*model.assembler, u.data());
-  summary.probes = evaluate_probes(scene, model.particles, probe_particles(scene, model.particles), u, &run.stress);
+  summary.probes =
+      evaluate_probes(scene, model.particles, probe_particles(scene, model.particles), u, &run.stress);
   log_zero_energy_content(model.particles, model.bonds, u, summary.law, log);
   if (scene.reference) {
     summary.has_field_error = true;
     summary.field_error = field_error(scene, *scene.reference, model.particles, u);
-    log(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene.reference->solution, summary.field_error));
-    summary.rms_error = rms_error_free(scene, *scene.reference, model.particles, model.dofs, u, summary.rms_particles);
-    log(fmt::format("  RMS error over the {} free particles (paper 001 §4): {:.6e}", summary.rms_particles, summary.rms_error));
+    log(fmt::format("  field error against {} (paper 000 eq. 48): {:.6e}", scene.reference->solution,
+                    summary.field_error));
+    summary.rms_error =
+        rms_error_free(scene, *scene.reference, model.particles, model.dofs, u, summary.rms_particles);
+    log(fmt::format("  RMS error over the {} free particles (paper 001 §4): {:.6e}", summary.rms_particles,
+                    summary.rms_error));
   }
   if (!scene.output.smoothing_influence.empty()) smooth(run, model, scene, log);
   std::vector<double> external(scene.output.j_integral.empty() ? 0 : u.size(), 0.0);
@@ -147,10 +163,12 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
     if (scene.damage) settings.max_resolves = scene.damage->max_resolves;
     if (run.plan.backend == Backend::petsc) {
       if (dofs.tied_count() > 0)
-        throw SceneError(scene.file + ": solver.backend: the PETSc backend does not take fictitious layers "
+        throw SceneError(scene.file +
+                         ": solver.backend: the PETSc backend does not take fictitious layers "
                          "(multipoint constraints); use the serial backend");
       const FamilyAssembler* pc = model.approximation ? model.approximation.get() : model.assembler.get();
-      summary.newton = solve_distributed({model.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log);
+      summary.newton = solve_distributed(
+          {model.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log);
     } else {
       summary.newton = NewtonSolver(settings, log).solve(system, dofs, u);
     }
@@ -168,7 +186,8 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
   if (!summary.newton.converged) throw std::runtime_error(summary.newton.message);
   for (Eigen::Index i = 0; i < u.size(); ++i)
     if (!std::isfinite(u[i]))
-      throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})", i / model.particles.dim, summary.law));
+      throw std::runtime_error(fmt::format("the solution is not finite at particle {} (law {})",
+                                           i / model.particles.dim, summary.law));
   run.u.assign(u.data(), u.data() + u.size());
   report(run, model, scene, log);
 }

@@ -13,7 +13,8 @@ namespace {
 
 class AssembledStep final : public LinearStep {
  public:
-  AssembledStep(const NewtonSettings& s, bool symmetric, StepLog log) : linear_(s.linear, symmetric, std::move(log)) {}
+  AssembledStep(const NewtonSettings& s, bool symmetric, StepLog log)
+      : linear_(s.linear, symmetric, std::move(log)) {}
 
   Eigen::VectorXd direction(const LinearStepInput& in, const Eigen::VectorXd& rf, NewtonRecord& rec,
                             NewtonResult& res) override {
@@ -33,8 +34,8 @@ class AssembledStep final : public LinearStep {
     rec.linear_iterations = st.iterations;
     rec.linear_error = st.estimated_error;
     if (!st.converged)
-      throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})", st.method,
-                                           st.iterations, st.estimated_error));
+      throw std::runtime_error(fmt::format("{} did not converge in {} iterations (relative residual {:.2e})",
+                                           st.method, st.iterations, st.estimated_error));
     return x;
   }
 

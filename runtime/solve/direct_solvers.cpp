@@ -28,8 +28,9 @@ class CholmodSolver final : public SparseSolver {
       llt_.factorize(A);
     }
     if (llt_.info() == Eigen::Success) return true;
-    failure_ = "CHOLMOD: the matrix is not positive definite (a rigid-body mode left unconstrained, a "
-               "non-symmetric law, or a law that lost stability?)";
+    failure_ =
+        "CHOLMOD: the matrix is not positive definite (a rigid-body mode left unconstrained, a "
+        "non-symmetric law, or a law that lost stability?)";
     return false;
   }
   LinearSolveStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
-#include "effects/effect.hpp"
 #include "constraints/dof_map.hpp"
+#include "effects/effect.hpp"
 #include "solve/newton.hpp"
 
 namespace pd {

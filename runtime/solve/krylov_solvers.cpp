@@ -33,7 +33,8 @@ class KrylovSolver final : public SparseSolver {
       const ProgressPhase phase(name_ + " solve of " + std::to_string(b.size()) + " unknowns");
       x = solver_.solve(b);
     }
-    LinearSolveStats s{name_, static_cast<int>(solver_.iterations()), solver_.error(), solver_.info() == Eigen::Success};
+    LinearSolveStats s{name_, static_cast<int>(solver_.iterations()), solver_.error(),
+                       solver_.info() == Eigen::Success};
     return s;
   }
 
@@ -44,16 +45,19 @@ class KrylovSolver final : public SparseSolver {
 
 // Lower|Upper: the full matrix is stored, and the product with both triangles is
 // faster (and parallel) than the symmetric product from one.
-using CgIc = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                                      Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::AMDOrdering<int>>>;
-using CgDiagonal = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>>;
+using CgIc =
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
+                             Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::AMDOrdering<int>>>;
+using CgDiagonal = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
+                                            Eigen::DiagonalPreconditioner<double>>;
 using BicgstabIlut = Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>>;
 }  // namespace
 
 std::unique_ptr<SparseSolver> make_krylov_solver(LinearMethod method, const LinearSolverOptions& o) {
   const Preconditioner pre = o.preconditioner;
   if (method == LinearMethod::cg) {
-    if (pre == Preconditioner::automatic || pre == Preconditioner::ic) return std::make_unique<KrylovSolver<CgIc>>("cg+ic", o);
+    if (pre == Preconditioner::automatic || pre == Preconditioner::ic)
+      return std::make_unique<KrylovSolver<CgIc>>("cg+ic", o);
     if (pre == Preconditioner::diagonal) return std::make_unique<KrylovSolver<CgDiagonal>>("cg+diagonal", o);
   } else if (method == LinearMethod::bicgstab) {
     if (pre == Preconditioner::automatic || pre == Preconditioner::ilut)

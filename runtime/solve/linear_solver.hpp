@@ -8,8 +8,8 @@
 #include <string>
 
 #include "assembly/sparsity_pattern.hpp"
-#include "solve/solver_plan.hpp"
 #include "input/solver_spec.hpp"
+#include "solve/solver_plan.hpp"
 
 namespace pd {
 
@@ -39,9 +39,10 @@ class SparseSolver {
 
 struct LinearSolverOptions {
   LinearMethod method = LinearMethod::automatic;  // automatic | cholmod | umfpack | cg | bicgstab
-  Preconditioner preconditioner = Preconditioner::automatic;  // cg: ic | diagonal (automatic: ic); bicgstab: ilut
-  double tolerance = 1e-10;     // Krylov relative residual
-  int max_iterations = 0;       // Krylov; 0: Eigen's default (2 n)
+  Preconditioner preconditioner =
+      Preconditioner::automatic;  // cg: ic | diagonal (automatic: ic); bicgstab: ilut
+  double tolerance = 1e-10;       // Krylov relative residual
+  int max_iterations = 0;         // Krylov; 0: Eigen's default (2 n)
   // automatic: a direct factorisation up to this many nonzeros of the (reduced) matrix
   // (choose_linear_solver in solve/solver_plan.hpp); the scene's default.
   std::int64_t direct_max_nonzeros = SolverSpec{}.direct_max_nonzeros;
@@ -56,7 +57,8 @@ std::unique_ptr<SparseSolver> make_sparse_solver(LinearMethod method, const Line
 // why. Throws when no fallback is left.
 class AutoLinearSolver final : public SparseSolver {
  public:
-  AutoLinearSolver(LinearSolverOptions options, bool symmetric, std::function<void(const std::string&)> log = {});
+  AutoLinearSolver(LinearSolverOptions options, bool symmetric,
+                   std::function<void(const std::string&)> log = {});
   std::string name() const override { return solver_ ? solver_->name() : "unset"; }
   void analyse(const SparseMatrix& A) override;
   bool factor(const SparseMatrix& A) override;  // throws instead of returning false

@@ -15,21 +15,30 @@ std::unique_ptr<SparseSolver> make_krylov_solver(LinearMethod method, const Line
 std::unique_ptr<SparseSolver> make_sparse_solver(LinearMethod method, const LinearSolverOptions& o) {
   std::unique_ptr<SparseSolver> s;
   switch (method) {
-    case LinearMethod::cholmod: s = make_cholmod_solver(); break;
-    case LinearMethod::umfpack: s = make_umfpack_solver(); break;
+    case LinearMethod::cholmod:
+      s = make_cholmod_solver();
+      break;
+    case LinearMethod::umfpack:
+      s = make_umfpack_solver();
+      break;
     case LinearMethod::cg:
-    case LinearMethod::bicgstab: s = make_krylov_solver(method, o); break;
+    case LinearMethod::bicgstab:
+      s = make_krylov_solver(method, o);
+      break;
     case LinearMethod::automatic:
-    case LinearMethod::matrix_free: break;
+    case LinearMethod::matrix_free:
+      break;
   }
   if (!s)
-    throw std::invalid_argument(fmt::format("no assembled linear solver '{}' with preconditioner '{}' (methods: "
-                                            "cholmod, umfpack, cg [ic|diagonal], bicgstab [ilut])",
-                                            name_of(method), name_of(o.preconditioner)));
+    throw std::invalid_argument(
+        fmt::format("no assembled linear solver '{}' with preconditioner '{}' (methods: "
+                    "cholmod, umfpack, cg [ic|diagonal], bicgstab [ilut])",
+                    name_of(method), name_of(o.preconditioner)));
   return s;
 }
 
-AutoLinearSolver::AutoLinearSolver(LinearSolverOptions options, bool symmetric, std::function<void(const std::string&)> log)
+AutoLinearSolver::AutoLinearSolver(LinearSolverOptions options, bool symmetric,
+                                   std::function<void(const std::string&)> log)
     : options_(std::move(options)), symmetric_(symmetric), log_(std::move(log)) {
   if (options_.method != LinearMethod::automatic)
     solver_ = make_sparse_solver(options_.method, options_);  // fail early on a bad pair
@@ -37,8 +46,8 @@ AutoLinearSolver::AutoLinearSolver(LinearSolverOptions options, bool symmetric, 
 
 void AutoLinearSolver::analyse(const SparseMatrix& A) {
   if (!chosen_) {
-    choice_ = choose_linear_solver(options_.method, options_.preconditioner, options_.direct_max_nonzeros, A.rows(),
-                                   A.nonZeros(), symmetric_);
+    choice_ = choose_linear_solver(options_.method, options_.preconditioner, options_.direct_max_nonzeros,
+                                   A.rows(), A.nonZeros(), symmetric_);
     chosen_ = true;
     if (!solver_) solver_ = make_sparse_solver(choice_.method, options_);
     if (log_) log_("linear solver: " + solver_->name() + " (" + choice_.reason + ")");

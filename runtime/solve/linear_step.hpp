@@ -44,7 +44,7 @@ std::unique_ptr<LinearStep> make_assembled_step(const NewtonSettings& settings, 
 // jvp, preconditioned by Jacobi or by the factorised approximate tangent. Throws
 // std::invalid_argument when the system lacks what the preconditioner needs.
 // `symmetric`: the reduced tangent is (the system's, and no tied dofs).
-std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings, const NonlinearSystem& system,
-                                                  bool symmetric, StepLog log);
+std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings,
+                                                  const NonlinearSystem& system, bool symmetric, StepLog log);
 
 }  // namespace pd

@@ -16,12 +16,14 @@ Eigen::VectorXd safe_inverse_diagonal(const Eigen::VectorXd& d) {
   Eigen::VectorXd inv(d.size());
   const double scale = d.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < d.size(); ++i)
-    inv[i] = (std::isfinite(d[i]) && std::abs(d[i]) > 1e-14 * scale) ? 1.0 / d[i] : 1.0 / (scale > 0 ? scale : 1.0);
+    inv[i] = (std::isfinite(d[i]) && std::abs(d[i]) > 1e-14 * scale) ? 1.0 / d[i]
+                                                                     : 1.0 / (scale > 0 ? scale : 1.0);
   return inv;
 }
 
 LinearOperator diagonal_preconditioner(Eigen::VectorXd inv_diagonal) {
-  return [d = std::move(inv_diagonal)](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = d.cwiseProduct(r); };
+  return
+      [d = std::move(inv_diagonal)](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = d.cwiseProduct(r); };
 }
 
 KrylovResult preconditioned_cg(const LinearOperator& A, const LinearOperator& M, const Eigen::VectorXd& b,
@@ -96,8 +98,8 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator&
     for (; j < m && res.iterations < max_it; ++j, ++res.iterations) {
       throw_if_interrupted("during a matrix-free GMRES solve");
       M(V.col(j), z);
-      A(z, w);  // right preconditioning: A M v
-      for (int i = 0; i <= j; ++i) {    // modified Gram-Schmidt
+      A(z, w);                        // right preconditioning: A M v
+      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         H(i, j) = w.dot(V.col(i));
         w -= H(i, j) * V.col(i);
       }
@@ -125,7 +127,8 @@ KrylovResult preconditioned_gmres(const LinearOperator& A, const LinearOperator&
     const Eigen::VectorXd y = H.topLeftCorner(j, j).triangularView<Eigen::Upper>().solve(g.head(j));
     M(V.leftCols(j) * y, z);
     x += z;
-    if (H.topLeftCorner(j, j).diagonal().cwiseAbs().minCoeff() == 0) break;  // breakdown: nothing more to gain
+    if (H.topLeftCorner(j, j).diagonal().cwiseAbs().minCoeff() == 0)
+      break;  // breakdown: nothing more to gain
   }
   A(x, Ax);
   res.relative_residual = (b - Ax).norm() / bnorm;

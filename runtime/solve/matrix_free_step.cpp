@@ -43,7 +43,8 @@ class MatrixFreeStep final : public LinearStep {
         Kv_full_(system.size()),
         diag_(system.size()) {
     if (approximate_ && !system.has_approximate_tangent())
-      throw std::invalid_argument("Newton: the approximate-tangent preconditioner needs the system's approximate_tangent()");
+      throw std::invalid_argument(
+          "Newton: the approximate-tangent preconditioner needs the system's approximate_tangent()");
   }
 
   Eigen::VectorXd direction(const LinearStepInput& in, const Eigen::VectorXd& rf, NewtonRecord& rec,
@@ -68,7 +69,9 @@ class MatrixFreeStep final : public LinearStep {
       res.assembly_seconds += seconds_since(t0);
       t0 = std::chrono::steady_clock::now();
     }
-    const LinearOperator approximate_solve = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { P_solver_.solve(r, z); };
+    const LinearOperator approximate_solve = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+      P_solver_.solve(r, z);
+    };
     const LinearOperator& precondition = approximate_ ? approximate_solve : jacobi_;
     const LinearOperator op = [&](const Eigen::VectorXd& xf, Eigen::VectorXd& yf) {
       v_full_.setZero();
@@ -79,7 +82,8 @@ class MatrixFreeStep final : public LinearStep {
     // CG needs K and the preconditioner positive definite: a factorisation that found
     // the approximate tangent indefinite (CHOLMOD fell back to LU) rules it out.
     if (use_cg_ && approximate_ && P_solver_.choice().method != LinearMethod::cholmod) {
-      say(fmt::format("  the approximate tangent is not positive definite ({}): GMRES from here on", P_solver_.name()));
+      say(fmt::format("  the approximate tangent is not positive definite ({}): GMRES from here on",
+                      P_solver_.name()));
       use_cg_ = false;
     }
     const double norm = rf.norm();
@@ -91,17 +95,22 @@ class MatrixFreeStep final : public LinearStep {
       if (kr.indefinite) {
         // Negative curvature: the tangent is indefinite here (softening, or a follower
         // load's stiffness). GMRES does not need definiteness; restart it from zero.
-        say(fmt::format("  CG met negative curvature after {} iterations (the tangent is not positive definite): "
-                        "GMRES from here on", kr.iterations));
+        say(fmt::format(
+            "  CG met negative curvature after {} iterations (the tangent is not positive definite): "
+            "GMRES from here on",
+            kr.iterations));
         use_cg_ = false;
         x.setZero();
       }
     }
-    if (!use_cg_) kr = preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart, s_.krylov_max_iterations);
+    if (!use_cg_)
+      kr = preconditioned_gmres(op, precondition, rf, x, eta, s_.gmres_restart, s_.krylov_max_iterations);
     res.linear_seconds += seconds_since(t0);
-    res.linear_solver = fmt::format("matrix-free {}+{}", use_cg_ ? "cg" : "gmres", approximate_ ? P_solver_.name() : "jacobi");
-    res.linear_choice = approximate_ ? "matrix-free Newton-Krylov preconditioned by a factorised approximate tangent"
-                                     : "matrix-free Newton-Krylov";
+    res.linear_solver = fmt::format("matrix-free {}+{}", use_cg_ ? "cg" : "gmres",
+                                    approximate_ ? P_solver_.name() : "jacobi");
+    res.linear_choice = approximate_
+                            ? "matrix-free Newton-Krylov preconditioned by a factorised approximate tangent"
+                            : "matrix-free Newton-Krylov";
     rec.linear_iterations = kr.iterations;
     rec.linear_error = kr.relative_residual;
     if (!kr.converged)
@@ -144,8 +153,8 @@ class MatrixFreeStep final : public LinearStep {
 };
 }  // namespace
 
-std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings, const NonlinearSystem& system,
-                                                  bool symmetric,
+std::unique_ptr<LinearStep> make_matrix_free_step(const NewtonSettings& settings,
+                                                  const NonlinearSystem& system, bool symmetric,
                                                   StepLog log) {
   return std::make_unique<MatrixFreeStep>(settings, system, symmetric, std::move(log));
 }

@@ -51,15 +51,18 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   std::optional<ProgressSink> progress;
   if (log_) progress.emplace(log_);
   const int n = sys.size();
-  if (dofs.size() != n || u.size() != n) throw std::invalid_argument("Newton: the system, dof map and u differ in size");
+  if (dofs.size() != n || u.size() != n)
+    throw std::invalid_argument("Newton: the system, dof map and u differ in size");
   if (dofs.free_count() == 0) throw std::invalid_argument("Newton: every degree of freedom is constrained");
-  if (s_.matrix_free && !sys.has_jvp()) throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
+  if (s_.matrix_free && !sys.has_jvp())
+    throw std::invalid_argument("Newton: matrix-free solve needs the system's jvp()");
 
   res.unknowns = dofs.free_count();
   // Tied dofs (multipoint constraints) make the reduced tangent S K P unsymmetric.
   const bool symmetric = sys.symmetric() && dofs.keeps_symmetry();
-  const std::unique_ptr<LinearStep> linear_step = s_.matrix_free ? make_matrix_free_step(s_, sys, symmetric, log_)
-                                                                 : make_assembled_step(s_, symmetric, log_);
+  const std::unique_ptr<LinearStep> linear_step = s_.matrix_free
+                                                      ? make_matrix_free_step(s_, sys, symmetric, log_)
+                                                      : make_assembled_step(s_, symmetric, log_);
   Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
   double reference = 0;
   // Each iteration's line carries the time since the solve began: a long solve shows
@@ -76,14 +79,15 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
     bool done = false;
     for (int it = 0;; ++it) {
       if (interrupt_signal() != 0)
-        throw_if_interrupted(fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
+        throw_if_interrupted(
+            fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
       rec.iteration = it;
       rec.residual = norm;
       res.history.push_back(rec);
       say(fmt::format(
-          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}  t = {:.1f} s", load, step,
-          s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it, norm,
-          reference > 0 ? norm / reference : 0.0,
+          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}  t = {:.1f} s",
+          load, step, s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it,
+          norm, reference > 0 ? norm / reference : 0.0,
           it == 0 ? std::string()
                   : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
                                 rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
@@ -171,7 +175,8 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       if (changes == 0) break;
       if (round == s_.max_resolves) {
         res.message = fmt::format(
-            "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more load steps",
+            "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more "
+            "load steps",
             changes, s_.max_resolves, load, step, s_.load_steps);
         say(res.message);
         return res;

@@ -42,7 +42,7 @@ enum class MatrixFreePreconditioner { jacobi, approximate_tangent };
 
 struct NewtonSettings {
   int load_steps = 1;
-  int max_iterations = 25;           // per load step
+  int max_iterations = 25;            // per load step
   double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
   double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
   // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
@@ -93,12 +93,12 @@ struct NewtonResult {
   bool converged = false;
   bool stagnated = false;  // converged by the stagnation rule (the residual floor), not by rtol
   std::vector<NewtonRecord> history;
-  std::string linear_solver;  // the method that solved the last system
-  std::string linear_choice;  // why (and any fallback)
-  std::string message;        // the failure, when not converged
-  std::int64_t unknowns = 0;  // free dofs
-  std::int64_t nonzeros = 0;  // of the reduced tangent (0 when matrix-free)
-  int resolves = 0;           // load steps solved again after after_step changed the system
+  std::string linear_solver;    // the method that solved the last system
+  std::string linear_choice;    // why (and any fallback)
+  std::string message;          // the failure, when not converged
+  std::int64_t unknowns = 0;    // free dofs
+  std::int64_t nonzeros = 0;    // of the reduced tangent (0 when matrix-free)
+  int resolves = 0;             // load steps solved again after after_step changed the system
   double assembly_seconds = 0;  // forming tangents (or diagonals, matrix-free)
   double linear_seconds = 0;    // factorisations and linear solves
   int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }

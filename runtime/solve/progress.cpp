@@ -59,10 +59,12 @@ ProgressPhase::ProgressPhase(std::string what) {
     std::unique_lock lock(s->m);
     const auto period = std::chrono::duration<double>(s->interval);
     for (int k = 1;; ++k) {
-      if (s->done_cv.wait_until(lock, s->start + k * std::chrono::duration_cast<std::chrono::steady_clock::duration>(period),
-                                [&] { return s->done; }))
+      if (s->done_cv.wait_until(
+              lock, s->start + k * std::chrono::duration_cast<std::chrono::steady_clock::duration>(period),
+              [&] { return s->done; }))
         return;
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s->start).count();
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - s->start).count();
       std::string line = fmt::format("    {}: {:.0f} s so far", s->what, seconds);
       if (const int it = s->iteration.load(); it >= 0)
         line += fmt::format(", iteration {}, |r|/|b| = {:.2e}", it, s->residual.load());
@@ -82,8 +84,9 @@ ProgressPhase::~ProgressPhase() {
   state_->watchdog.join();
   if (innermost == state_.get()) innermost = state_->previous;
   if (state_->reported)
-    state_->log(fmt::format("    {}: done in {:.1f} s", state_->what,
-                            std::chrono::duration<double>(std::chrono::steady_clock::now() - state_->start).count()));
+    state_->log(
+        fmt::format("    {}: done in {:.1f} s", state_->what,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - state_->start).count()));
 }
 
 void progress_iteration(int iteration, double relative_residual) {

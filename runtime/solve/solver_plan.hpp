@@ -17,7 +17,8 @@ namespace pd {
 // holds about the particles within 2 delta, 2^dim L_mean + 1 of them, each a dim x dim
 // block; a pairwise law (no states, sparsity_pattern.hpp) only its own family's
 // L_mean + 1.
-std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim, bool pairwise = false);
+std::int64_t estimated_tangent_nonzeros(int particles, double mean_family_size, int dim,
+                                        bool pairwise = false);
 
 // What plan_solver needs to know of the model.
 struct ProblemSize {
@@ -44,7 +45,9 @@ struct SolverPlan {
   Backend backend = Backend::serial;
   bool matrix_free() const { return linear == LinearMethod::matrix_free; }
   // Matrix-free, preconditioned by the factorised stiffness of a shorter horizon.
-  bool short_horizon_preconditioner() const { return matrix_free() && preconditioner != Preconditioner::diagonal; }
+  bool short_horizon_preconditioner() const {
+    return matrix_free() && preconditioner != Preconditioner::diagonal;
+  }
 };
 
 // Whether plan_solver decides anything from the preconditioner's family size (only
@@ -68,8 +71,9 @@ struct SolverChoice {
   Preconditioner preconditioner = Preconditioner::automatic;
   std::string reason;  // one line for the run log
 };
-SolverChoice choose_linear_solver(LinearMethod method, Preconditioner preconditioner, long long direct_max_nonzeros,
-                                  std::int64_t unknowns, std::int64_t nonzeros, bool symmetric);
+SolverChoice choose_linear_solver(LinearMethod method, Preconditioner preconditioner,
+                                  long long direct_max_nonzeros, std::int64_t unknowns, std::int64_t nonzeros,
+                                  bool symmetric);
 
 // What to try when this solver's factorisation fails: CHOLMOD (not positive definite)
 // -> UMFPACK, CG's incomplete Cholesky (breakdown) -> CG with Jacobi; nothing otherwise.

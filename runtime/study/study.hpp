@@ -64,8 +64,8 @@ struct StudySpec {
 StudySpec read_study(const std::string& path);
 // The key of StudySpec::paper: a series (count 0) or one point; `smoothing` names the
 // influence function of a smoothed error (empty: the unsmoothed one).
-std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
-                      int count = 0, const std::string& smoothing = "");
+std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence,
+                      double ratio, int count = 0, const std::string& smoothing = "");
 
 struct StudyPoint {
   std::string problem, law, influence;
@@ -81,9 +81,9 @@ struct StudyPoint {
   long long nonzeros = 0;  // of the reduced tangent; matrix-free: of the short-horizon preconditioner
   double setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
   int newton_iterations = 0, krylov_iterations = 0;
-  std::string solver;         // the linear method that solved the last Newton system
-  double peak_rss_mb = -1;    // peak resident memory during the point (-1: not measured)
-  std::vector<std::string> smoothing;           // requested: the union over the sweeps holding the point
+  std::string solver;                            // the linear method that solved the last Newton system
+  double peak_rss_mb = -1;                       // peak resident memory during the point (-1: not measured)
+  std::vector<std::string> smoothing;            // requested: the union over the sweeps holding the point
   std::map<std::string, double> smoothed_error;  // influence -> field error (eq. 48) of the smoothed solution
   std::string key() const;
   // The error of the solution smoothed with `smoothing`, or the unsmoothed one (empty);

@@ -1,9 +1,10 @@
 // The study's report: orders of convergence per series (eq. 37), the error/time frontier,
 // points.csv and orders.md with the paper's values alongside.
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/core.h>
 #include <map>
 #include <set>
 #include <sstream>
@@ -54,7 +55,8 @@ void add_once(std::vector<std::string>& list, const std::string& name) {
 
 // The orders and smallest error of one series (points sorted coarse to fine), unsmoothed
 // or with one smoothing; points that lack that smoothing are left out.
-SeriesOrder fit_series(const StudySpec& spec, const std::vector<const StudyPoint*>& pts, const std::string& smoothing) {
+SeriesOrder fit_series(const StudySpec& spec, const std::vector<const StudyPoint*>& pts,
+                       const std::string& smoothing) {
   std::vector<double> h, e;
   for (const auto* p : pts) {
     const double v = p->error_of(smoothing);
@@ -72,7 +74,8 @@ SeriesOrder fit_series(const StudySpec& spec, const std::vector<const StudyPoint
   o.min_error = NAN;
   for (double v : e)
     if (v > 0 && !(v >= o.min_error)) o.min_error = v;
-  if (auto it = spec.paper.find(paper_key(o.problem, o.law, o.influence, o.ratio, 0, smoothing)); it != spec.paper.end())
+  if (auto it = spec.paper.find(paper_key(o.problem, o.law, o.influence, o.ratio, 0, smoothing));
+      it != spec.paper.end())
     o.paper = it->second;
   return o;
 }
@@ -101,16 +104,19 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
   }
   const auto best = frontier(points);
   std::ostringstream csv;
-  csv << "problem,law,influence,ratio,count,h,converged,error,particles,nonzeros,setup_s,assembly_s,solve_s,total_s,"
+  csv << "problem,law,influence,ratio,count,h,converged,error,particles,nonzeros,setup_s,assembly_s,solve_s,"
+         "total_s,"
          "newton_iterations,krylov_iterations,solver,peak_rss_mb,non_dominated,failure,peak_error";
   for (const auto& name : all_smoothings) csv << ",error_smoothed_" << name;  // empty where not recorded
   csv << "\n";
   for (const auto& p : points) {
-    csv << fmt::format("{},{},{},{},{},{:.9g},{},{:.9g},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},\"{}\",{:.1f},{},\"{}\"",
-                       p.problem, p.law, p.influence, p.ratio, p.count, p.h, p.converged ? 1 : 0, p.error, p.particles,
-                       p.nonzeros, p.setup_seconds, p.assembly_seconds, p.solve_seconds, p.total_seconds,
-                       p.newton_iterations, p.krylov_iterations, p.solver, p.peak_rss_mb, best.count(&p) ? 1 : 0, p.failure);
-    csv << (std::isfinite(p.peak_error) ? fmt::format(",{:.9g}", p.peak_error) : std::string(","));  // dynamic points
+    csv << fmt::format(
+        "{},{},{},{},{},{:.9g},{},{:.9g},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{},{},\"{}\",{:.1f},{},\"{}\"",
+        p.problem, p.law, p.influence, p.ratio, p.count, p.h, p.converged ? 1 : 0, p.error, p.particles,
+        p.nonzeros, p.setup_seconds, p.assembly_seconds, p.solve_seconds, p.total_seconds,
+        p.newton_iterations, p.krylov_iterations, p.solver, p.peak_rss_mb, best.count(&p) ? 1 : 0, p.failure);
+    csv << (std::isfinite(p.peak_error) ? fmt::format(",{:.9g}", p.peak_error)
+                                        : std::string(","));  // dynamic points
     for (const auto& name : all_smoothings) {
       const double v = p.error_of(name);
       csv << (std::isfinite(v) ? fmt::format(",{:.9g}", v) : std::string(","));
@@ -120,19 +126,22 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
   write_file_atomically((fs::path(out) / "points.csv").string(), csv.str());
 
   std::ostringstream md;
-  md << "# Orders of convergence\n\nFitted by least squares on log e against log h (paper 000 eq. 37) from `" << spec.file
-     << "`" << (quick ? " (quick sweep)" : "") << "; `fine` fits the finest " << spec.fine_points
-     << " resolutions only. Paper: paper 000's tables where it reports the series; **bold** marks an order more than "
+  md << "# Orders of convergence\n\nFitted by least squares on log e against log h (paper 000 eq. 37) from `"
+     << spec.file << "`" << (quick ? " (quick sweep)" : "") << "; `fine` fits the finest " << spec.fine_points
+     << " resolutions only. Paper: paper 000's tables where it reports the series; **bold** marks an order "
+        "more than "
         "0.1 from the paper's.\n\n"
-        "| problem | law | influence | delta/h | smoothed | points | order | fine | min error | paper order | paper min error |\n"
+        "| problem | law | influence | delta/h | smoothed | points | order | fine | min error | paper order "
+        "| paper min error |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& o : orders) {
     const bool off = o.paper.order && std::isfinite(o.order) && std::fabs(o.order - *o.paper.order) > 0.1;
-    md << fmt::format("| {} | {} | {} | {} | {} | {} | {}{:.3f}{} | {} | {} | {} | {} |\n", o.problem, o.law, o.influence,
-                      o.ratio, o.smoothing.empty() ? "no" : o.smoothing, o.points, off ? "**" : "", o.order, off ? "**" : "",
+    md << fmt::format("| {} | {} | {} | {} | {} | {} | {}{:.3f}{} | {} | {} | {} | {} |\n", o.problem, o.law,
+                      o.influence, o.ratio, o.smoothing.empty() ? "no" : o.smoothing, o.points,
+                      off ? "**" : "", o.order, off ? "**" : "",
                       std::isfinite(o.fine_order) ? fmt::format("{:.3f}", o.fine_order) : "",
-                      std::isfinite(o.min_error) ? fmt::format("{:.4g}", o.min_error) : "", number(o.paper.order, "{:.4f}"),
-                      number(o.paper.min_error, "{:.3f}"));
+                      std::isfinite(o.min_error) ? fmt::format("{:.4g}", o.min_error) : "",
+                      number(o.paper.order, "{:.4f}"), number(o.paper.min_error, "{:.3f}"));
   }
   // Single points the paper reports (e.g. its Table 7) next to ours.
   std::ostringstream single;
@@ -142,23 +151,28 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
     for (const auto& smoothing : smoothings)
       if (auto it = spec.paper.find(paper_key(p.problem, p.law, p.influence, p.ratio, p.count, smoothing));
           it != spec.paper.end() && it->second.error)
-        single << fmt::format("| {} | {} | {} | {} | {} | {} | {:.4g} | {:.4f} |\n", p.problem, p.law, p.influence,
-                              p.ratio, p.count, smoothing.empty() ? "no" : smoothing, p.error_of(smoothing),
-                              *it->second.error);
+        single << fmt::format("| {} | {} | {} | {} | {} | {} | {:.4g} | {:.4f} |\n", p.problem, p.law,
+                              p.influence, p.ratio, p.count, smoothing.empty() ? "no" : smoothing,
+                              p.error_of(smoothing), *it->second.error);
   }
   if (!single.str().empty())
-    md << "\n## Errors of single points\n\n| problem | law | influence | delta/h | n | smoothed | error | paper |\n"
+    md << "\n## Errors of single points\n\n| problem | law | influence | delta/h | n | smoothed | error | "
+          "paper |\n"
           "|---|---|---|---|---|---|---|---|\n"
        << single.str();
   // What the finest point of each series cost, and which solver reached it.
-  md << "\n## Cost of the finest point of each series\n\n| problem | law | influence | delta/h | n | particles | "
-        "solver | Newton | Krylov | nonzeros | seconds | peak MiB |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "\n## Cost of the finest point of each series\n\n| problem | law | influence | delta/h | n | "
+        "particles | "
+        "solver | Newton | Krylov | nonzeros | seconds | peak MiB "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& key : keys) {
     const auto& pts = series[key];
-    const StudyPoint* p = *std::max_element(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->count < b->count; });
-    md << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1f} | {} |\n", p->problem, p->law,
-                      p->influence, p->ratio, p->count, p->particles, p->converged ? p->solver : "FAILED",
-                      p->newton_iterations, p->krylov_iterations, p->nonzeros, p->total_seconds, memory(p->peak_rss_mb));
+    const StudyPoint* p =
+        *std::max_element(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->count < b->count; });
+    md << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1f} | {} |\n", p->problem,
+                      p->law, p->influence, p->ratio, p->count, p->particles,
+                      p->converged ? p->solver : "FAILED", p->newton_iterations, p->krylov_iterations,
+                      p->nonzeros, p->total_seconds, memory(p->peak_rss_mb));
   }
   write_file_atomically((fs::path(out) / "orders.md").string(), md.str());
   return orders;

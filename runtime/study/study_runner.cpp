@@ -1,13 +1,14 @@
 // Runs the points of a study, with an on-disk cache, then the report and the plots.
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/core.h>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <algorithm>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "input/scene.hpp"
@@ -38,29 +39,47 @@ double StudyPoint::error_of(const std::string& smoothing_influence) const {
 
 namespace {
 nlohmann::json to_json(const StudyPoint& p) {
-  return {{"problem", p.problem}, {"law", p.law}, {"influence", p.influence}, {"ratio", p.ratio}, {"count", p.count}, {"placement", p.placement},
-          {"h", p.h}, {"converged", p.converged}, {"failure", p.failure}, {"error", std::isfinite(p.error) ? p.error : -1.0},
-          {"particles", p.particles}, {"nonzeros", p.nonzeros}, {"setup_seconds", p.setup_seconds},
-          {"assembly_seconds", p.assembly_seconds}, {"solve_seconds", p.solve_seconds}, {"total_seconds", p.total_seconds},
-          {"newton_iterations", p.newton_iterations}, {"krylov_iterations", p.krylov_iterations}, {"solver", p.solver},
-          {"peak_rss_mb", p.peak_rss_mb}, {"smoothed_error", p.smoothed_error},
+  return {{"problem", p.problem},
+          {"law", p.law},
+          {"influence", p.influence},
+          {"ratio", p.ratio},
+          {"count", p.count},
+          {"placement", p.placement},
+          {"h", p.h},
+          {"converged", p.converged},
+          {"failure", p.failure},
+          {"error", std::isfinite(p.error) ? p.error : -1.0},
+          {"particles", p.particles},
+          {"nonzeros", p.nonzeros},
+          {"setup_seconds", p.setup_seconds},
+          {"assembly_seconds", p.assembly_seconds},
+          {"solve_seconds", p.solve_seconds},
+          {"total_seconds", p.total_seconds},
+          {"newton_iterations", p.newton_iterations},
+          {"krylov_iterations", p.krylov_iterations},
+          {"solver", p.solver},
+          {"peak_rss_mb", p.peak_rss_mb},
+          {"smoothed_error", p.smoothed_error},
           {"peak_error", std::isfinite(p.peak_error) ? p.peak_error : -1.0}};
 }
 StudyPoint from_json(const nlohmann::json& j) {
   StudyPoint p;
   p.problem = j["problem"], p.law = j["law"], p.influence = j["influence"];
   p.placement = j.value("placement", std::string());
-  p.ratio = j["ratio"], p.count = j["count"], p.h = j["h"], p.converged = j["converged"], p.failure = j["failure"];
+  p.ratio = j["ratio"], p.count = j["count"], p.h = j["h"], p.converged = j["converged"],
+  p.failure = j["failure"];
   p.error = j["error"].get<double>() < 0 ? NAN : j["error"].get<double>();
   p.particles = j["particles"], p.nonzeros = j["nonzeros"];
-  p.setup_seconds = j["setup_seconds"], p.assembly_seconds = j["assembly_seconds"], p.solve_seconds = j["solve_seconds"];
+  p.setup_seconds = j["setup_seconds"], p.assembly_seconds = j["assembly_seconds"],
+  p.solve_seconds = j["solve_seconds"];
   p.total_seconds = j["total_seconds"], p.newton_iterations = j["newton_iterations"];
   // Points cached before these were recorded keep their defaults (unknown).
   p.krylov_iterations = j.value("krylov_iterations", 0);
   p.solver = j.value("solver", std::string());
   p.peak_rss_mb = j.value("peak_rss_mb", -1.0);
   p.peak_error = j.value("peak_error", -1.0) < 0 ? NAN : j["peak_error"].get<double>();
-  if (j.contains("smoothed_error")) p.smoothed_error = j["smoothed_error"].get<std::map<std::string, double>>();
+  if (j.contains("smoothed_error"))
+    p.smoothed_error = j["smoothed_error"].get<std::map<std::string, double>>();
   return p;
 }
 
@@ -68,11 +87,14 @@ StudyPoint from_json(const nlohmann::json& j) {
 // time_reference, RMS and peak relative to the reference's largest magnitude.
 void dynamic_point(const Scene& s, const StudySpec& spec, StudyPoint& pt) {
   if (!spec.time_reference)
-    throw std::runtime_error("a dynamic problem needs the study's time_reference: {file, time, value} to be measured against");
+    throw std::runtime_error(
+        "a dynamic problem needs the study's time_reference: {file, time, value} to be measured against");
   if (s.dynamics->method != DynamicsMethod::explicit_verlet)
     throw std::runtime_error("a relaxation problem has no time history; study it as a static scene");
-  if (s.probes.empty()) throw std::runtime_error("a dynamic problem needs a probe: its first probe is measured");
-  const TimeSeries ref = read_time_series(spec.time_reference->file, spec.time_reference->time, spec.time_reference->value);
+  if (s.probes.empty())
+    throw std::runtime_error("a dynamic problem needs a probe: its first probe is measured");
+  const TimeSeries ref =
+      read_time_series(spec.time_reference->file, spec.time_reference->time, spec.time_reference->value);
   DynamicSimulation sim(s, [](const std::string&) {});
   const RunSummary r = sim.run(false);
   std::vector<double> t, v;
@@ -103,7 +125,8 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   // Estimated bonds: particles (from the box, before holes) x the lattice sites in a disc of radius delta/h.
   double particles = 1;
   for (int c = 0; c < s.dim; ++c) particles *= (s.hi[c] - s.lo[c]) / s.h;
-  if (spec.matrix_free_from_bonds > 0 && particles * std::numbers::pi * id.ratio * id.ratio >= spec.matrix_free_from_bonds) {
+  if (spec.matrix_free_from_bonds > 0 &&
+      particles * std::numbers::pi * id.ratio * id.ratio >= spec.matrix_free_from_bonds) {
     s.solver.linear = LinearMethod::matrix_free;
     s.solver.preconditioner = Preconditioner::short_horizon;
   }
@@ -234,21 +257,26 @@ std::vector<SeriesOrder> run_study(const StudySpec& spec, const std::string& out
         cost_run += cost[&id];
         seconds_run += pt.total_seconds;
       }
-      const std::string eta = cost_run > 0 && done < total ? ", " + eta_text(seconds_run / cost_run * cost_left) : "";
+      const std::string eta =
+          cost_run > 0 && done < total ? ", " + eta_text(seconds_run / cost_run * cost_left) : "";
       pt.smoothing = id.smoothing;
       std::string smoothed;
-      for (const auto& name : pt.smoothing) smoothed += fmt::format(", smoothed ({}) {:.3e}", name, pt.error_of(name));
-      log(fmt::format("[{}/{}] {} {} {} delta/h={} n={}: {}", done, total, pt.problem, pt.law, pt.influence, pt.ratio,
-                      pt.count,
-                      pt.converged ? fmt::format("error {:.3e}{}, {:.3f} s, {}", pt.error, smoothed, pt.total_seconds, pt.solver)
-                                   : "FAILED: " + pt.failure) + eta);
+      for (const auto& name : pt.smoothing)
+        smoothed += fmt::format(", smoothed ({}) {:.3e}", name, pt.error_of(name));
+      log(fmt::format("[{}/{}] {} {} {} delta/h={} n={}: {}", done, total, pt.problem, pt.law, pt.influence,
+                      pt.ratio, pt.count,
+                      pt.converged ? fmt::format("error {:.3e}{}, {:.3f} s, {}", pt.error, smoothed,
+                                                 pt.total_seconds, pt.solver)
+                                   : "FAILED: " + pt.failure) +
+          eta);
       points.push_back(pt);
     }
   }
   const auto orders = write_study_report(spec, points, out, quick);
-  // Plots, when matplotlib is there: Debian's python3-matplotlib for /usr/bin/python3 (scripts/install_deps.sh),
-  // called by absolute path because a python3 earlier on PATH (pyenv) may not see it. The script ships
-  // beside pd (share/pdgen/, build and installed trees alike), not in a source checkout that may be gone.
+  // Plots, when matplotlib is there: Debian's python3-matplotlib for /usr/bin/python3
+  // (scripts/install_deps.sh), called by absolute path because a python3 earlier on PATH (pyenv) may not see
+  // it. The script ships beside pd (share/pdgen/, build and installed trees alike), not in a source checkout
+  // that may be gone.
   const fs::path script = installed_data_file("plot_study.py");
   if (!fs::exists(script)) {
     log("no plots: " + script.string() + " is missing (it is installed beside pd, in ../share/pdgen/)");

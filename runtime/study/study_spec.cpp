@@ -47,21 +47,26 @@ Sweep read_sweep(MapReader& m, bool required, const std::vector<std::string>& pr
   w.smoothing = texts(m, "smoothing", false);
   for (const auto& name : w.smoothing) {
     const abi::InfluenceDescriptor* inf = abi::find_influence(name);
-    if (inf == nullptr) m.get("smoothing").fail("unknown influence function '" + name + "' (pd laws lists them)");
+    if (inf == nullptr)
+      m.get("smoothing").fail("unknown influence function '" + name + "' (pd laws lists them)");
     if (!can_smooth_with(inf->weight))
-      m.get("smoothing").fail("'" + name + "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself by w(0): choose a bounded influence function");
+      m.get("smoothing")
+          .fail("'" + name +
+                "' is singular at r = 0, and the smoothing (paper 000 eq. 49) weights each particle itself "
+                "by w(0): choose a bounded influence function");
   }
   if (!w.smoothing.empty())
     for (const auto& problem : problems)
       if (!read_scene(problem).reference)
-        m.get("smoothing").fail("the smoothed solution is measured by the field error (paper 000 eq. 48), and " + problem +
-                                " has no `reference` field");
+        m.get("smoothing")
+            .fail("the smoothed solution is measured by the field error (paper 000 eq. 48), and " + problem +
+                  " has no `reference` field");
   return w;
 }
 }  // namespace
 
-std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence, double ratio,
-                      int count, const std::string& smoothing) {
+std::string paper_key(const std::string& problem, const std::string& law, const std::string& influence,
+                      double ratio, int count, const std::string& smoothing) {
   // Appended piece by piece: `key += "|" + std::to_string(count)` made GCC 12 warn
   // (-Wrestrict, a false positive in the inlined temporary's copy).
   std::string key = problem + "|" + law + "|" + influence + "|" + std::to_string(ratio);
@@ -78,7 +83,8 @@ StudySpec read_study(const std::string& path) {
   StudySpec s;
   s.file = path;
   const auto base = std::filesystem::path(path).parent_path();
-  for (const auto& p : texts(m, "problems", true)) s.problems.push_back((base / p).lexically_normal().string());
+  for (const auto& p : texts(m, "problems", true))
+    s.problems.push_back((base / p).lexically_normal().string());
   if (m.has("sweeps")) {
     const YamlAt list = m.get("sweeps");
     require_list(list);
@@ -120,13 +126,15 @@ StudySpec read_study(const std::string& path) {
       const std::string smoothing = e.has("smoothing") ? e.text("smoothing") : "";
       if (!smoothing.empty() && !abi::find_influence(smoothing))
         e.get("smoothing").fail("unknown influence function '" + smoothing + "'");
-      const std::string key =
-          paper_key(e.text("problem"), e.text("law"), e.text("influence"), e.number("ratio"), count, smoothing);
+      const std::string key = paper_key(e.text("problem"), e.text("law"), e.text("influence"),
+                                        e.number("ratio"), count, smoothing);
       PaperValues& v = s.paper[key];
-      for (auto [name, slot] : {std::pair{"order", &v.order}, {"min_error", &v.min_error}, {"error", &v.error}})
+      for (auto [name, slot] :
+           {std::pair{"order", &v.order}, {"min_error", &v.min_error}, {"error", &v.error}})
         if (e.has(name)) *slot = e.number(name);
       if (!v.order && !v.min_error && !v.error) e.at().fail("give order, min_error or error");
-      if (count > 0 && (v.order || v.min_error)) e.at().fail("an order or a minimum error belongs to a series: drop count");
+      if (count > 0 && (v.order || v.min_error))
+        e.at().fail("an order or a minimum error belongs to a series: drop count");
       e.finish();
     }
   }

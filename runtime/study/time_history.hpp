@@ -24,6 +24,7 @@ struct TimeHistoryError {
 // The run's samples (t[i], v[i]) against the reference interpolated linearly at t[i].
 // Throws std::invalid_argument when a sample lies outside the reference's time span, or
 // when there is no sample, or the reference is zero.
-TimeHistoryError time_history_error(const std::vector<double>& t, const std::vector<double>& v, const TimeSeries& reference);
+TimeHistoryError time_history_error(const std::vector<double>& t, const std::vector<double>& v,
+                                    const TimeSeries& reference);
 
 }  // namespace pd

@@ -17,7 +17,8 @@ inline double momentum_error(const TestFamily& f, const std::vector<double>& for
   double worst = 0, total = 0;
   for (int comp = 0; comp < f.dim; ++comp) {
     double s = 0;
-    for (int a = 0; a <= f.bonds(); ++a) s += forces[a * f.dim + comp], total += std::fabs(forces[a * f.dim + comp]);
+    for (int a = 0; a <= f.bonds(); ++a)
+      s += forces[a * f.dim + comp], total += std::fabs(forces[a * f.dim + comp]);
     worst = std::max(worst, std::fabs(s));
   }
   return total > 0 ? worst / total : worst;

@@ -103,7 +103,7 @@ struct FamilyOptions {
   // real grid has, and where a law with 1/(delta - r) is infinite).
   bool regular = false;
   double (*weight)(double r, double delta) = nullptr;  // regular only; null: w = 1
-  double strain = 0.05;  // size of the random displacement gradient
+  double strain = 0.05;                                // size of the random displacement gradient
   // A material interface through the family: the neighbours beyond the plane x_0 = x_c
   // + h/2 take parameters 2^(3 u) times the center's (u uniform in [-1, 1], one factor
   // per parameter, at least 3 apart), passed as Family::nbr_params.

@@ -13,8 +13,8 @@ namespace pd::verify {
 // Nodal forces f[(L+1)*dim] of one family from the deformed positions y[(L+1)*dim]
 // (center first). xi, w, alpha, V per bond; K = 3D bulk modulus, G shear modulus.
 template <class Scalar>
-void silling_forces(int dim, int L, const double* xi, const double* w, const double* alpha, const double* V, double V0,
-                    double K, double G, const Scalar* y, Scalar* f) {
+void silling_forces(int dim, int L, const double* xi, const double* w, const double* alpha, const double* V,
+                    double V0, double K, double G, const Scalar* y, Scalar* f) {
   using std::sqrt;
   std::vector<double> r(static_cast<std::size_t>(L));
   std::vector<Scalar> len(static_cast<std::size_t>(L));

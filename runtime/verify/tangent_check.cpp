@@ -30,7 +30,8 @@ bool all_finite(const std::vector<double>& v) {
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
-FamilyCheck check_family(const abi::LawDescriptor& law, TestFamily& f, std::string description, bool differenced) {
+FamilyCheck check_family(const abi::LawDescriptor& law, TestFamily& f, std::string description,
+                         bool differenced) {
   FamilyCheck c;
   c.description = std::move(description);
   c.bonds = f.bonds();
@@ -72,7 +73,8 @@ std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed)
       o.truncation = t;
       o.broken_bonds = broken;
       TestFamily f = make_family(law, o);
-      out.push_back(check_family(law, f, std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : ""), true));
+      out.push_back(check_family(
+          law, f, std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : ""), true));
     }
   // A material interface through the family (neighbours' parameters differ): what a
   // law with pair parameters reads through Family::nbr_params.
@@ -82,7 +84,10 @@ std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed)
     o.broken_bonds = t == Truncation::Corner;
     o.material_jump = true;
     TestFamily f = make_family(law, o);
-    out.push_back(check_family(law, f, std::string(names[static_cast<int>(t)]) + (o.broken_bonds ? ", broken bonds" : "") + ", material jump", true));
+    out.push_back(check_family(law, f,
+                               std::string(names[static_cast<int>(t)]) +
+                                   (o.broken_bonds ? ", broken bonds" : "") + ", material jump",
+                               true));
   }
   FamilyOptions lattice = base;
   lattice.regular = true;

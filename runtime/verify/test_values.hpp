@@ -14,7 +14,8 @@ namespace pd::verify {
 inline std::map<std::string, double> declared_test_values(const abi::LawDescriptor& law) {
   std::map<std::string, double> out;
   for (int i = 0; i < law.n_params; ++i)
-    if (law.param_test_values != nullptr && !std::isnan(law.param_test_values[i])) out[law.param_names[i]] = law.param_test_values[i];
+    if (law.param_test_values != nullptr && !std::isnan(law.param_test_values[i]))
+      out[law.param_names[i]] = law.param_test_values[i];
   return out;
 }
 

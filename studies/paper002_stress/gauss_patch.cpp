@@ -9,6 +9,7 @@
 //   sigma   |sigma - C:eps| / |C:eps| at the centre (family_stress of each family);
 //   ms      CPU time of one force evaluation.
 // Usage: paper002_gauss_patch [n]   (default 40)
+#include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,14 +19,12 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
 #include "assembly/assembler.hpp"
+#include "assembly/peridynamic_stress.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/gauss_points.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "assembly/peridynamic_stress.hpp"
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 40;
@@ -43,8 +42,11 @@ int main(int argc, char** argv) {
     for (int r = 0; r < 2; ++r) u[2 * i + r] = e(r, 0) * p.x[2 * i] + e(r, 1) * p.x[2 * i + 1];
   const double margin = delta + support + 2.0;
   const int centre = (n / 2) * n + n / 2;
-  std::printf("| law | rule | bonds/particle | ghost max|f|/(|C:eps| h) | sigma error | ms per force evaluation |\n|---|---|---|---|---|---|\n");
-  for (const char* law_name : {"bond_based_constant_2d", "lps_plane_strain", "silling_plane_strain", "correspondence_plane_strain"}) {
+  std::printf(
+      "| law | rule | bonds/particle | ghost max|f|/(|C:eps| h) | sigma error | ms per force evaluation "
+      "|\n|---|---|---|---|---|---|\n");
+  for (const char* law_name : {"bond_based_constant_2d", "lps_plane_strain", "silling_plane_strain",
+                               "correspondence_plane_strain"}) {
     const auto& law = *pd::abi::find_law(law_name);
     const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
     const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, {{"stab", 1.0}});
@@ -80,8 +82,8 @@ int main(int argc, char** argv) {
       const std::vector<double> sigma = pd::peridynamic_stress(a, u.data());
       Eigen::Matrix2d sc;
       sc << sigma[4 * centre], sigma[4 * centre + 1], sigma[4 * centre + 2], sigma[4 * centre + 3];
-      std::printf("| %s | %s | %.1f | %.2e | %.4f | %.1f |\n", law_name, rule, bonds_per, ghost / expected.norm(),
-                  (sc - expected).norm() / expected.norm(), ms);
+      std::printf("| %s | %s | %.1f | %.2e | %.4f | %.1f |\n", law_name, rule, bonds_per,
+                  ghost / expected.norm(), (sc - expected).norm() / expected.norm(), ms);
     }
   }
   return 0;

@@ -21,6 +21,7 @@
 // (docs/paper002.md says what was tried).
 //
 // Usage: paper002_stress_states [m ...]   (default 3 4 6 8 12 16 25 33 49; `exact` up to 30)
+#include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -29,12 +30,10 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
+#include "assembly/peridynamic_stress.hpp"
 #include "discretize/gauss_points.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "assembly/peridynamic_stress.hpp"
 
 namespace {
 constexpr double kDelta = 18.0, kE = 1e5, kNu = 0.25;
@@ -71,7 +70,11 @@ struct SourceFamily {
       gauss_points(m);
       return;
     }
-    const double reach = rule == Rule::cci ? kDelta : pd::quadrature_reach(rule == Rule::linear ? pd::Quadrature::PartialLinear : pd::Quadrature::PartialExact, kDelta, dx, 3);
+    const double reach = rule == Rule::cci
+                             ? kDelta
+                             : pd::quadrature_reach(rule == Rule::linear ? pd::Quadrature::PartialLinear
+                                                                         : pd::Quadrature::PartialExact,
+                                                    kDelta, dx, 3);
     const int n = static_cast<int>(std::ceil(reach / dx));
     bonds.offsets = {0};
     for (int i = -n; i <= n; ++i)
@@ -81,9 +84,10 @@ struct SourceFamily {
           const double xi[3] = {i * dx, j * dx, k * dx};
           const double r = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
           if (r > reach * (1 + 1e-12)) continue;
-          const double beta = rule == Rule::cci      ? (r <= kDelta - dx / 2 ? 1.0 : (kDelta + dx / 2 - r) / dx)
-                              : rule == Rule::linear ? pd::linear_volume_factor(r, kDelta, dx)
-                                                     : pd::volume_factor(pd::Quadrature::PartialExact, xi, 3, kDelta, dx);
+          const double beta = rule == Rule::cci ? (r <= kDelta - dx / 2 ? 1.0 : (kDelta + dx / 2 - r) / dx)
+                              : rule == Rule::linear
+                                  ? pd::linear_volume_factor(r, kDelta, dx)
+                                  : pd::volume_factor(pd::Quadrature::PartialExact, xi, 3, kDelta, dx);
           if (beta <= 0) continue;
           const int q = particles.size();
           particles.x.insert(particles.x.end(), xi, xi + 3);
@@ -155,8 +159,10 @@ Eigen::Matrix3d source_stress(const SourceFamily& fam, const Eigen::Matrix3d& ep
   }
   std::vector<double> scratch(static_cast<std::size_t>(L) * law.scratch_per_bond + 1);
   pd::abi::Family f;
-  f.n_bonds = L, f.xi = fam.bonds.xi.data(), f.Y = Y.data(), f.w = fam.bonds.w.data(), f.alpha = fam.bonds.alpha.data();
-  f.V = V.data(), f.V0 = fam.particles.volume[0], f.delta = kDelta, f.params = params.data(), f.scratch = scratch.data();
+  f.n_bonds = L, f.xi = fam.bonds.xi.data(), f.Y = Y.data(), f.w = fam.bonds.w.data(),
+  f.alpha = fam.bonds.alpha.data();
+  f.V = V.data(), f.V0 = fam.particles.volume[0], f.delta = kDelta, f.params = params.data(),
+  f.scratch = scratch.data();
   std::vector<double> forces(static_cast<std::size_t>(L + 1) * 3);
   double s[9];
   pd::family_stress(law.intact.residual, f, 3, forces.data(), s);
@@ -181,7 +187,8 @@ int main(int argc, char** argv) {
   std::vector<int> ms;
   for (int i = 1; i < argc; ++i) ms.push_back(std::atoi(argv[i]));
   if (ms.empty()) ms = {3, 4, 6, 8, 12, 16, 25, 33, 49};
-  Eigen::Matrix3d uni = Eigen::Matrix3d::Zero(), tri = Eigen::Matrix3d::Zero(), shear = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d uni = Eigen::Matrix3d::Zero(), tri = Eigen::Matrix3d::Zero(),
+                  shear = Eigen::Matrix3d::Zero();
   uni(1, 1) = 100;
   tri.diagonal() << 100, -150, 220;
   shear(0, 2) = shear(2, 0) = 200;
@@ -191,9 +198,11 @@ int main(int argc, char** argv) {
   Eigen::Matrix3d tri_paper = strain_of(tri);
   tri_paper(2, 2) = 2.352e-3;
   for (const State& st : states) {
-    std::printf("\n### %s (closed form: largest component sigma_%d%d = %g)\n\n", st.name, st.row + 1, st.col + 1,
-                st.sigma(st.row, st.col));
-    std::printf("| rule | dx | sigma_11 | sigma_22 | sigma_33 | sigma_13 | error %% | ADIP_nodes [h] | ms |\n|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("\n### %s (closed form: largest component sigma_%d%d = %g)\n\n", st.name, st.row + 1,
+                st.col + 1, st.sigma(st.row, st.col));
+    std::printf(
+        "| rule | dx | sigma_11 | sigma_22 | sigma_33 | sigma_13 | error %% | ADIP_nodes [h] | ms "
+        "|\n|---|---|---|---|---|---|---|---|---|\n");
     for (Rule rule : {Rule::cci, Rule::linear, Rule::exact, Rule::gauss2}) {
       std::vector<double> dxs, errs;
       for (int m : ms) {
@@ -201,14 +210,18 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         const SourceFamily fam(m, rule);
         const Eigen::Matrix3d s = source_stress(fam, strain_of(st.sigma));
-        const double ms_taken = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double ms_taken =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         const double err = 100 * std::fabs(s(st.row, st.col) / st.sigma(st.row, st.col) - 1);
-        const double adip = std::cbrt(2.0 / 3.0 * std::numbers::pi * kDelta * kDelta * kDelta / static_cast<double>(fam.nodes_half));
-        std::printf("| %s | δ/%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.0f |\n", rule_name(rule), m, s(0, 0), s(1, 1),
-                    s(2, 2), s(0, 2), err, adip, ms_taken);
+        const double adip = std::cbrt(2.0 / 3.0 * std::numbers::pi * kDelta * kDelta * kDelta /
+                                      static_cast<double>(fam.nodes_half));
+        std::printf("| %s | δ/%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.0f |\n", rule_name(rule), m,
+                    s(0, 0), s(1, 1), s(2, 2), s(0, 2), err, adip, ms_taken);
         dxs.push_back(kDelta / m), errs.push_back(err);
       }
-      if (dxs.size() > 1) std::printf("| %s rate (slope of log error against log dx) | %.2f |\n", rule_name(rule), slope(dxs, errs));
+      if (dxs.size() > 1)
+        std::printf("| %s rate (slope of log error against log dx) | %.2f |\n", rule_name(rule),
+                    slope(dxs, errs));
     }
     if (std::string(st.name) == "triaxial") {
       std::printf("\nWith e33 = 2.352e-3 (the strain the paper's CCI values fit), cci:\n\n");

@@ -99,30 +99,36 @@ int main(int argc, char** argv) {
   const double paper_cci23[] = {3.317, 3.056, 2.415, 2.531, 2.028, 1.833, 1.635, 1.120, 0.873, 0.595};
   const double paper_adip_ai[] = {1.708, 1.457, 1.239, 1.121, 0.887, 0.817, 0.755, 0.535, 0.415, 0.286};
   std::printf("EPS = %g, TOL = %g\n\n", eps, pd::kAiTol);
-  std::printf("Table 2.2 (same dx)\n\n| dx | AI err %% | paper | AI ms | AI points | CCI err %% | paper | CCI ms |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "Table 2.2 (same dx)\n\n| dx | AI err %% | paper | AI ms | AI points | CCI err %% | paper | CCI ms "
+      "|\n|---|---|---|---|---|---|---|---|\n");
   std::vector<Result> ai, cci, cci23;
   std::vector<double> dx;
   for (int i = 0; i < 10; ++i) {
     ai.push_back(ms[i] <= ai_up_to ? adaptive(ms[i], eps) : Result{1e9, 0, 0, 0});
     cci.push_back(cubic_cell(ms[i]));
     dx.push_back(kDeltaH / ms[i]);
-    std::printf("| δ/%d | %.4f | %.3f | %.0f | %ld | %.3f | %.3f | %.1f |\n", ms[i], ai.back().error_percent, paper_ai[i],
-                ai.back().runtime_ms, ai.back().points, cci.back().error_percent, paper_cci[i], cci.back().runtime_ms);
+    std::printf("| δ/%d | %.4f | %.3f | %.0f | %ld | %.3f | %.3f | %.1f |\n", ms[i], ai.back().error_percent,
+                paper_ai[i], ai.back().runtime_ms, ai.back().points, cci.back().error_percent, paper_cci[i],
+                cci.back().runtime_ms);
     std::fflush(stdout);
   }
-  std::printf("\nTable 2.3 (closest ADIP)\n\n| AI ADIP [h] | paper | dx | AI err %% | CCI ADIP [h] | dx | CCI err %% | paper | CCI ms |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\nTable 2.3 (closest ADIP)\n\n| AI ADIP [h] | paper | dx | AI err %% | CCI ADIP [h] | dx | CCI err %% "
+      "| paper | CCI ms |\n|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i < 10; ++i) {
     cci23.push_back(cubic_cell(cci_ms[i]));
-    std::printf("| %.3f | %.3f | δ/%d | %.4f | %.3f | δ/%d | %.3f | %.3f | %.1f |\n", ai[i].adip_h, paper_adip_ai[i], ms[i],
-                ai[i].error_percent, cci23.back().adip_h, cci_ms[i], cci23.back().error_percent, paper_cci23[i],
-                cci23.back().runtime_ms);
+    std::printf("| %.3f | %.3f | δ/%d | %.4f | %.3f | δ/%d | %.3f | %.3f | %.1f |\n", ai[i].adip_h,
+                paper_adip_ai[i], ms[i], ai[i].error_percent, cci23.back().adip_h, cci_ms[i],
+                cci23.back().error_percent, paper_cci23[i], cci23.back().runtime_ms);
   }
   std::vector<double> ea, ec, aa, ac, e23;
   for (int i = 0; i < 10; ++i)
     ea.push_back(ai[i].error_percent), ec.push_back(cci[i].error_percent), aa.push_back(ai[i].adip_h),
         ac.push_back(cci23[i].adip_h), e23.push_back(cci23[i].error_percent);
-  std::printf("\nRates (least-squares slope of log error): AI vs dx %.2f (paper 1.72), AI vs ADIP %.2f (paper 2.20), "
-              "CCI vs dx %.2f, CCI vs ADIP %.2f\n",
-              slope(dx, ea), slope(aa, ea), slope(dx, ec), slope(ac, e23));
+  std::printf(
+      "\nRates (least-squares slope of log error): AI vs dx %.2f (paper 1.72), AI vs ADIP %.2f (paper 2.20), "
+      "CCI vs dx %.2f, CCI vs ADIP %.2f\n",
+      slope(dx, ea), slope(aa, ea), slope(dx, ec), slope(ac, e23));
   return 0;
 }

@@ -84,7 +84,8 @@ TEST(Cli, TheRunLogAndSummaryNameTheVersion) {
   EXPECT_EQ(r.out.substr(0, r.out.find('\n') + 1), version);
   const std::string summary = pdtest::slurp(dir / "out" / "summary.json");
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(summary, m, std::regex(R"re("pd": \{\s*"version": "([^"]+)",\s*"commit": "([^"]+)")re")))
+  ASSERT_TRUE(std::regex_search(summary, m,
+                                std::regex(R"re("pd": \{\s*"version": "([^"]+)",\s*"commit": "([^"]+)")re")))
       << summary;
   EXPECT_EQ("pd " + m[1].str() + " (commit " + m[2].str() + ")\n", version);
   std::filesystem::remove_all(dir);

@@ -25,18 +25,20 @@ void expect_clean_log(const std::string& log) {
 
 TEST(RunLog, AStaticRunHasNoEmptyOrRepeatedLine) {
   const auto dir = pdtest::fresh_directory("log_static");
-  const auto r = pdtest::run_pd({"run", std::string(PD_SOURCE_SCENES) + "/uniaxial.yaml", "--out", (dir / "out").string()});
+  const auto r = pdtest::run_pd(
+      {"run", std::string(PD_SOURCE_SCENES) + "/uniaxial.yaml", "--out", (dir / "out").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_clean_log(r.out);
 }
 
 TEST(RunLog, ADynamicRunHasNoEmptyOrRepeatedLine) {
   const auto dir = pdtest::fresh_directory("log_dynamic");
-  std::ofstream(dir / "bar.yaml") << "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 0.1]}, spacing: 0.025}\n"
-                                     "law: silling_plane_strain\ninfluence: const\n"
-                                     "materials: [{name: bar, E: 1.0, nu: 0.0, density: 1.0}]\n"
-                                     "boundary:\n  - {region: {all: true}, fixed: [y]}\n"
-                                     "dynamics: {method: explicit, steps: 20, output_every: 10, threads: 1}\n";
+  std::ofstream(dir / "bar.yaml")
+      << "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 0.1]}, spacing: 0.025}\n"
+         "law: silling_plane_strain\ninfluence: const\n"
+         "materials: [{name: bar, E: 1.0, nu: 0.0, density: 1.0}]\n"
+         "boundary:\n  - {region: {all: true}, fixed: [y]}\n"
+         "dynamics: {method: explicit, steps: 20, output_every: 10, threads: 1}\n";
   const auto r = pdtest::run_pd({"run", (dir / "bar.yaml").string(), "--out", (dir / "out").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_clean_log(r.out);

@@ -26,7 +26,9 @@ struct Case {
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.file; }  // gtest: name the case, not its bytes
 
-std::string escape_regex(const std::string& s) { return std::regex_replace(s, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)"); }
+std::string escape_regex(const std::string& s) {
+  return std::regex_replace(s, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+}
 
 std::string trailing_value(const std::string& text, const std::string& key) {
   std::smatch m;
@@ -38,7 +40,8 @@ std::vector<Case> cases() {
   for (const auto& e : fs::directory_iterator(PD_MALFORMED_DIR))
     if (e.path().extension() == ".yaml") {
       const std::string text = pdtest::slurp(e.path());
-      out.push_back({e.path().stem().string(), e.path(), trailing_value(text, "expect"), trailing_value(text, "message")});
+      out.push_back({e.path().stem().string(), e.path(), trailing_value(text, "expect"),
+                     trailing_value(text, "message")});
     }
   std::sort(out.begin(), out.end(), [](const Case& a, const Case& b) { return a.name < b.name; });
   return out;
@@ -66,13 +69,15 @@ TEST(MalformedRunner, FindsTheCases) { EXPECT_GE(cases().size(), 40u); }
 
 TEST_P(Malformed, IsHandledAsDocumented) {
   const Case& c = GetParam();
-  ASSERT_TRUE(c.expect == "rejected" || c.expect == "warned" || c.expect == "accepted") << c.file << ": no '# expect:'";
+  ASSERT_TRUE(c.expect == "rejected" || c.expect == "warned" || c.expect == "accepted")
+      << c.file << ": no '# expect:'";
   const fs::path dir = pdtest::fresh_directory("malformed_" + c.name);
   const fs::path out = dir / "out";
   const auto r = pdtest::run_pd({"run", c.file.string(), "--out", out.string()});
   if (c.expect == "rejected") {
     EXPECT_EQ(r.status, 2) << r.err;
-    EXPECT_TRUE(std::regex_search(r.err, std::regex("^pd run: " + expected(c)))) << "got: " << r.err << "expected: " << expected(c);
+    EXPECT_TRUE(std::regex_search(r.err, std::regex("^pd run: " + expected(c))))
+        << "got: " << r.err << "expected: " << expected(c);
     EXPECT_EQ(left_behind(out), std::vector<std::string>{}) << "a rejected scene left files behind";
   } else {
     ASSERT_EQ(r.status, 0) << r.err;

@@ -14,8 +14,7 @@ namespace {
 // The §4 RMS error the log prints, as text (the same digits for the same answer).
 std::string rms_line(const std::string& log) {
   std::smatch m;
-  EXPECT_TRUE(std::regex_search(log, m, std::regex("RMS error over the [0-9]+ free particles[^\n]*")))
-      << log;
+  EXPECT_TRUE(std::regex_search(log, m, std::regex("RMS error over the [0-9]+ free particles[^\n]*"))) << log;
   return m.size() ? m.str(0) : "";
 }
 }  // namespace
@@ -24,8 +23,8 @@ TEST(ObqPreconditioner, MatrixFreeNewtonSolvesTheHoleInOneKrylovIteration) {
   const auto dir = pdtest::fresh_directory("obq_preconditioner");
   const std::string scene = pdtest::slurp(std::string(PD_SOURCE_SCENES) + "/paper001_hole.yaml");
   std::ofstream(dir / "mf.yaml") << scene << "\nsolver: {linear: matrix_free}\n";
-  const auto direct = pdtest::run_pd({"run", std::string(PD_SOURCE_SCENES) + "/paper001_hole.yaml", "--out",
-                                      (dir / "direct").string()});
+  const auto direct = pdtest::run_pd(
+      {"run", std::string(PD_SOURCE_SCENES) + "/paper001_hole.yaml", "--out", (dir / "direct").string()});
   const auto mf = pdtest::run_pd({"run", (dir / "mf.yaml").string(), "--out", (dir / "mf").string()});
   ASSERT_EQ(direct.status, 0) << direct.err;
   ASSERT_EQ(mf.status, 0) << mf.err;

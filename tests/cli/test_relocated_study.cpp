@@ -17,8 +17,9 @@ TEST(RelocatedStudy, PlotsWithTheScriptBesideTheBinaryAndNamesItWhenMissing) {
   const fs::path pd = root / "bin" / "pd";
   fs::copy_file(PD_EXE, pd);
   const fs::path study = root / "tiny.yaml";
-  std::ofstream(study) << "problems: [" << PD_SOURCE_SCENES << "/uniaxial.yaml]\n"
-                       << "laws: [silling_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [6, 8]\n";
+  std::ofstream(study)
+      << "problems: [" << PD_SOURCE_SCENES << "/uniaxial.yaml]\n"
+      << "laws: [silling_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [6, 8]\n";
   const fs::path out = root / "out";
 
   const auto bare = pdtest::run_pd({"study", study.string(), "--out", out.string()}, {}, pd.string());
@@ -30,7 +31,8 @@ TEST(RelocatedStudy, PlotsWithTheScriptBesideTheBinaryAndNamesItWhenMissing) {
   const auto first = bare.out.find("[1/2]"), second = bare.out.find("[2/2]");
   ASSERT_NE(second, std::string::npos) << bare.out;
   EXPECT_NE(bare.out.substr(first, second - first).find(", ETA "), std::string::npos) << bare.out;
-  EXPECT_EQ(bare.out.substr(second, bare.out.find('\n', second) - second).find("ETA"), std::string::npos) << bare.out;
+  EXPECT_EQ(bare.out.substr(second, bare.out.find('\n', second) - second).find("ETA"), std::string::npos)
+      << bare.out;
 
   fs::create_directories(root / "share" / "pdgen");
   fs::copy_file(PD_PLOT_SCRIPT, root / "share" / "pdgen" / "plot_study.py");

@@ -30,7 +30,8 @@ body_force: {field: {solution: u2, amplitude: 0.001}}
 TEST(BodyForceRelaxation, RelaxationEndsAtTheStaticSolution) {
   pd::Simulation statics(pd::parse_scene(kScene, "u2.yaml"), [](const std::string&) {});
   ASSERT_TRUE(statics.run(false).newton.converged);
-  const std::string relaxation = kScene + "dynamics: {method: relaxation, tolerance: 1.0e-10, steps: 100000}\n";
+  const std::string relaxation =
+      kScene + "dynamics: {method: relaxation, tolerance: 1.0e-10, steps: 100000}\n";
   pd::DynamicSimulation dynamic(pd::parse_scene(relaxation, "u2_relaxation.yaml"), [](const std::string&) {});
   const pd::RunSummary s = dynamic.run(false);
   ASSERT_TRUE(s.dynamics->converged);

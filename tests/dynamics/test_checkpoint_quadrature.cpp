@@ -15,7 +15,8 @@ void quiet(const std::string&) {}
 
 pd::Scene bar(const std::string& domain_extra, const std::string& name) {
   pd::Scene s = pd::parse_scene(R"(dimension: 2
-domain: {box: {min: [0, 0], max: [1, 0.15]}, spacing: 0.05)" + domain_extra + R"(}
+domain: {box: {min: [0, 0], max: [1, 0.15]}, spacing: 0.05)" +
+                                    domain_extra + R"(}
 horizon: {ratio: 3.0}
 law: silling_plane_strain
 influence: const
@@ -62,13 +63,15 @@ TEST(CheckpointQuadrature, AnotherQuadratureCompensationOrGaussPointsIsRefused) 
   EXPECT_EQ(restart_error(bar(", gauss_points: {per_axis: 2}", "gauss_again"), gauss), "");
   // Compensation changes only the factors, partial_exact against partial_linear neither the
   // particles nor (on this grid) every bond: the quadrature entry must differ all the same.
-  for (const std::string& other : {std::string(", compensation: true"), std::string(", gauss_points: {per_axis: 2}"),
-                                   std::string(", gauss_points: {per_axis: 2, support: 3.5}")}) {
+  for (const std::string& other :
+       {std::string(", compensation: true"), std::string(", gauss_points: {per_axis: 2}"),
+        std::string(", gauss_points: {per_axis: 2, support: 3.5}")}) {
     const std::string& path = other.find("support") != std::string::npos ? gauss : plain;
     const std::string message = restart_error(bar(other, "other"), path);
     EXPECT_NE(message.find("quadrature:"), std::string::npos) << other << ": " << message;
   }
   const std::string linear = checkpoint_of(bar(", quadrature: partial_linear", "linear"));
   const std::string message = restart_error(bar(", quadrature: partial_exact", "exact"), linear);
-  EXPECT_NE(message.find("quadrature: checkpoint partial_linear, this run partial_exact"), std::string::npos) << message;
+  EXPECT_NE(message.find("quadrature: checkpoint partial_linear, this run partial_exact"), std::string::npos)
+      << message;
 }

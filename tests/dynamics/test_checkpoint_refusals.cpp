@@ -26,13 +26,14 @@ influence: const
 materials: [{name: bar, E: 1.0, nu: 0.0, density: 1.0}]
 boundary: [{region: {all: true}, fixed: [y]}]
 dynamics:
-  steps: )" + std::to_string(steps) + R"(
+  steps: )" + std::to_string(steps) +
+                                    R"(
   checkpoint_every: 10
   progress_seconds: 0
   threads: 1
   initial: [{region: {all: true}, displacement: [1.0e-3, 0], gaussian: {axis: x, center: 0.5, width: 0.1}}]
 )",
-                                  "bar.yaml");
+                                "bar.yaml");
   const auto dir = std::filesystem::temp_directory_path() / ("pd_checkpoint_refusals_" + name);
   std::filesystem::remove_all(dir);
   s.output.directory = dir.string();
@@ -84,7 +85,8 @@ TEST(CheckpointRefusals, FlippedBitsAreFound) {
   // tail (text, end, checksum), and every 61st byte between (the arrays). The magic and
   // the byte-order mark (bytes 0-11) have their own messages.
   std::vector<std::size_t> bytes;
-  for (std::size_t i = 12; i < good.size(); i += (i < 2048 || i + 512 > good.size()) ? 1 : 61) bytes.push_back(i);
+  for (std::size_t i = 12; i < good.size(); i += (i < 2048 || i + 512 > good.size()) ? 1 : 61)
+    bytes.push_back(i);
   for (std::size_t i : bytes) {
     std::string b = good;
     b[i] = static_cast<char>(b[i] ^ (1 << (i % 8)));
@@ -101,14 +103,17 @@ TEST(CheckpointRefusals, FlippedBitsAreFound) {
   std::string b = good;
   b[good.size() / 2] ^= 4;
   write_bytes(path, b);
-  EXPECT_NE(restart_error(bar("silling_plane_strain", 20, "flip_restart"), path).find("damaged"), std::string::npos);
+  EXPECT_NE(restart_error(bar("silling_plane_strain", 20, "flip_restart"), path).find("damaged"),
+            std::string::npos);
 }
 
 TEST(CheckpointRefusals, AnotherLawOnTheSameGridIsRefusedNamingBoth) {
   const std::string path = checkpoint_of(bar("silling_plane_strain", 10, "silling"));
   const std::string message = restart_error(bar("lps_plane_strain", 20, "lps"), path);
   EXPECT_NE(message.find("belongs to another run"), std::string::npos) << message;
-  EXPECT_NE(message.find("law: checkpoint silling_plane_strain, this run lps_plane_strain"), std::string::npos) << message;
+  EXPECT_NE(message.find("law: checkpoint silling_plane_strain, this run lps_plane_strain"),
+            std::string::npos)
+      << message;
 }
 
 TEST(CheckpointRefusals, OtherMaterialOrGridIsRefused) {

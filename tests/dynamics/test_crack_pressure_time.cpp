@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "input/scene.hpp"
 #include "constraints/constraints.hpp"
+#include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/simulation.hpp"
@@ -29,7 +29,8 @@ boundary:
 )";
 
 std::string crack(double pressure, const std::string& time_function = "") {
-  std::string s = "cracks:\n  - segment: [[-0.3, 0], [0.3, 0]]\n    pressure: " + fmt::format("{:.17g}", pressure) + "\n";
+  std::string s =
+      "cracks:\n  - segment: [[-0.3, 0], [0.3, 0]]\n    pressure: " + fmt::format("{:.17g}", pressure) + "\n";
   if (!time_function.empty()) s += "    time_function: " + time_function + "\n";
   return s;
 }
@@ -50,7 +51,8 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
 TEST(CrackPressureInTime, ADynamicRunScalesItByTheTimeFunction) {
   // Half the pressure through {constant: 0.5} moves the body exactly as half the
   // pressure given directly (the pair forces are linear in p; rounding only).
-  pd::DynamicSimulation scaled(pd::parse_scene(kPlate + crack(0.002, "{constant: 0.5}") + kDynamics, "a.yaml"), quiet);
+  pd::DynamicSimulation scaled(
+      pd::parse_scene(kPlate + crack(0.002, "{constant: 0.5}") + kDynamics, "a.yaml"), quiet);
   scaled.run(false);
   pd::DynamicSimulation half(pd::parse_scene(kPlate + crack(0.001) + kDynamics, "b.yaml"), quiet);
   half.run(false);
@@ -88,7 +90,8 @@ TEST(CrackPressureInTime, ADynamicRunScalesItByTheTimeFunction) {
 TEST(CrackPressureInTime, AStaticRunScalesItByTheLoadFactor) {
   // Two Newton load steps: the converged solution of step 1 (load factor 1/2) is the
   // static solution at half the pressure.
-  const pd::Scene s = pd::parse_scene(kPlate + crack(0.002) + "solver: {load_steps: 2, tolerance: 1e-12}\n", "s.yaml");
+  const pd::Scene s =
+      pd::parse_scene(kPlate + crack(0.002) + "solver: {load_steps: 2, tolerance: 1e-12}\n", "s.yaml");
   pd::Simulation sim(s, quiet);
   const pd::DofMap dofs = pd::scene_constraints(s, sim.particles());
   const auto pressure = pd::make_crack_pressure(s, sim.particles(), sim.bonds());

@@ -6,13 +6,12 @@
 //     probe there is C : eps to the relaxation's tolerance;
 //   - an explicit run started on the affine field (initial gradient, zero velocity) stays
 //     there, and the probe is C : eps after every step as at the start.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <string>
-
-#include <fmt/core.h>
 
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
@@ -43,8 +42,9 @@ constexpr double kSyy = kLambda * (kE11 + kE22) + 2 * kMu * kE22, kSxy = 2 * kMu
 TEST(DynamicStress, RelaxationEndsOnHookesLaw) {
   const auto dir = pd::test::fresh_directory("pd_dynamic_stress_relaxation");
   pd::DynamicSimulation sim(
-      pd::parse_scene(plate(dir.string(), "{method: relaxation, tolerance: 1.0e-10, steps: 100000, threads: 1}"),
-                      "plate.yaml"),
+      pd::parse_scene(
+          plate(dir.string(), "{method: relaxation, tolerance: 1.0e-10, steps: 100000, threads: 1}"),
+          "plate.yaml"),
       [](const std::string&) {});
   const pd::RunSummary r = sim.run(true);
   ASSERT_TRUE(r.dynamics->converged);
@@ -60,8 +60,9 @@ TEST(DynamicStress, RelaxationEndsOnHookesLaw) {
 TEST(DynamicStress, ExplicitRunOnTheAffineFieldStaysOnHookesLaw) {
   const auto dir = pd::test::fresh_directory("pd_dynamic_stress_explicit");
   pd::DynamicSimulation sim(
-      pd::parse_scene(plate(dir.string(), "{steps: 20, threads: 1, progress_seconds: 0, initial: [{region: {all: true}, "
-                                          "gradient: [[1.0e-4, 0.4e-4], [0.4e-4, -0.3e-4]]}]}"),
+      pd::parse_scene(plate(dir.string(),
+                            "{steps: 20, threads: 1, progress_seconds: 0, initial: [{region: {all: true}, "
+                            "gradient: [[1.0e-4, 0.4e-4], [0.4e-4, -0.3e-4]]}]}"),
                       "plate.yaml"),
       [](const std::string&) {});
   const pd::RunSummary r = sim.run(true);

@@ -82,8 +82,9 @@ TEST(Energy, UndampedVerletConservesEnergyOver10000Steps) {
   EXPECT_LT(std::fabs(coarse.drift), 0.1 * coarse.max_error) << coarse.drift << " " << coarse.max_error;
   // Second order: halving dt (same simulated time) divides the error by about 4.
   const EnergyError fine = run(0.4, 20000);
-  std::printf("energy error over 10,000 steps at s = 0.8: max %.3e drift %.3e; at s = 0.4 (20,000 steps): max %.3e\n",
-              coarse.max_error, coarse.drift, fine.max_error);
+  std::printf(
+      "energy error over 10,000 steps at s = 0.8: max %.3e drift %.3e; at s = 0.4 (20,000 steps): max %.3e\n",
+      coarse.max_error, coarse.drift, fine.max_error);
   EXPECT_LT(fine.max_error, bound(0.4)) << fine.max_error;
   EXPECT_LT(std::fabs(fine.drift), 0.1 * fine.max_error) << fine.drift << " " << fine.max_error;
   const double ratio = coarse.max_error / fine.max_error;

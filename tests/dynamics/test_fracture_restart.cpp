@@ -47,7 +47,8 @@ TEST(Fracture, DamageGrowsFromTheNotchTipOnlyAndMakesAnAnimation) {
       if (after[p] <= before[p]) continue;
       ++grown;
       const double* x = sim.particles().position(p);
-      EXPECT_LT(std::hypot(x[0] - tip[0], x[1] - tip[1]), 2 * delta) << "particle " << p << " at " << x[0] << ", " << x[1];
+      EXPECT_LT(std::hypot(x[0] - tip[0], x[1] - tip[1]), 2 * delta)
+          << "particle " << p << " at " << x[0] << ", " << x[1];
     }
     EXPECT_GT(grown, 0) << "no damage growth by step 80";
   }
@@ -70,7 +71,9 @@ TEST(Fracture, DamageGrowsFromTheNotchTipOnlyAndMakesAnAnimation) {
   std::stringstream text;
   text << pvd.rdbuf();
   int entries = 0;
-  for (std::size_t at = text.str().find("<DataSet"); at != std::string::npos; at = text.str().find("<DataSet", at + 1)) ++entries;
+  for (std::size_t at = text.str().find("<DataSet"); at != std::string::npos;
+       at = text.str().find("<DataSet", at + 1))
+    ++entries;
   EXPECT_EQ(entries, 16);  // steps 0, 10, ..., 150
   EXPECT_TRUE(std::filesystem::exists(s.output.directory + "/snapshots/step_00000150.vtu"));
 }
@@ -129,7 +132,8 @@ TEST(Effects, WhatTheSceneDoesNotCallForIsAbsent) {
   EXPECT_NE(rw.text().find("inertia"), std::string::npos);
 
   // Relaxation: no mass or velocity arrays (the fictitious density replaces them).
-  pd::DynamicSimulation relax(pd::read_scene(scene_path("relaxation_uniaxial.yaml")), [](const std::string&) {});
+  pd::DynamicSimulation relax(pd::read_scene(scene_path("relaxation_uniaxial.yaml")),
+                              [](const std::string&) {});
   const pd::RunSummary rr = relax.run(false);
   EXPECT_FALSE(relax.has_masses());
   EXPECT_TRUE(relax.velocity().empty());
@@ -139,7 +143,8 @@ TEST(Effects, WhatTheSceneDoesNotCallForIsAbsent) {
   pd::Simulation stat(pd::read_scene(scene_path("uniaxial.yaml")), [](const std::string&) {});
   const pd::RunSummary rs = stat.run(false);
   EXPECT_FALSE(rs.dynamics.has_value());
-  for (const char* absent : {"inertia", "damage", "dynamics", "relaxation"}) EXPECT_EQ(rs.json().find(absent), std::string::npos) << absent;
+  for (const char* absent : {"inertia", "damage", "dynamics", "relaxation"})
+    EXPECT_EQ(rs.json().find(absent), std::string::npos) << absent;
 
   // The notched plate calls for damage: the damaged kernels from the start.
   pd::Scene plate = pd::read_scene(scene_path("notched_plate.yaml"));

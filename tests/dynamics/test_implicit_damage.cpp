@@ -61,8 +61,10 @@ double free_imbalance(const pd::Simulation& sim) {
   for (int p = 0; p < P.size(); ++p) {
     const double y = P.position(p)[1];
     const double m = std::hypot(f[2 * p], f[2 * p + 1]);
-    if (y > 0.1 && y < 0.9) inner = std::max(inner, m);
-    else grip = std::max(grip, m);
+    if (y > 0.1 && y < 0.9)
+      inner = std::max(inner, m);
+    else
+      grip = std::max(grip, m);
   }
   return inner / grip;
 }
@@ -122,7 +124,8 @@ TEST(ImplicitDamage, AboveItBondsBreakOnlyAheadOfTheNotchTipAndStepsStayConverge
       const double* xb = P.position(B.neighbor[e]);
       const double mx = 0.5 * (xa[0] + xb[0]), my = 0.5 * (xa[1] + xb[1]);
       EXPECT_GT(mx, kTip[0] - 0.5 * delta) << "behind the tip: " << mx << ", " << my;
-      EXPECT_LT(std::hypot(mx - kTip[0], my - kTip[1]), 2 * delta) << "far from the tip: " << mx << ", " << my;
+      EXPECT_LT(std::hypot(mx - kTip[0], my - kTip[1]), 2 * delta)
+          << "far from the tip: " << mx << ", " << my;
       EXPECT_GT(stretch(P, B, sim.displacement(), a, e), s0);
     }
   EXPECT_EQ(fresh, 2 * *r.bonds_broken_by_damage);  // both families' copies

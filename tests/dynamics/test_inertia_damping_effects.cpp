@@ -36,14 +36,17 @@ std::string plate(const std::string& dynamics) {
          "  - region: {box: {min: [0.01, 0.04], max: [1, 1]}}\n"
          "    displacement: {y: 0.003}\n"
          "    time_function: {sine: {period: 0.4}}\n"
-         "dynamics: {" + dynamics + "}\n";
+         "dynamics: {" +
+         dynamics + "}\n";
 }
 
 // The same plate held on the left only; `extra`: more top-level keys.
 std::string held_plate(const std::string& extra) {
-  return "dimension: 2\ndomain: {box: {min: [0, 0], max: [0.1, 0.05]}, spacing: 0.01}\nhorizon: {ratio: 3.0}\n"
+  return "dimension: 2\ndomain: {box: {min: [0, 0], max: [0.1, 0.05]}, spacing: 0.01}\nhorizon: {ratio: "
+         "3.0}\n"
          "law: silling_plane_strain\ninfluence: const\nmaterials: [{name: m, E: 1.0, nu: 0.0}]\n"
-         "boundary:\n  - region: {box: {min: [-1, -1], max: [0.01, 1]}}\n    fixed: [x, y]\n" + extra;
+         "boundary:\n  - region: {box: {min: [-1, -1], max: [0.01, 1]}}\n    fixed: [x, y]\n" +
+         extra;
 }
 
 pd::Model dynamic_model(const pd::Scene& s) {
@@ -55,7 +58,8 @@ pd::Model dynamic_model(const pd::Scene& s) {
 }  // namespace
 
 TEST(InertiaEffect, TheModelOwnsTheMassAndListsItLast) {
-  const pd::Scene s = pd::parse_scene(plate("method: explicit, steps: 1, damping: 0.7, threads: 1"), "plate.yaml");
+  const pd::Scene s =
+      pd::parse_scene(plate("method: explicit, steps: 1, damping: 0.7, threads: 1"), "plate.yaml");
   const pd::Model m = dynamic_model(s);
   ASSERT_NE(m.inertia, nullptr);
   ASSERT_NE(m.damping, nullptr);
@@ -78,7 +82,8 @@ TEST(InertiaEffect, TheModelOwnsTheMassAndListsItLast) {
 }
 
 TEST(InertiaEffect, NoDampingEffectWithoutDampingAndNoneInAStaticModel) {
-  const pd::Model undamped = dynamic_model(pd::parse_scene(plate("method: explicit, steps: 1, threads: 1"), "plate.yaml"));
+  const pd::Model undamped =
+      dynamic_model(pd::parse_scene(plate("method: explicit, steps: 1, threads: 1"), "plate.yaml"));
   EXPECT_NE(undamped.inertia, nullptr);
   EXPECT_EQ(undamped.damping, nullptr);
   for (const auto& e : undamped.effects) EXPECT_NE(e->name(), "viscous damping");
@@ -88,7 +93,8 @@ TEST(InertiaEffect, NoDampingEffectWithoutDampingAndNoneInAStaticModel) {
 }
 
 TEST(InertiaEffect, RelaxationsFictitiousDensityIsAQuarterOfTheRowSums) {
-  const pd::Model m = dynamic_model(pd::parse_scene(held_plate("dynamics: {method: relaxation, steps: 10}\n"), "relax.yaml"));
+  const pd::Model m =
+      dynamic_model(pd::parse_scene(held_plate("dynamics: {method: relaxation, steps: 10}\n"), "relax.yaml"));
   ASSERT_NE(m.inertia, nullptr);
   EXPECT_EQ(m.damping, nullptr);
   EXPECT_TRUE(m.inertia->inverse_mass().empty());
@@ -100,7 +106,8 @@ TEST(InertiaEffect, RelaxationsFictitiousDensityIsAQuarterOfTheRowSums) {
   a.stiffness(nullptr, K);
   std::vector<double> rows(static_cast<std::size_t>(K.rows()), 0.0);
   for (int c = 0; c < K.outerSize(); ++c)
-    for (pd::SparseMatrix::InnerIterator it(K, c); it; ++it) rows[static_cast<std::size_t>(it.row())] += std::fabs(it.value());
+    for (pd::SparseMatrix::InnerIterator it(K, c); it; ++it)
+      rows[static_cast<std::size_t>(it.row())] += std::fabs(it.value());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     ASSERT_GT(rows[i], 0.0);
     EXPECT_NEAR(m.inertia->mass()[i], 0.25 * rows[i], 1e-12 * rows[i]) << i;
@@ -108,7 +115,8 @@ TEST(InertiaEffect, RelaxationsFictitiousDensityIsAQuarterOfTheRowSums) {
 }
 
 TEST(VerletWithEffects, HalfStepsAreTheDampedAndUndampedFormulas) {
-  const pd::Scene s = pd::parse_scene(plate("method: explicit, steps: 1, damping: 0.7, threads: 1"), "plate.yaml");
+  const pd::Scene s =
+      pd::parse_scene(plate("method: explicit, steps: 1, damping: 0.7, threads: 1"), "plate.yaml");
   const pd::Model m = dynamic_model(s);
   const std::vector<int>& free = m.dofs.free_dofs();
   const std::size_t N = m.inertia->mass().size();
@@ -133,7 +141,8 @@ TEST(VerletWithEffects, HalfStepsAreTheDampedAndUndampedFormulas) {
       EXPECT_NEAR(ua[i], ue[i], 1e-15) << i;
       EXPECT_NEAR(va[i], ve[i], 1e-13 * (1 + std::fabs(ve[i]))) << i;
     }
-    for (int i : m.dofs.constrained_dofs()) EXPECT_EQ(ua[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
+    for (int i : m.dofs.constrained_dofs())
+      EXPECT_EQ(ua[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
   }
 }
 

@@ -34,7 +34,8 @@ TEST(RelaxationRestart, StoppedAndRestartedRunEndsLikeAnUninterruptedOne) {
   const pd::RunSummary a = full.run(false);
   ASSERT_TRUE(a.dynamics->converged);
   ASSERT_GT(a.dynamics->bonds_broken, 0);
-  const int stop = a.dynamics->last_step - 100, every = (stop - 50) / 2;  // two checkpoints, then run on past the last
+  const int stop = a.dynamics->last_step - 100,
+            every = (stop - 50) / 2;  // two checkpoints, then run on past the last
   ASSERT_GT(every, 100);
 
   pd::Scene parts = relaxation_scene("parts");

@@ -33,7 +33,8 @@ TEST(RunSummary, StaticSceneWithoutDamageHasNoDamageAnywhere) {
   EXPECT_TRUE(sim.assembler().intact());
   EXPECT_EQ(r.variant, "intact (alpha folded to 1)");
   EXPECT_FALSE(r.bonds_broken_by_damage.has_value());
-  for (const char* absent : {"damage", "critical-stretch", "re-solve", "resolve", "inertia", "relaxation", "crack pressure"}) {
+  for (const char* absent :
+       {"damage", "critical-stretch", "re-solve", "resolve", "inertia", "relaxation", "crack pressure"}) {
     EXPECT_EQ(c.log.find(absent), std::string::npos) << absent;
     EXPECT_EQ(r.text().find(absent), std::string::npos) << absent;
     EXPECT_EQ(r.json().find(absent), std::string::npos) << absent;
@@ -47,7 +48,8 @@ TEST(RunSummary, StaticSceneWithDamageSaysSo) {
   // Set up but not solved: the damaged kernels and the damage object exist already.
   ASSERT_NE(sim.damage(), nullptr);
   EXPECT_FALSE(sim.assembler().intact());
-  EXPECT_NE(c.log.find("effect: damage: critical-stretch bond breaking (PMB), s0 = 0.01, tension only, between load steps"),
+  EXPECT_NE(c.log.find("effect: damage: critical-stretch bond breaking (PMB), s0 = 0.01, tension only, "
+                       "between load steps"),
             std::string::npos)
       << c.log;
   EXPECT_EQ(c.log.find("inertia"), std::string::npos);
@@ -61,7 +63,8 @@ TEST(RunSummary, DynamicSceneLogListsOnlyItsEffects) {
   const pd::RunSummary r = sim.run(false);
   EXPECT_EQ(sim.damage(), nullptr);
   EXPECT_TRUE(sim.has_masses());
-  for (const char* absent : {"damage", "critical-stretch", "crack", "damping", "external loads", "relaxation", "Newton"})
+  for (const char* absent :
+       {"damage", "critical-stretch", "crack", "damping", "external loads", "relaxation", "Newton"})
     EXPECT_EQ(c.log.find(absent), std::string::npos) << absent;
   EXPECT_NE(c.log.find("effect: inertia"), std::string::npos);
   EXPECT_NE(r.json().find("\"dt_stable_estimate\""), std::string::npos);
@@ -81,7 +84,8 @@ TEST(RunSummary, RelaxationTimeSeriesCarriesTheProbe) {
   int n = 0;
   for (int p = 0; p < P.size(); ++p) {
     const double* x = P.position(p);
-    if (x[0] >= 4 - 1e-9 && x[0] <= 6 + 1e-9 && std::fabs(x[1] - 10) < 1e-9) sum += sim.displacement()[2 * p + 1], ++n;
+    if (x[0] >= 4 - 1e-9 && x[0] <= 6 + 1e-9 && std::fabs(x[1] - 10) < 1e-9)
+      sum += sim.displacement()[2 * p + 1], ++n;
   }
   ASSERT_GT(n, 0);
   const auto& rows = sim.series();

@@ -65,8 +65,11 @@ TEST(Wave, BarPulseTravelsAtTheAnalyticSpeed) {
   const double c_inf = std::sqrt(2 * c2 * c2 - c1 * c1);
   const double c_lattice = std::sqrt(lattice_modulus(1.0, 0.0) / 1.0);
   const double c_continuum = 1.0;  // sqrt((lambda + 2G) / rho) = sqrt(E / rho) at nu = 0
-  std::printf("wave speed: H = 0.08: %.5f, H = 0.16: %.5f, extrapolated %.5f; lattice-analytic %.5f (error %.2e), continuum %.5f (error %.2e)\n",
-              c1, c2, c_inf, c_lattice, std::fabs(c_inf / c_lattice - 1), c_continuum, std::fabs(c_inf / c_continuum - 1));
+  std::printf(
+      "wave speed: H = 0.08: %.5f, H = 0.16: %.5f, extrapolated %.5f; lattice-analytic %.5f (error %.2e), "
+      "continuum %.5f (error %.2e)\n",
+      c1, c2, c_inf, c_lattice, std::fabs(c_inf / c_lattice - 1), c_continuum,
+      std::fabs(c_inf / c_continuum - 1));
   // Against the law's own analytic modulus on this lattice: the dynamics (mass, time
   // integration, dispersion of a pulse 10 h wide) adds less than 0.3%.
   EXPECT_NEAR(c_inf / c_lattice, 1.0, 3e-3);
@@ -98,9 +101,11 @@ TEST(Relaxation, ConvergesToTheImplicitStaticAnswerOnUniaxial) {
     diff = std::max(diff, std::fabs(adr.displacement()[i] - sim.displacement()[i]));
     ref = std::max(ref, std::fabs(sim.displacement()[i]));
   }
-  std::printf("ADR vs Newton: max |du| / max |u| = %.3e, probe %.12g vs %.12g; ADR %d iterations %.3f s, Newton %d iterations %.3f s\n",
-              diff / ref, a.probes[0].value, n.probes[0].value, a.dynamics->last_step, adr_seconds, n.newton.iterations(),
-              newton_seconds);
+  std::printf(
+      "ADR vs Newton: max |du| / max |u| = %.3e, probe %.12g vs %.12g; ADR %d iterations %.3f s, Newton %d "
+      "iterations %.3f s\n",
+      diff / ref, a.probes[0].value, n.probes[0].value, a.dynamics->last_step, adr_seconds,
+      n.newton.iterations(), newton_seconds);
   // |r| <= 1e-8 |f_ext| bounds the error by cond(K) x 1e-8 in the worst case; 1e-6 of
   // the field is the claim (documented in docs/scene_format.md).
   EXPECT_LT(diff / ref, 1e-6);

@@ -38,7 +38,8 @@ void expect_message(const std::string& yaml, const std::string& pattern) {
 TEST(BadInput, BaseSceneSolves) { EXPECT_EQ(failure(kBase), ""); }
 
 TEST(BadInput, HorizonSmallerThanTheSpacing) {
-  expect_message(kBase + "horizon: {length: 0.05}\n", R"(^b\.yaml:10: horizon: the horizon must be at least one spacing)");
+  expect_message(kBase + "horizon: {length: 0.05}\n",
+                 R"(^b\.yaml:10: horizon: the horizon must be at least one spacing)");
 }
 
 TEST(BadInput, EmptyNodeSetOfABoundaryCondition) {
@@ -47,9 +48,11 @@ TEST(BadInput, EmptyNodeSetOfABoundaryCondition) {
 }
 
 TEST(BadInput, ImpossibleGeometry) {
-  expect_message(std::regex_replace(kBase, std::regex("  spacing: 0.1\n"), "  spacing: 0.1\n  holes: [{circle: {center: [0.5, 0.5], radius: 2}}]\n"),
+  expect_message(std::regex_replace(kBase, std::regex("  spacing: 0.1\n"),
+                                    "  spacing: 0.1\n  holes: [{circle: {center: [0.5, 0.5], radius: 2}}]\n"),
                  R"(^b\.yaml: domain: the domain holds no particle)");
-  expect_message(std::regex_replace(kBase, std::regex("max: \\[1, 1\\]"), "max: [1, -1]"), R"(^b\.yaml:3: domain\.box: max must exceed min)");
+  expect_message(std::regex_replace(kBase, std::regex("max: \\[1, 1\\]"), "max: [1, -1]"),
+                 R"(^b\.yaml:3: domain\.box: max must exceed min)");
 }
 
 TEST(BadInput, UnderConstrainedBody) {
@@ -59,7 +62,9 @@ TEST(BadInput, UnderConstrainedBody) {
 
 TEST(BadInput, ClusterCutOffByCracks) {
   // A closed square crack around the four particles at (0.45 | 0.55, 0.45 | 0.55).
-  expect_message(kBase + "cracks:\n  - segment: [[0.41, 0.41], [0.59, 0.41]]\n  - segment: [[0.59, 0.41], [0.59, 0.59]]\n"
-                         "  - segment: [[0.59, 0.59], [0.41, 0.59]]\n  - segment: [[0.41, 0.59], [0.41, 0.41]]\n",
-                 R"(a cluster of 4 particle\(s\) joined by intact bonds .* is disconnected from the rest of the body and under-constrained: no particle has its x)");
+  expect_message(
+      kBase +
+          "cracks:\n  - segment: [[0.41, 0.41], [0.59, 0.41]]\n  - segment: [[0.59, 0.41], [0.59, 0.59]]\n"
+          "  - segment: [[0.59, 0.59], [0.41, 0.59]]\n  - segment: [[0.41, 0.59], [0.41, 0.41]]\n",
+      R"(a cluster of 4 particle\(s\) joined by intact bonds .* is disconnected from the rest of the body and under-constrained: no particle has its x)");
 }

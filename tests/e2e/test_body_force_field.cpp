@@ -10,8 +10,8 @@
 #include <string>
 
 #include "fields/manufactured.hpp"
-#include "run/manufactured_solve.hpp"
 #include "input/scene.hpp"
+#include "run/manufactured_solve.hpp"
 #include "run/simulation.hpp"
 
 namespace {
@@ -21,7 +21,9 @@ std::string u2_scene(int n, const std::string& body_force) {
   return "dimension: 2\n"
          "domain:\n"
          "  box: {min: [0, 0], max: [1, 1]}\n"
-         "  count: " + std::to_string(n) + "\n"
+         "  count: " +
+         std::to_string(n) +
+         "\n"
          "  quadrature: obq\n"
          "  perturbation: {amplitude: 0.2, seed: 1}\n"
          "horizon: {ratio: 3.5}\n"
@@ -30,8 +32,10 @@ std::string u2_scene(int n, const std::string& body_force) {
          "materials:\n"
          "  - {E: 1.25, nu: 0.25}\n"
          "boundary:\n"
-         "  - region: {outside: {min: [" + std::to_string(layer) + ", " + std::to_string(layer) + "], max: [" +
-         std::to_string(1 - layer) + ", " + std::to_string(1 - layer) + "]}}\n"
+         "  - region: {outside: {min: [" +
+         std::to_string(layer) + ", " + std::to_string(layer) + "], max: [" + std::to_string(1 - layer) +
+         ", " + std::to_string(1 - layer) +
+         "]}}\n"
          "    field: {solution: u2}\n" +
          body_force +
          "reference: {solution: u2}\n"
@@ -45,7 +49,8 @@ struct Interior {
 
 // The RMS error of paper 001 §4 over the particles inside the layer (the solved ones).
 // `summary` (optional) gets the run's summary.
-Interior interior_error(int n, const std::string& scene_text, double amplitude = 1, pd::RunSummary* summary = nullptr) {
+Interior interior_error(int n, const std::string& scene_text, double amplitude = 1,
+                        pd::RunSummary* summary = nullptr) {
   pd::Simulation sim(pd::parse_scene(scene_text, "u2.yaml"), [](const std::string&) {});
   const pd::RunSummary s = sim.run(false);
   EXPECT_TRUE(s.newton.converged) << s.newton.message;
@@ -98,6 +103,7 @@ TEST(BodyForceField, AmplitudeScalesTheFieldAndItsBodyForce) {
   const pd::ManufacturedResult reduced = pd::solve_manufactured(pd::paper001_u2(), pd::ManufacturedSetup{});
   EXPECT_NEAR(small.rms, 0.001 * reduced.rms_error, 1e-6 * 0.001 * reduced.rms_error);
   bool described = false;
-  for (const std::string& e : s.effects) described = described || e.find("body force density of field u2") != std::string::npos;
+  for (const std::string& e : s.effects)
+    described = described || e.find("body force density of field u2") != std::string::npos;
   EXPECT_TRUE(described);
 }

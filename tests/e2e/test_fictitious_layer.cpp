@@ -17,12 +17,12 @@
 #include <random>
 #include <string>
 
+#include "constraints/constraints.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/fictitious_layer.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "model/model.hpp"
-#include "constraints/constraints.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/peridynamic_system.hpp"
 #include "run/simulation.hpp"
@@ -34,14 +34,24 @@ std::string square_scene(const std::string& law, const std::string& right = "tra
   return "dimension: 2\n"
          "domain: {box: {min: [-0.6, -0.6], max: [1.6, 1.6]}, spacing: 0.1}\n"
          "horizon: {ratio: 3}\n"
-         "law: " + law + "\n"
+         "law: " +
+         law +
+         "\n"
          "materials:\n"
-         "  - {E: 1, nu: 0.25, plane: stress" + (law.rfind("correspondence", 0) == 0 ? ", parameters: {stab: 1.0}" : "") + "}\n"
+         "  - {E: 1, nu: 0.25, plane: stress" +
+         (law.rfind("correspondence", 0) == 0 ? ", parameters: {stab: 1.0}" : "") +
+         "}\n"
          "boundary:\n"
-         "  - {region: {box: {min: [-1, -1], max: [0, 2]}}, method: fictitious_layer, face: {point: [0, 0], normal: [-1, 0]}, fixed: [x]}\n"
-         "  - {region: {box: {min: [0, -1], max: [2, 0]}}, method: fictitious_layer, face: {point: [0, 0], normal: [0, -1]}, fixed: [y]}\n"
-         "  - {region: {box: {min: [1, 0], max: [2, 2]}}, method: fictitious_layer, face: {point: [1, 0], normal: [1, 0]}, " + right + "}\n"
-         "  - {region: {box: {min: [0, 1], max: [1, 2]}}, method: fictitious_layer, face: {point: [0, 1], normal: [0, 1]}, traction: [0, 0]}\n"
+         "  - {region: {box: {min: [-1, -1], max: [0, 2]}}, method: fictitious_layer, face: {point: [0, 0], "
+         "normal: [-1, 0]}, fixed: [x]}\n"
+         "  - {region: {box: {min: [0, -1], max: [2, 0]}}, method: fictitious_layer, face: {point: [0, 0], "
+         "normal: [0, -1]}, fixed: [y]}\n"
+         "  - {region: {box: {min: [1, 0], max: [2, 2]}}, method: fictitious_layer, face: {point: [1, 0], "
+         "normal: [1, 0]}, " +
+         right +
+         "}\n"
+         "  - {region: {box: {min: [0, 1], max: [1, 2]}}, method: fictitious_layer, face: {point: [0, 1], "
+         "normal: [0, 1]}, traction: [0, 0]}\n"
          "solver: {tolerance: 1.0e-12}\n";
 }
 
@@ -56,10 +66,16 @@ TEST(FictitiousLayer, DisplacementMirrorReproducesAnyLinearFieldExactly) {
   const pd::Particles p = pd::discretize(scene);
   const double A[2][2] = {{1.3e-3, -0.7e-3}, {0.4e-3, -2.1e-3}}, b[2] = {0.01, -0.02};
   auto field = [&](const double* x) {
-    return std::array<double, 3>{A[0][0] * x[0] + A[0][1] * x[1] + b[0], A[1][0] * x[0] + A[1][1] * x[1] + b[1], 0.0};
+    return std::array<double, 3>{A[0][0] * x[0] + A[0][1] * x[1] + b[0],
+                                 A[1][0] * x[0] + A[1][1] * x[1] + b[1], 0.0};
   };
-  struct Face { double xmin, xmax, ymin, ymax, px, py, nx, ny; };
-  const Face faces[] = {{-1, 0, -1, 2, 0, 0, -1, 0}, {0, 2, -1, 0, 0, 0, 0, -1}, {1, 2, 0, 2, 1, 0, 1, 0}, {0, 1, 1, 2, 0, 1, 0, 1}};
+  struct Face {
+    double xmin, xmax, ymin, ymax, px, py, nx, ny;
+  };
+  const Face faces[] = {{-1, 0, -1, 2, 0, 0, -1, 0},
+                        {0, 2, -1, 0, 0, 0, 0, -1},
+                        {1, 2, 0, 2, 1, 0, 1, 0},
+                        {0, 1, 1, 2, 0, 1, 0, 1}};
   std::vector<char> layer_of(static_cast<std::size_t>(p.size()), 0);
   std::vector<pd::TiedDof> ties;
   for (const Face& f : faces) {
@@ -67,7 +83,8 @@ TEST(FictitiousLayer, DisplacementMirrorReproducesAnyLinearFieldExactly) {
     std::vector<char> target(static_cast<std::size_t>(p.size()), 1);
     for (int i = 0; i < p.size(); ++i) {
       const double* x = p.position(i);
-      if (x[0] > f.xmin && x[0] < f.xmax && x[1] > f.ymin && x[1] < f.ymax && !layer_of[i]) layer.push_back(i), layer_of[i] = 1, target[i] = 0;
+      if (x[0] > f.xmin && x[0] < f.xmax && x[1] > f.ymin && x[1] < f.ymax && !layer_of[i])
+        layer.push_back(i), layer_of[i] = 1, target[i] = 0;
     }
     pd::LayerCondition c;
     c.face.point = {f.px, f.py, 0};
@@ -83,7 +100,8 @@ TEST(FictitiousLayer, DisplacementMirrorReproducesAnyLinearFieldExactly) {
     double v = t.offset;
     for (std::size_t k = 0; k < t.masters.size(); ++k) {
       const int m = t.masters[k];
-      EXPECT_TRUE(in_body(p.position(m / 2))) << "master " << m << " of dof " << t.dof << " is not a body dof";
+      EXPECT_TRUE(in_body(p.position(m / 2)))
+          << "master " << m << " of dof " << t.dof << " is not a body dof";
       v += t.coefficients[k] * field(p.position(m / 2))[m % 2];
     }
     EXPECT_NEAR(v, field(p.position(t.dof / 2))[t.dof % 2], 1e-15) << "dof " << t.dof;
@@ -105,10 +123,12 @@ TEST(FictitiousLayer, TractionLayersReproduceTheUniaxialStressFieldAndHoldThePat
     // The body at the exact field; the layer from the ties.
     Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * p.size());
     for (int i = 0; i < p.size(); ++i)
-      if (in_body(p.position(i))) u[2 * i] = uniaxial(p.position(i))[0], u[2 * i + 1] = uniaxial(p.position(i))[1];
+      if (in_body(p.position(i)))
+        u[2 * i] = uniaxial(p.position(i))[0], u[2 * i + 1] = uniaxial(p.position(i))[1];
     dofs.apply_prescribed(u, 1.0);
     for (int i = 0; i < p.size(); ++i)
-      for (int c = 0; c < 2; ++c) EXPECT_NEAR(u[2 * i + c], uniaxial(p.position(i))[c], 1e-16) << "particle " << i;
+      for (int c = 0; c < 2; ++c)
+        EXPECT_NEAR(u[2 * i + c], uniaxial(p.position(i))[c], 1e-16) << "particle " << i;
     pd::PeridynamicSystem sys(*model.assembler, {});
     Eigen::VectorXd r;
     sys.residual(u, 1.0, r);
@@ -118,7 +138,8 @@ TEST(FictitiousLayer, TractionLayersReproduceTheUniaxialStressFieldAndHoldThePat
     Eigen::VectorXd pt_r = dofs.restrict_free(r);  // P^T r: the free rows plus coefficient x the tied rows
     for (const auto& t : dofs.ties())
       for (std::size_t k = 0; k < t.masters.size(); ++k)
-        if (dofs.free_index(t.masters[k]) >= 0) pt_r[dofs.free_index(t.masters[k])] += t.coefficients[k] * r[t.dof];
+        if (dofs.free_index(t.masters[k]) >= 0)
+          pt_r[dofs.free_index(t.masters[k])] += t.coefficients[k] * r[t.dof];
     body = dofs.restrict_free(r).cwiseAbs().maxCoeff();
     galerkin = pt_r.cwiseAbs().maxCoeff();
     EXPECT_LT(body, 1e-10 * scale);
@@ -170,7 +191,8 @@ TEST(FictitiousLayer, ReducedTangentAndJvpEqualFiniteDifferences) {
   for (int i = 0; i < v.size(); ++i) v[i] = std::sin(0.3 * i + 1);
   dofs.expand_free(v, v_full);
   sys.jvp(full(uf), 1.0, v_full, Kv);
-  EXPECT_LT((dofs.restrict_free(Kv) - Kff * v).cwiseAbs().maxCoeff(), 1e-12 * (Kff * v).cwiseAbs().maxCoeff());
+  EXPECT_LT((dofs.restrict_free(Kv) - Kff * v).cwiseAbs().maxCoeff(),
+            1e-12 * (Kff * v).cwiseAbs().maxCoeff());
 }
 
 TEST(FictitiousLayer, StaticSolveGivesTheUniaxialStressSolution) {
@@ -178,14 +200,17 @@ TEST(FictitiousLayer, StaticSolveGivesTheUniaxialStressSolution) {
     for (const std::string law : {"oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
       SCOPED_TRACE(law + " " + solver);
       std::string text = square_scene(law);
-      if (!solver.empty()) text.replace(text.find("solver: {tolerance: 1.0e-12}\n"), std::string::npos, "solver:\n  tolerance: 1.0e-12\n" + solver);
+      if (!solver.empty())
+        text.replace(text.find("solver: {tolerance: 1.0e-12}\n"), std::string::npos,
+                     "solver:\n  tolerance: 1.0e-12\n" + solver);
       pd::Simulation sim(pd::parse_scene(text, "square.yaml"), [](const std::string&) {});
       const pd::RunSummary s = sim.run(false);
       ASSERT_TRUE(s.newton.converged) << s.newton.message;
       const pd::Particles& p = sim.particles();
       double worst = 0;
       for (int i = 0; i < p.size(); ++i)
-        for (int c = 0; c < 2; ++c) worst = std::max(worst, std::abs(sim.displacement()[2 * i + c] - uniaxial(p.position(i))[c]));
+        for (int c = 0; c < 2; ++c)
+          worst = std::max(worst, std::abs(sim.displacement()[2 * i + c] - uniaxial(p.position(i))[c]));
       EXPECT_LT(worst, 1e-8 * kSigma / kE);
     }
   }
@@ -204,10 +229,12 @@ TEST(FictitiousLayer, SceneErrorsNameTheCondition) {
     EXPECT_NE(std::string(e.what()).find("square.yaml:"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("boundary[0]"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(pd::parse_scene(square_scene("silling_plane_strain").replace(
-                                   square_scene("silling_plane_strain").find("method: fictitious_layer"), 24, "method: mirror"),
-                               "square.yaml"),
-               pd::SceneError);
+  EXPECT_THROW(
+      pd::parse_scene(square_scene("silling_plane_strain")
+                          .replace(square_scene("silling_plane_strain").find("method: fictitious_layer"), 24,
+                                   "method: mirror"),
+                      "square.yaml"),
+      pd::SceneError);
 }
 
 TEST(FictitiousLayer, RelaxationAndExplicitDynamicsApplyTheMapEachStep) {
@@ -215,29 +242,35 @@ TEST(FictitiousLayer, RelaxationAndExplicitDynamicsApplyTheMapEachStep) {
   // uniaxial-stress solution (a layer frozen at its first values would give another answer).
   {
     std::string text = square_scene("oterkus_plane_strain");
-    text += "dynamics: {method: relaxation, tolerance: 1.0e-9, steps: 200000, output_every: 1000, progress_seconds: 0}\n";
+    text +=
+        "dynamics: {method: relaxation, tolerance: 1.0e-9, steps: 200000, output_every: 1000, "
+        "progress_seconds: 0}\n";
     pd::DynamicSimulation sim(pd::parse_scene(text, "square.yaml"), [](const std::string&) {});
     const pd::RunSummary s = sim.run(false);
     ASSERT_TRUE(s.dynamics && s.dynamics->converged);
     double worst = 0;
     for (int i = 0; i < sim.particles().size(); ++i)
       for (int c = 0; c < 2; ++c)
-        worst = std::max(worst, std::abs(sim.displacement()[2 * i + c] - uniaxial(sim.particles().position(i))[c]));
+        worst = std::max(worst,
+                         std::abs(sim.displacement()[2 * i + c] - uniaxial(sim.particles().position(i))[c]));
     EXPECT_LT(worst, 1e-5 * kSigma / kE);
   }
   // Explicit: the body starts at the static solution at rest, the layer from the ties at
   // t = 0; an equilibrium, so nothing moves over 200 steps.
   {
     std::string text = square_scene("oterkus_plane_strain");
-    text += "dynamics:\n  method: explicit\n  steps: 200\n  output_every: 200\n  progress_seconds: 0\n"
-            "  initial:\n    - {region: {box: {min: [0, 0], max: [1, 1]}}, gradient: [[0.001, 0], [0, -0.00025]], origin: [0, 0]}\n";
+    text +=
+        "dynamics:\n  method: explicit\n  steps: 200\n  output_every: 200\n  progress_seconds: 0\n"
+        "  initial:\n    - {region: {box: {min: [0, 0], max: [1, 1]}}, gradient: [[0.001, 0], [0, "
+        "-0.00025]], origin: [0, 0]}\n";
     text.replace(text.find("materials:\n  - {E: 1,"), 22, "materials:\n  - {density: 1, E: 1,");
     pd::DynamicSimulation sim(pd::parse_scene(text, "square.yaml"), [](const std::string&) {});
     sim.run(false);
     double worst = 0;
     for (int i = 0; i < sim.particles().size(); ++i)
       for (int c = 0; c < 2; ++c)
-        worst = std::max(worst, std::abs(sim.displacement()[2 * i + c] - uniaxial(sim.particles().position(i))[c]));
+        worst = std::max(worst,
+                         std::abs(sim.displacement()[2 * i + c] - uniaxial(sim.particles().position(i))[c]));
     EXPECT_LT(worst, 1e-9 * kSigma / kE);  // rounding: the patch-test residual is 1e-10 of the forces
   }
 }

@@ -41,7 +41,8 @@ TEST(HardCases, FiftyPercentStretchConvergesQuadratically) {
     ASSERT_GE(res.size(), 4u);
     double best = 0;
     for (std::size_t k = 2; k < res.size(); ++k)
-      if (res[k] > 1e-13) best = std::max(best, std::log(res[k] / res[k - 1]) / std::log(res[k - 1] / res[k - 2]));
+      if (res[k] > 1e-13)
+        best = std::max(best, std::log(res[k] / res[k - 1]) / std::log(res[k - 1] / res[k - 2]));
     EXPECT_GT(best, 1.7) << law;
   }
 }

@@ -23,7 +23,8 @@ pd::RunSummary solve_inclusion(int count, const std::string& law = "", double nu
     s.materials[0].elastic = pd::IsotropicElastic::from_E_nu(1, nu);
     s.materials[1].elastic = pd::IsotropicElastic::from_E_nu(10, nu);
     for (auto& m : s.materials) m.parameters["stab"] = 1;
-    for (pd::FieldSpec* f : {&s.boundary[0].field, &*s.reference}) f->parameters["E_inclusion"] = 10, f->parameters["nu_inclusion"] = nu;
+    for (pd::FieldSpec* f : {&s.boundary[0].field, &*s.reference})
+      f->parameters["E_inclusion"] = 10, f->parameters["nu_inclusion"] = nu;
   }
   const double inner = 1 - s.delta();  // the collar stays one horizon thick
   s.boundary[0].region.min = {-inner, -inner, 0};
@@ -48,7 +49,8 @@ TEST(Inclusion, StiffInclusionConvergesToTheExactField) {
 
 TEST(Inclusion, NearIncompressibleInclusionConvergesAtLeastAtFirstOrder) {
   // Measured (docs/stability.md): e(20^2) / e(40^2) = 10.6, 9.2 and 4.7.
-  for (const char* law : {"silling_plane_strain", "lps_corrected_plane_strain", "correspondence_silling_plane_strain"}) {
+  for (const char* law :
+       {"silling_plane_strain", "lps_corrected_plane_strain", "correspondence_silling_plane_strain"}) {
     const pd::RunSummary coarse = solve_inclusion(20, law, 0.495), fine = solve_inclusion(40, law, 0.495);
     ASSERT_TRUE(coarse.newton.converged && fine.newton.converged) << law;
     EXPECT_LT(fine.field_error, coarse.field_error / 4) << law;  // eq. (48) is squared: 4 for first order

@@ -100,10 +100,12 @@ TEST(Interrupt, SignalDuringTheSolveStopsCleanlyWithoutFiles) {
   const fs::path dir = fresh_directory("pd_interrupt");
   const fs::path scene = dir / "long.yaml", out = dir / "out";
   std::ofstream(scene) << kLongScene;
-  for (const auto& [sig, status, name] : {std::tuple{SIGINT, 130, "SIGINT"}, std::tuple{SIGTERM, 143, "SIGTERM"}}) {
+  for (const auto& [sig, status, name] :
+       {std::tuple{SIGINT, 130, "SIGINT"}, std::tuple{SIGTERM, 143, "SIGTERM"}}) {
     const Outcome o = interrupt_pd(scene, out, dir / "stderr.txt", sig);
     EXPECT_EQ(o.status, status) << name << "\n" << o.stderr_text;
-    EXPECT_NE(o.stderr_text.find(std::string("interrupted by ") + name + " during the solve (load step"), std::string::npos)
+    EXPECT_NE(o.stderr_text.find(std::string("interrupted by ") + name + " during the solve (load step"),
+              std::string::npos)
         << o.stderr_text;
     EXPECT_NE(o.stderr_text.find("no result files were written"), std::string::npos) << o.stderr_text;
     if (fs::exists(out))
@@ -130,7 +132,8 @@ TEST(Interrupt, SignalBeforeTheOutputsDropsThemAndTheirTemporaries) {
     ADD_FAILURE() << "the run was not interrupted";
   } catch (const pd::Interrupted& e) {
     EXPECT_EQ(e.signal(), SIGINT);
-    EXPECT_NE(std::string(e.what()).find("interrupted by SIGINT during the solve (load step 1/2, Newton iteration 0)"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "interrupted by SIGINT during the solve (load step 1/2, Newton iteration 0)"),
               std::string::npos)
         << e.what();
   }

@@ -14,10 +14,9 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <thread>
-
-#include <regex>
 
 #include "output/output_directory.hpp"
 #include "temp_files.hpp"
@@ -29,11 +28,16 @@ namespace {
 // (12, 1) solves in a moment; (30, 10^6) runs far longer than a test waits.
 std::string stretch_scene(int count, double top, int load_steps) {
   return "dimension: 2\n"
-         "domain: {box: {min: [0, 0], max: [1, 1]}, count: " + std::to_string(count) + "}\n"
+         "domain: {box: {min: [0, 0], max: [1, 1]}, count: " +
+         std::to_string(count) +
+         "}\n"
          "law: silling_plane_strain\ninfluence: cubic\nmaterials: [{E: 1, nu: 0.25}]\n"
          "boundary:\n  - {region: {side: bottom}, fixed: [x, y]}\n"
-         "  - {region: {side: top}, displacement: {x: 0, y: " + std::to_string(top) + "}}\n"
-         "solver: {load_steps: " + std::to_string(load_steps) + "}\n";
+         "  - {region: {side: top}, displacement: {x: 0, y: " +
+         std::to_string(top) +
+         "}}\n"
+         "solver: {load_steps: " +
+         std::to_string(load_steps) + "}\n";
 }
 const std::string kScene = stretch_scene(12, 0.01, 1), kLongScene = stretch_scene(30, 0.3, 1000000);
 
@@ -45,8 +49,8 @@ fs::path fresh_directory(const std::string& name) {
 using pd::test::read_text;
 
 struct Child {
-  bool unprivileged = false;      // as root: run pd as nobody, so permissions apply
-  long file_size_limit = -1;      // RLIMIT_FSIZE in bytes: writes past it fail (EFBIG), as on a full disk
+  bool unprivileged = false;  // as root: run pd as nobody, so permissions apply
+  long file_size_limit = -1;  // RLIMIT_FSIZE in bytes: writes past it fail (EFBIG), as on a full disk
 };
 struct Outcome {
   int status = -1;
@@ -56,7 +60,8 @@ struct Outcome {
 pid_t start_pd(const fs::path& scene, const fs::path& out, const fs::path& dir, const Child& c) {
   const pid_t pid = fork();
   if (pid == 0) {
-    if (freopen((dir / "stdout.txt").c_str(), "w", stdout) == nullptr || freopen((dir / "stderr.txt").c_str(), "w", stderr) == nullptr)
+    if (freopen((dir / "stdout.txt").c_str(), "w", stdout) == nullptr ||
+        freopen((dir / "stderr.txt").c_str(), "w", stderr) == nullptr)
       _exit(99);
     if (c.file_size_limit >= 0) {
       std::signal(SIGXFSZ, SIG_IGN);  // the write then fails with EFBIG instead of killing pd
@@ -103,7 +108,8 @@ TEST(OutputDirectory, AWritableDirectoryRunsAndKeepsNoLockOrProbe) {
   for (const auto& e : fs::directory_iterator(out)) {
     const std::string name = e.path().filename().string();
     // .pd.files: the list of the run's files, read by the next run into the directory (output/staging.hpp)
-    EXPECT_TRUE(name == "result.vtu" || name == "result.csv" || name == "summary.json" || name == ".pd.files") << "left " << name;
+    EXPECT_TRUE(name == "result.vtu" || name == "result.csv" || name == "summary.json" || name == ".pd.files")
+        << "left " << name;
   }
   fs::remove_all(dir);
 }
@@ -111,11 +117,14 @@ TEST(OutputDirectory, AWritableDirectoryRunsAndKeepsNoLockOrProbe) {
 TEST(OutputDirectory, AReadOnlyDirectoryStopsTheRunBeforeTheSolve) {
   const fs::path dir = fresh_directory("pd_outdir_ro"), out = dir / "out";
   fs::create_directories(out);
-  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read | fs::perms::group_exec |
-                           fs::perms::others_read | fs::perms::others_exec);
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                           fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
   const Outcome o = run_pd(kScene, out, dir, {.unprivileged = true});
   EXPECT_EQ(o.status, 2) << o.out << o.err;
-  EXPECT_NE(o.err.find("output directory " + out.string() + ": cannot create a file in it: Permission denied"), std::string::npos) << o.err;
+  EXPECT_NE(
+      o.err.find("output directory " + out.string() + ": cannot create a file in it: Permission denied"),
+      std::string::npos)
+      << o.err;
   EXPECT_TRUE(stopped_before_the_solve(o)) << o.out;
   EXPECT_TRUE(fs::is_empty(out));
   fs::permissions(out, fs::perms::all);
@@ -127,7 +136,9 @@ TEST(OutputDirectory, AFileGivenAsOutStopsTheRunBeforeTheSolve) {
   std::ofstream(out) << "keep me\n";
   const Outcome o = run_pd(kScene, out, dir);
   EXPECT_EQ(o.status, 2) << o.out << o.err;
-  EXPECT_NE(o.err.find("output directory " + out.string() + ": exists and is not a directory"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("output directory " + out.string() + ": exists and is not a directory"),
+            std::string::npos)
+      << o.err;
   EXPECT_TRUE(stopped_before_the_solve(o)) << o.out;
   EXPECT_EQ(read_text(out), "keep me\n");
   fs::remove_all(dir);
@@ -139,7 +150,9 @@ TEST(OutputDirectory, ADiskThatRefusesWritesStopsTheRunBeforeTheSolve) {
   const fs::path dir = fresh_directory("pd_outdir_full"), out = dir / "out";
   const Outcome o = run_pd(kScene, out, dir, {.file_size_limit = 1000});
   EXPECT_EQ(o.status, 2) << o.out << o.err;
-  EXPECT_NE(o.err.find("output directory " + out.string() + ": cannot write to it: File too large"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("output directory " + out.string() + ": cannot write to it: File too large"),
+            std::string::npos)
+      << o.err;
   EXPECT_NE(o.err.find("MB free"), std::string::npos) << o.err;
   EXPECT_TRUE(stopped_before_the_solve(o)) << o.out;
   EXPECT_FALSE(fs::exists(out)) << "the directory pd created for the run was left behind";
@@ -152,13 +165,16 @@ TEST(OutputDirectory, ASecondRunIntoTheSameDirectoryIsRefusedNamingTheFirst) {
   fs::create_directories(first_dir), fs::create_directories(second_dir);
   std::ofstream(dir / "long.yaml") << kLongScene;
   const pid_t first = start_pd(dir / "long.yaml", out, first_dir, {});
-  for (int i = 0; i < 1000 && !fs::exists(out / ".pd.lock"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int i = 0; i < 1000 && !fs::exists(out / ".pd.lock"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_TRUE(fs::exists(out / ".pd.lock"));
   const Outcome second = run_pd(kScene, out, second_dir);
   kill(first, SIGTERM);
   const Outcome o1 = wait_pd(first, first_dir);
   EXPECT_EQ(second.status, 2) << second.out << second.err;
-  EXPECT_NE(second.err.find("output directory " + out.string() + ": another run (pid " + std::to_string(first)), std::string::npos)
+  EXPECT_NE(
+      second.err.find("output directory " + out.string() + ": another run (pid " + std::to_string(first)),
+      std::string::npos)
       << second.err;
   EXPECT_TRUE(stopped_before_the_solve(second)) << second.out;
   EXPECT_EQ(o1.status, 143) << o1.err;
@@ -172,7 +188,8 @@ TEST(OutputDirectory, TheClaimIsExclusiveWithinAProcessToo) {
   const fs::path dir = fresh_directory("pd_outdir_claim");
   {
     const pd::OutputDirectoryClaim first(dir.string());
-    EXPECT_THROW(pd::OutputDirectoryClaim second(dir.string()), pd::OutputDirectoryError);  // flock: per open file
+    EXPECT_THROW(pd::OutputDirectoryClaim second(dir.string()),
+                 pd::OutputDirectoryError);  // flock: per open file
   }
   EXPECT_NO_THROW(pd::OutputDirectoryClaim again(dir.string()));
   EXPECT_TRUE(fs::is_empty(dir));
@@ -183,11 +200,15 @@ namespace {
 // A dynamic bar with a snapshot every 10 steps; steps = 10^7 runs far longer than a test waits.
 std::string dynamic_scene(long steps) {
   return "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 0.1]}, spacing: 0.025}\nhorizon: {ratio: 3.0}\n"
-         "law: silling_plane_strain\ninfluence: const\nmaterials: [{name: bar, E: 1.0, nu: 0.0, density: 1.0}]\n"
+         "law: silling_plane_strain\ninfluence: const\nmaterials: [{name: bar, E: 1.0, nu: 0.0, density: "
+         "1.0}]\n"
          "boundary:\n  - {region: {all: true}, fixed: [y]}\n"
-         "dynamics:\n  method: explicit\n  steps: " + std::to_string(steps) + "\n  output_every: 10\n  snapshot_every: 10\n"
+         "dynamics:\n  method: explicit\n  steps: " +
+         std::to_string(steps) +
+         "\n  output_every: 10\n  snapshot_every: 10\n"
          "  checkpoint_every: 10\n  threads: 1\n"
-         "  initial:\n    - {region: {all: true}, displacement: [1.0e-3, 0], gaussian: {axis: x, center: 0.5, width: 0.1}}\n";
+         "  initial:\n    - {region: {all: true}, displacement: [1.0e-3, 0], gaussian: {axis: x, center: "
+         "0.5, width: 0.1}}\n";
 }
 std::string run_id_in(const fs::path& file) {
   std::smatch m;

@@ -34,7 +34,8 @@ double order(double e_coarse, double e_fine) { return std::log(e_coarse / e_fine
 }  // namespace
 
 TEST(Paper000, SillingConvergesAtFirstOrderOnBiaxialCompression) {
-  const double e10 = probe_error("biaxial.yaml", 10), e20 = probe_error("biaxial.yaml", 20), e40 = probe_error("biaxial.yaml", 40);
+  const double e10 = probe_error("biaxial.yaml", 10), e20 = probe_error("biaxial.yaml", 20),
+               e40 = probe_error("biaxial.yaml", 40);
   EXPECT_GT(order(e10, e20), 0.8);
   EXPECT_GT(order(e20, e40), 0.8);
   EXPECT_LT(order(e20, e40), 1.3);
@@ -47,7 +48,8 @@ TEST(Paper000, SillingDoesNotConvergeOnSimpleShear) {
 }
 
 TEST(Paper000, SillingStallsOnUniaxialCompression) {
-  const double e10 = probe_error("uniaxial.yaml", 10), e20 = probe_error("uniaxial.yaml", 20), e40 = probe_error("uniaxial.yaml", 40);
+  const double e10 = probe_error("uniaxial.yaml", 10), e20 = probe_error("uniaxial.yaml", 20),
+               e40 = probe_error("uniaxial.yaml", 40);
   // The observed order falls with refinement (the error tends to a nonzero limit).
   EXPECT_LT(order(e20, e40), order(e10, e20));
   EXPECT_LT(order(e20, e40), 0.7);
@@ -86,8 +88,10 @@ TEST(Paper000, MatrixFreeCrackSolvesAgreeWithCholmod) {
   std::vector<double> u_direct, u_jacobi, u_shorter;
   const pd::RunSummary direct = solve(pd::LinearMethod::cholmod, pd::Preconditioner::automatic, u_direct);
   const pd::RunSummary jacobi = solve(pd::LinearMethod::matrix_free, pd::Preconditioner::diagonal, u_jacobi);
-  const pd::RunSummary shorter = solve(pd::LinearMethod::matrix_free, pd::Preconditioner::short_horizon, u_shorter);
-  for (const pd::RunSummary* r : {&direct, &jacobi, &shorter}) ASSERT_TRUE(r->newton.converged) << r->newton.message;
+  const pd::RunSummary shorter =
+      solve(pd::LinearMethod::matrix_free, pd::Preconditioner::short_horizon, u_shorter);
+  for (const pd::RunSummary* r : {&direct, &jacobi, &shorter})
+    ASSERT_TRUE(r->newton.converged) << r->newton.message;
   EXPECT_EQ(jacobi.newton.linear_solver, "matrix-free cg+jacobi");
   EXPECT_EQ(shorter.newton.linear_solver.rfind("matrix-free cg+", 0), 0u);
   EXPECT_NE(shorter.newton.linear_solver, "matrix-free cg+jacobi");

@@ -45,7 +45,8 @@ namespace {
 // particles along a side, Silling's law, cubic influence, delta = 3.5 h, the law's
 // reproducing space: the largest probe error (biaxial has two probes).
 double block_error(const std::string& problem, int n, bool symmetric) {
-  pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/studies/constant_strain_obq/" + problem + "_cut_law.yaml");
+  pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/studies/constant_strain_obq/" + problem +
+                               "_cut_law.yaml");
   s.h = (s.hi[0] - s.lo[0]) / n;
   s.horizon_ratio = 3.5;
   s.obq_symmetric = symmetric;
@@ -74,7 +75,8 @@ TEST(Paper001Scene, SymmetricPairWeightsTakeTheCholeskyPathAndPlainCollocationDo
   // domain.obq_symmetric makes the stiffness symmetric (tests/runtime/test_collocation.cpp),
   // so `auto` factorises it with CHOLMOD; the answer is UMFPACK's on the same system.
   // Paper 000's uniaxial block, Silling, the law's space, n = 20, delta = 3.5 h.
-  pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/studies/constant_strain_obq/uniaxial_cut_law_sym.yaml");
+  pd::Scene s =
+      pd::read_scene(std::string(PD_SOURCE_DIR) + "/studies/constant_strain_obq/uniaxial_cut_law_sym.yaml");
   s.horizon_ratio = 3.5;
   pd::Simulation sym(s, [](const std::string&) {});
   const pd::RunSummary r = sym.run(false);
@@ -128,5 +130,6 @@ TEST(Paper001Scene, RmsErrorOverTheFreeParticlesMatchesEquation48) {
   EXPECT_GT(r.rms_particles, 0);
   EXPECT_LT(r.rms_particles, P.size());
   EXPECT_GT(r.rms_error, 0.0);
-  EXPECT_NEAR(r.rms_error * r.rms_error * r.rms_particles, r.field_error * norm, 1e-12 * r.field_error * norm);
+  EXPECT_NEAR(r.rms_error * r.rms_error * r.rms_particles, r.field_error * norm,
+              1e-12 * r.field_error * norm);
 }

@@ -34,7 +34,9 @@ Outcome confined_tension(const std::string& law, double perturbation, int count)
   probe.region.side = "top";
   probe.reference->parameters["traction"] = 0.001;
   Outcome o;
-  pd::Simulation sim(s, [&](const std::string& line) { o.warned = o.warned || line.find("warning: zero-energy modes") != std::string::npos; });
+  pd::Simulation sim(s, [&](const std::string& line) {
+    o.warned = o.warned || line.find("warning: zero-energy modes") != std::string::npos;
+  });
   const pd::RunSummary r = sim.run(false);
   EXPECT_TRUE(r.newton.converged) << law;
   o.relative_error = r.probes.at(0).error / 1e-5;  // analytic u_y(H) = T H / E = 1e-5 mm

@@ -15,13 +15,14 @@
 
 namespace {
 std::string scene_text(const std::string& law, double angle, double stretch) {
-  const std::string field = "{solution: rotation, angle: " + std::to_string(angle) + ", stretch: " + std::to_string(stretch) +
-                            ", x0: 0.5, y0: 0.5}";
+  const std::string field = "{solution: rotation, angle: " + std::to_string(angle) +
+                            ", stretch: " + std::to_string(stretch) + ", x0: 0.5, y0: 0.5}";
   // h = 1/18, delta = 3h = 1/6: the collar is two horizons thick.
-  return "dimension: 2\ndomain:\n  box: {min: [0, 0], max: [1, 1]}\n  count: 18\nhorizon: {ratio: 3}\nlaw: " + law +
+  return "dimension: 2\ndomain:\n  box: {min: [0, 0], max: [1, 1]}\n  count: 18\nhorizon: {ratio: 3}\nlaw: " +
+         law +
          "\ninfluence: cubic\nmaterials: [{E: 1, nu: 0.25, parameters: {stab: 1, hourglass: 1}}]\nboundary:\n"
-         "  - region: {outside: {min: [0.3333333, 0.3333333], max: [0.6666667, 0.6666667]}}\n    field: " + field +
-         "\nreference: " + field + "\nsolver: {load_steps: 3, tolerance: 1e-12}\n";
+         "  - region: {outside: {min: [0.3333333, 0.3333333], max: [0.6666667, 0.6666667]}}\n    field: " +
+         field + "\nreference: " + field + "\nsolver: {load_steps: 3, tolerance: 1e-12}\n";
 }
 
 double max_abs(const std::vector<double>& v) {
@@ -45,15 +46,19 @@ double force_at(const pd::Simulation& sim, const pd::FieldSpec& field) {
 
 // The force scale: the largest internal force under a 1% isotropic stretch.
 double stretch_scale(const pd::Simulation& sim) {
-  return force_at(sim, pd::FieldSpec{"rotation", {{"angle", 0.0}, {"stretch", 0.01}, {"x0", 0.5}, {"y0", 0.5}}});
+  return force_at(sim,
+                  pd::FieldSpec{"rotation", {{"angle", 0.0}, {"stretch", 0.01}, {"x0", 0.5}, {"y0", 0.5}}});
 }
 }  // namespace
 
 TEST(Rotations, ObjectiveLawsFollowRotationsUpTo90DegreesWithoutInternalForce) {
   for (const char* law : {"silling_plane_strain", "oterkus_plane_strain", "bond_based_conical_2d"})
-    for (const auto& [angle, stretch] : {std::pair{30.0, 0.0}, std::pair{60.0, 0.0}, std::pair{90.0, 0.0}, std::pair{90.0, 0.1}}) {
-      const std::string what = std::string(law) + " angle " + std::to_string(angle) + " stretch " + std::to_string(stretch);
-      pd::Simulation sim(pd::parse_scene(scene_text(law, angle, stretch), "rotation.yaml"), [](const std::string&) {});
+    for (const auto& [angle, stretch] :
+         {std::pair{30.0, 0.0}, std::pair{60.0, 0.0}, std::pair{90.0, 0.0}, std::pair{90.0, 0.1}}) {
+      const std::string what =
+          std::string(law) + " angle " + std::to_string(angle) + " stretch " + std::to_string(stretch);
+      pd::Simulation sim(pd::parse_scene(scene_text(law, angle, stretch), "rotation.yaml"),
+                         [](const std::string&) {});
       pd::RunSummary r;
       try {
         r = sim.run(false);
@@ -80,6 +85,7 @@ TEST(Rotations, LinearStrainLawsAreNotObjective) {
     EXPECT_GT(force_at(sim, *sim.scene().reference), 1.0 * stretch_scale(sim)) << law;
   }
   // The same measure for an objective law, as a control.
-  pd::Simulation sim(pd::parse_scene(scene_text("silling_plane_strain", 30, 0), "rotation.yaml"), [](const std::string&) {});
+  pd::Simulation sim(pd::parse_scene(scene_text("silling_plane_strain", 30, 0), "rotation.yaml"),
+                     [](const std::string&) {});
   EXPECT_LT(force_at(sim, *sim.scene().reference), 1e-9 * stretch_scale(sim));
 }

@@ -5,14 +5,13 @@
 // unlike the paper's (explained there). Also checks the cache: a second run reads every
 // point from disk. The study file, its spec errors and the crack study's file too.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
-
-#include <unistd.h>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -45,7 +44,8 @@ int csv_rows(const std::string& path) {
 }  // namespace
 
 TEST(Study, FitOrderRecoversAPowerLaw) {
-  const std::vector<double> h{0.4, 0.2, 0.1, 0.05}, e{3 * std::pow(0.4, 1.7), 3 * std::pow(0.2, 1.7), 3 * std::pow(0.1, 1.7), -1};
+  const std::vector<double> h{0.4, 0.2, 0.1, 0.05},
+      e{3 * std::pow(0.4, 1.7), 3 * std::pow(0.2, 1.7), 3 * std::pow(0.1, 1.7), -1};
   int used = 0;
   EXPECT_NEAR(pd::fit_order(h, e, &used), 1.7, 1e-12);
   EXPECT_EQ(used, 3);  // the non-positive error is skipped
@@ -59,7 +59,8 @@ TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
   std::filesystem::remove_all(out);
   int lines = 0;
   const auto orders = pd::run_study(spec, out, true, [&](const std::string&) { ++lines; });
-  auto find = [&](const std::string& problem, const std::string& law, double ratio) -> const pd::SeriesOrder* {
+  auto find = [&](const std::string& problem, const std::string& law,
+                  double ratio) -> const pd::SeriesOrder* {
     for (const auto& o : orders)
       if (o.problem == problem && o.law == law && o.ratio == ratio) return &o;
     ADD_FAILURE() << "no series " << problem << " " << law << " " << ratio;
@@ -69,7 +70,8 @@ TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
   const std::string F = "correspondence_plane_strain", S = "silling_plane_strain", O = "oterkus_plane_strain";
   const std::vector<std::pair<std::string, std::string>> converging{
       {"uniaxial", F}, {"shear", F}, {"biaxial", F}, {"biaxial", S}, {"shear", O}, {"biaxial", O}};
-  const std::vector<std::pair<std::string, std::string>> not_converging{{"uniaxial", S}, {"shear", S}, {"uniaxial", O}};
+  const std::vector<std::pair<std::string, std::string>> not_converging{
+      {"uniaxial", S}, {"shear", S}, {"uniaxial", O}};
   for (double ratio : spec.quick.ratios) {
     // Converging: first order, and the order between the finest two resolutions stays so.
     for (const auto& [problem, law] : converging) {
@@ -85,7 +87,8 @@ TEST(Study, QuickSweepReachesTheFullSweepConclusions) {
       const auto* o = find(problem, law, ratio);
       ASSERT_NE(o, nullptr) << "no series " << problem << " " << law << " " << ratio;
       EXPECT_TRUE(o->order < 0.2 || (o->order < 0.8 && o->fine_order < o->order))
-          << problem << " " << law << " " << ratio << ": order " << o->order << ", finest pair " << o->fine_order;
+          << problem << " " << law << " " << ratio << ": order " << o->order << ", finest pair "
+          << o->fine_order;
     }
   }
   EXPECT_TRUE(std::filesystem::exists(out + "/points.csv"));
@@ -112,13 +115,15 @@ TEST(Study, CrackStudyFileHasThePapersTables) {
   ASSERT_NE(it, spec.paper.end());
   EXPECT_DOUBLE_EQ(*it->second.order, 1.8022);
   EXPECT_DOUBLE_EQ(*it->second.min_error, 0.022);
-  const auto smoothed = spec.paper.find(pd::paper_key("crack", "correspondence_plane_strain", "cubic", 2.0, 200, "linear"));
+  const auto smoothed =
+      spec.paper.find(pd::paper_key("crack", "correspondence_plane_strain", "cubic", 2.0, 200, "linear"));
   ASSERT_NE(smoothed, spec.paper.end());
   EXPECT_DOUBLE_EQ(*smoothed->second.error, 0.0429);
   // Table 7's sweep asks for the three smoothings.
   bool table7 = false;
   for (const auto& w : spec.sweeps)
-    table7 = table7 || (w.counts == std::vector<int>{200} && w.smoothing == std::vector<std::string>{"const", "linear", "cubic"});
+    table7 = table7 || (w.counts == std::vector<int>{200} &&
+                        w.smoothing == std::vector<std::string>{"const", "linear", "cubic"});
   EXPECT_TRUE(table7);
 }
 
@@ -129,7 +134,8 @@ TEST(Study, CrackStudyFileHasThePapersTables) {
 // the study now asks for runs again; with it, it comes from the cache.
 TEST(Study, SmoothedErrorsAreRecordedAndCached) {
   const std::string scene_path = std::string(PD_SOURCE_DIR) + "/scenes/crack.yaml";
-  const std::string sweep = "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [40]\n";
+  const std::string sweep =
+      "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [3.0]\ncounts: [40]\n";
   const std::string out = scratch() + "/pd_study_smoothed";
   std::filesystem::remove_all(out);
   const auto plain = pd::read_study(write_study("plain.yaml", "problems: [" + scene_path + "]\n" + sweep));
@@ -137,8 +143,8 @@ TEST(Study, SmoothedErrorsAreRecordedAndCached) {
   ASSERT_EQ(first.size(), 1u);
   EXPECT_TRUE(first[0].smoothing.empty());
 
-  const auto spec = pd::read_study(write_study("smoothed.yaml", "problems: [" + scene_path + "]\n" + sweep +
-                                                                    "smoothing: [linear, cubic]\n"));
+  const auto spec = pd::read_study(write_study(
+      "smoothed.yaml", "problems: [" + scene_path + "]\n" + sweep + "smoothing: [linear, cubic]\n"));
   std::vector<std::string> lines;
   const auto orders = pd::run_study(spec, out, false, [&](const std::string& l) { lines.push_back(l); });
   ASSERT_EQ(orders.size(), 3u);  // unsmoothed, linear, cubic
@@ -184,10 +190,12 @@ TEST(Study, SmoothingNeedsABoundedInfluenceAndAReference) {
     }
     return std::string("no error");
   };
-  const std::string singular = message("smooth_inv.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [inv]\n");
+  const std::string singular =
+      message("smooth_inv.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [inv]\n");
   EXPECT_NE(singular.find("smooth_inv.yaml:6"), std::string::npos) << singular;
   EXPECT_NE(singular.find("singular at r = 0"), std::string::npos) << singular;
-  const std::string unknown = message("smooth_unknown.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [gauss]\n");
+  const std::string unknown =
+      message("smooth_unknown.yaml", "problems: [" + crack + "]\n" + sweep + "smoothing: [gauss]\n");
   EXPECT_NE(unknown.find("unknown influence function 'gauss'"), std::string::npos) << unknown;
   const std::string no_reference =
       message("smooth_noref.yaml", "problems: [" + uniaxial + "]\n" + sweep + "smoothing: [linear]\n");
@@ -199,13 +207,16 @@ TEST(Study, SmoothingNeedsABoundedInfluenceAndAReference) {
 // matrix-free (and say so), the others keep the scene's solver.
 TEST(Study, SweepsAreUnitedAndLargePointsRunMatrixFree) {
   const std::string scene = std::string(PD_SOURCE_DIR) + "/scenes/uniaxial.yaml";
-  const std::string path = write_study("overlap.yaml", "problems: [" + scene + "]\n"
-      "sweeps:\n"
-      "  - {laws: [silling_plane_strain], influences: [cubic], ratios: [3.0], counts: [6, 12]}\n"
-      "  - {laws: [silling_plane_strain], influences: [cubic], ratios: [3.0], counts: [12, 16]}\n"
-      // 12 x 12 x pi x 9 = 4072 estimated bonds: 12 and 16 run matrix-free, 6 does not.
-      "matrix_free_from_bonds: 4000\n"
-      "fine_points: 2\n");
+  const std::string path = write_study(
+      "overlap.yaml",
+      "problems: [" + scene +
+          "]\n"
+          "sweeps:\n"
+          "  - {laws: [silling_plane_strain], influences: [cubic], ratios: [3.0], counts: [6, 12]}\n"
+          "  - {laws: [silling_plane_strain], influences: [cubic], ratios: [3.0], counts: [12, 16]}\n"
+          // 12 x 12 x pi x 9 = 4072 estimated bonds: 12 and 16 run matrix-free, 6 does not.
+          "matrix_free_from_bonds: 4000\n"
+          "fine_points: 2\n");
   const auto spec = pd::read_study(path);
   const std::string out = scratch() + "/pd_study_overlap";
   std::filesystem::remove_all(out);
@@ -223,11 +234,14 @@ TEST(Study, SweepsAreUnitedAndLargePointsRunMatrixFree) {
 }
 
 TEST(Study, PaperEntriesNeedAValueAndSeriesValuesNeedNoCount) {
-  const std::string head = "problems: [x.yaml]\nlaws: [silling_plane_strain]\ninfluences: [cubic]\nratios: [3]\ncounts: [10]\n";
-  EXPECT_THROW(pd::read_study(write_study("bad1.yaml", head + "paper:\n  - {problem: x, law: l, influence: i, ratio: 3}\n")),
+  const std::string head =
+      "problems: [x.yaml]\nlaws: [silling_plane_strain]\ninfluences: [cubic]\nratios: [3]\ncounts: [10]\n";
+  EXPECT_THROW(pd::read_study(write_study(
+                   "bad1.yaml", head + "paper:\n  - {problem: x, law: l, influence: i, ratio: 3}\n")),
                pd::SceneError);
-  EXPECT_THROW(pd::read_study(write_study("bad2.yaml",
-                                          head + "paper:\n  - {problem: x, law: l, influence: i, ratio: 3, count: 10, order: 1}\n")),
+  EXPECT_THROW(pd::read_study(write_study(
+                   "bad2.yaml",
+                   head + "paper:\n  - {problem: x, law: l, influence: i, ratio: 3, count: 10, order: 1}\n")),
                pd::SceneError);
   EXPECT_THROW(pd::read_study(write_study("bad3.yaml", head + "fine_points: 1\n")), pd::SceneError);
 }
@@ -237,8 +251,11 @@ TEST(Study, PaperEntriesNeedAValueAndSeriesValuesNeedNoCount) {
 // (docs/paper000.md section 3.3), while eq. (48) as printed is far below them.
 TEST(Study, PaperScaleCrackGivesTable7InTheNorm) {
   const std::string scene = std::string(PD_SOURCE_DIR) + "/scenes/crack_wide.yaml";
-  const auto spec = pd::read_study(write_study("crack_wide_t7.yaml", "problems: [" + scene + "]\n"
-      "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [1.5, 2.0]\ncounts: [200]\n"));
+  const auto spec = pd::read_study(write_study(
+      "crack_wide_t7.yaml",
+      "problems: [" + scene +
+          "]\n"
+          "laws: [correspondence_plane_strain]\ninfluences: [cubic]\nratios: [1.5, 2.0]\ncounts: [200]\n"));
   const std::string out = scratch() + "/pd_study_crack_wide";
   std::filesystem::remove_all(out);
   const auto orders = pd::run_study(spec, out, false, [](const std::string&) {});

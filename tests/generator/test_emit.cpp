@@ -1,10 +1,9 @@
 // The emitter: temporaries for shared nodes, one call per distinct sqrt/pow, powers as products.
 #include <gtest/gtest.h>
 
-#include <string>
-
 #include <regex>
 #include <set>
+#include <string>
 
 #include "pdgen/kernel_program.hpp"
 
@@ -31,9 +30,11 @@ KernelProgram scalar_program(const std::vector<std::pair<Expr, std::string>>& va
 TEST(Emit, SharedSqrtIsComputedOnce) {
   const Expr x = symbol("x"), y = symbol("y");
   const Expr r = sqrt(x * x + y * y);
-  const auto k = emit_kernel(scalar_program({{x, "x"}, {y, "y"}}, x / r + y / pow(r, 3) + pow(x * x + y * y, 1.5)));
+  const auto k =
+      emit_kernel(scalar_program({{x, "x"}, {y, "y"}}, x / r + y / pow(r, 3) + pow(x * x + y * y, 1.5)));
   std::regex call(R"(std::sqrt\([^;]*)");
-  EXPECT_EQ(std::distance(std::sregex_iterator(k.code.begin(), k.code.end(), call), std::sregex_iterator()), 1)
+  EXPECT_EQ(std::distance(std::sregex_iterator(k.code.begin(), k.code.end(), call), std::sregex_iterator()),
+            1)
       << k.code;
   EXPECT_EQ(k.code.find("std::pow"), std::string::npos) << k.code;
 }
@@ -60,8 +61,9 @@ TEST(Emit, KernelHeaderCarriesOperationCounts) {
   EXPECT_EQ(k.per_family.adds, occurrences(" + ") + occurrences(" - ")) << k.code;
   EXPECT_EQ(k.per_family.calls, 1) << k.code;
   EXPECT_EQ(k.per_family.divs, 1) << k.code;
-  EXPECT_NE(k.code.find("// f: per bond 0 add, 0 mul, 0 div, 0 call; per family " + std::to_string(k.per_family.adds) +
-                        " add, " + std::to_string(k.per_family.muls) + " mul, 1 div, 1 call"),
+  EXPECT_NE(k.code.find("// f: per bond 0 add, 0 mul, 0 div, 0 call; per family " +
+                        std::to_string(k.per_family.adds) + " add, " + std::to_string(k.per_family.muls) +
+                        " mul, 1 div, 1 call"),
             std::string::npos)
       << k.code;
 }
@@ -81,7 +83,6 @@ TEST(Emit, NodeUsedTwiceBecomesATemporary) {
 }
 
 TEST(Emit, DoublesRoundTrip) {
-  for (double v : {0.1, 1.0 / 3.0, 1e-300, 6.02214076e23, 2.0})
-    EXPECT_EQ(std::stod(cpp_double(v)), v);
+  for (double v : {0.1, 1.0 / 3.0, 1e-300, 6.02214076e23, 2.0}) EXPECT_EQ(std::stod(cpp_double(v)), v);
   EXPECT_EQ(cpp_double(2.0), "2.0");
 }

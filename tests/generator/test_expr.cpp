@@ -55,7 +55,8 @@ TEST(Expr, FoldingToNaNOrInfinityThrowsNamingTheOperation) {
   EXPECT_EQ(message([] { exp(Expr(1e6)); }), "constant folding: exp(1000000) folds to inf");
   EXPECT_EQ(message([] { Expr(1e308) * 1e308; }), "constant folding: a product of constants folds to inf");
   EXPECT_EQ(message([] { Expr(1e308) + 1e308; }), "constant folding: a sum of constants folds to inf");
-  EXPECT_EQ(message([&] { pow(r, std::numeric_limits<double>::infinity()); }), "constant folding: the exponent inf");
+  EXPECT_EQ(message([&] { pow(r, std::numeric_limits<double>::infinity()); }),
+            "constant folding: the exponent inf");
   // Finite folds are untouched.
   EXPECT_TRUE(sqrt(Expr(4.0)).is_const(2.0));
 }

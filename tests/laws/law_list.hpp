@@ -15,6 +15,8 @@ inline std::vector<const abi::LawDescriptor*> all_law_descriptors() {
   for (const auto& l : abi::all_laws()) v.push_back(&l);
   return v;
 }
-inline std::string law_name(const testing::TestParamInfo<const abi::LawDescriptor*>& info) { return info.param->name; }
+inline std::string law_name(const testing::TestParamInfo<const abi::LawDescriptor*>& info) {
+  return info.param->name;
+}
 
 }  // namespace pd::test

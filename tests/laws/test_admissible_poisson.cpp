@@ -20,13 +20,15 @@ TEST(AdmissiblePoisson, WarnsOnlyWhenTheMaterialDiffers) {
   const auto& bb2 = *pd::abi::find_law("bond_based_constant_2d");
   const auto& bb3 = *pd::abi::find_law("bond_based_conical_3d");
   const auto& silling = *pd::abi::find_law("silling_plane_strain");
-  const auto quarter = pd::IsotropicElastic::from_E_nu(1.0, 0.25), third = pd::IsotropicElastic::from_E_nu(1.0, 1.0 / 3);
+  const auto quarter = pd::IsotropicElastic::from_E_nu(1.0, 0.25),
+             third = pd::IsotropicElastic::from_E_nu(1.0, 1.0 / 3);
   const auto steel = pd::IsotropicElastic::from_E_nu(1.0, 0.3);
   EXPECT_FALSE(pd::poisson_ratio_warning(bb2, quarter, PlaneAssumption::Strain, "m"));
   EXPECT_FALSE(pd::poisson_ratio_warning(bb2, third, PlaneAssumption::Stress, "m"));
   EXPECT_FALSE(pd::poisson_ratio_warning(bb3, quarter, PlaneAssumption::None, "m"));
   EXPECT_FALSE(pd::poisson_ratio_warning(silling, steel, PlaneAssumption::Strain, "m"));  // K and G: any nu
-  EXPECT_TRUE(pd::poisson_ratio_warning(bb2, quarter, PlaneAssumption::Stress, "m"));     // 1/4 in plane stress is 1/5
+  EXPECT_TRUE(
+      pd::poisson_ratio_warning(bb2, quarter, PlaneAssumption::Stress, "m"));  // 1/4 in plane stress is 1/5
   EXPECT_TRUE(pd::poisson_ratio_warning(bb2, third, PlaneAssumption::Strain, "m"));
   const auto w = pd::poisson_ratio_warning(bb3, steel, PlaneAssumption::None, "rock");
   ASSERT_TRUE(w);

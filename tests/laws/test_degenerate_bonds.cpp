@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "verify/random_family.hpp"
 #include "law_list.hpp"
+#include "verify/random_family.hpp"
 
 using pd::verify::FamilyOptions;
 using pd::verify::make_family;
@@ -14,10 +14,9 @@ using pd::verify::TestFamily;
 namespace {
 class DegenerateBond : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
 
-
-
 void expect_finite(const std::vector<double>& v, const char* what, double gap) {
-  for (std::size_t i = 0; i < v.size(); ++i) ASSERT_TRUE(std::isfinite(v[i])) << what << "[" << i << "], gap " << gap;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    ASSERT_TRUE(std::isfinite(v[i])) << what << "[" << i << "], gap " << gap;
 }
 }  // namespace
 
@@ -41,4 +40,5 @@ TEST_P(DegenerateBond, CollapsedBondGivesFiniteResidualTangentAndJvp) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, DegenerateBond, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, DegenerateBond, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);

@@ -19,8 +19,8 @@ using pd::verify::Truncation;
 
 class FormKernel : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
 
-void expect_same_matrix(const pd::abi::LawDescriptor& law, const pd::abi::KernelVariant& v, const char* variant,
-                        Truncation t, bool broken) {
+void expect_same_matrix(const pd::abi::LawDescriptor& law, const pd::abi::KernelVariant& v,
+                        const char* variant, Truncation t, bool broken) {
   pd::verify::FamilyOptions o;
   o.dim = law.dim;
   o.horizon_ratio = law.dim == 2 ? 3.0 : 2.0;
@@ -38,7 +38,8 @@ void expect_same_matrix(const pd::abi::LawDescriptor& law, const pd::abi::Kernel
   v.form(f.view(), fac, generated.data());
   double largest = 0.0;
   for (std::size_t i = 0; i < generic.size(); ++i) {
-    ASSERT_EQ(generated[i], generic[i]) << law.name << " " << variant << " entry (" << i / n << ", " << i % n << ")";
+    ASSERT_EQ(generated[i], generic[i])
+        << law.name << " " << variant << " entry (" << i / n << ", " << i % n << ")";
     largest = std::max(largest, std::abs(generic[i]));
   }
   EXPECT_GT(largest, 0.0) << "a zero matrix would compare equal whatever the kernel does";
@@ -80,7 +81,8 @@ TEST(FormKernelStructure, CorrespondenceNeverReadsItsStructurallyZeroFactors) {
         if (fac.right[k * S * d + a] == 0.0) fac.right[k * S * d + a] = nan, ++poisoned;
       for (int a = 0; a < d * d; ++a) fac.direct[k * d * d + a] = nan, ++poisoned;
     }
-    EXPECT_EQ(poisoned, L * (S * d - S) + L * d * d) << name << ": (d-1) of every d right components are zero";
+    EXPECT_EQ(poisoned, L * (S * d - S) + L * d * d)
+        << name << ": (d-1) of every d right components are zero";
     law->intact.form(f.view(), fac, M.data());
     for (std::size_t i = 0; i < M.size(); ++i) ASSERT_EQ(M[i], reference[i]) << name << " entry " << i;
     pd::form_local_matrix(d, S, f.view(), fac, generic.data());
@@ -88,4 +90,5 @@ TEST(FormKernelStructure, CorrespondenceNeverReadsItsStructurallyZeroFactors) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, FormKernel, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, FormKernel, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);

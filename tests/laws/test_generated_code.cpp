@@ -33,7 +33,8 @@ TEST(GeneratedCode, NoKernelRepeatsASqrtOrPowCall) {
         continue;
       }
       for (std::sregex_iterator it(line.begin(), line.end(), call), end; it != end; ++it)
-        EXPECT_TRUE(calls.insert(it->str()).second) << entry.path().filename() << " " << kernel << "\n  repeats " << it->str();
+        EXPECT_TRUE(calls.insert(it->str()).second)
+            << entry.path().filename() << " " << kernel << "\n  repeats " << it->str();
     }
   }
   EXPECT_GT(kernels, 10);

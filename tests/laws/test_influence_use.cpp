@@ -38,7 +38,8 @@ TEST_P(InfluenceUse, TheDescriptorSaysWhetherTheForcesReadTheWeights) {
     EXPECT_GT(change, 1e-6 * scale) << law.name << " reads w, but its forces did not move";
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, InfluenceUse, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, InfluenceUse, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);
 
 TEST(InfluenceUse, BondBasedLawsAndPaper001sLpsIgnoreIt) {
   int ignoring = 0;

@@ -9,8 +9,8 @@
 #include <limits>
 #include <sstream>
 
-#include "verify/random_family.hpp"
 #include "law_list.hpp"
+#include "verify/random_family.hpp"
 
 namespace {
 class KernelScratch : public testing::TestWithParam<const pd::abi::LawDescriptor*> {};
@@ -27,7 +27,8 @@ TEST_P(KernelScratch, KernelsUseOnlyTheDeclaredScratchAndWriteItBeforeReading) {
   const std::size_t used = static_cast<std::size_t>(f.bonds() * law.scratch_per_bond), guard = 64;
   const double nan = std::numeric_limits<double>::quiet_NaN(), marker = -12345.0;
   std::vector<double> scratch(used + guard, marker);
-  std::fill(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(used), nan);  // stale contents: NaN
+  std::fill(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(used),
+            nan);  // stale contents: NaN
   pd::abi::Family fam = f.view();
   fam.scratch = scratch.data();
   std::vector<double> forces(reference.size());
@@ -44,10 +45,12 @@ TEST_P(KernelScratch, KernelsUseOnlyTheDeclaredScratchAndWriteItBeforeReading) {
   law.damaged.jvp(fam, dy.data(), df.data());
   law.intact.jvp(fam, dy.data(), df.data());
   for (double v : df) EXPECT_TRUE(std::isfinite(v));
-  for (std::size_t i = used; i < scratch.size(); ++i) EXPECT_EQ(scratch[i], marker) << "wrote past the declared scratch";
+  for (std::size_t i = used; i < scratch.size(); ++i)
+    EXPECT_EQ(scratch[i], marker) << "wrote past the declared scratch";
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, KernelScratch, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, KernelScratch, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);
 
 TEST(KernelScratch, NoGeneratedSourceHoldsThreadLocalOrStaticState) {
   int files = 0;

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
+#include "law_list.hpp"
 #include "verify/balance.hpp"
 #include "verify/tangent_check.hpp"
 #include "verify/test_values.hpp"
-#include "law_list.hpp"
 
 using pd::verify::FamilyCheck;
 
@@ -25,12 +25,14 @@ TEST_P(CheckLaw, EveryFamilyPasses) {
   const auto& law = *GetParam();
   for (const FamilyCheck& c : pd::verify::check_law(law, 1)) {
     EXPECT_TRUE(c.finite) << c.description;
-    EXPECT_TRUE(pd::verify::passes(law, c)) << c.description << ": tangent " << c.tangent.worst() << " jvp " << c.jvp_error
-                                            << " momentum " << c.momentum_error << " angular " << c.angular_momentum_error;
+    EXPECT_TRUE(pd::verify::passes(law, c))
+        << c.description << ": tangent " << c.tangent.worst() << " jvp " << c.jvp_error << " momentum "
+        << c.momentum_error << " angular " << c.angular_momentum_error;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, CheckLaw, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, CheckLaw, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);
 
 // The claim is declared by the laws whose force state is parallel to the deformed bond
 // (docs/laws.md); the linearised laws (correspondence, LPS) do not balance it, and the
@@ -39,7 +41,8 @@ INSTANTIATE_TEST_SUITE_P(AllLaws, CheckLaw, testing::ValuesIn(pd::test::all_law_
 TEST(AngularMomentum, ClaimedExactlyByBondBasedAndOrdinaryStateBasedLaws) {
   for (const auto& law : pd::abi::all_laws()) {
     const std::string n = law.name;
-    const bool parallel = starts_with(n, "bond_based_") || starts_with(n, "silling_") || starts_with(n, "oterkus_");
+    const bool parallel =
+        starts_with(n, "bond_based_") || starts_with(n, "silling_") || starts_with(n, "oterkus_");
     const bool linearised = starts_with(n, "correspondence_") || starts_with(n, "lps_");
     if (parallel) {
       EXPECT_TRUE(law.balances_angular_momentum) << n;
@@ -49,7 +52,8 @@ TEST(AngularMomentum, ClaimedExactlyByBondBasedAndOrdinaryStateBasedLaws) {
     }
     if (law.balances_angular_momentum) continue;
     double worst = 0;
-    for (const FamilyCheck& c : pd::verify::check_law(law, 1)) worst = std::max(worst, c.angular_momentum_error);
+    for (const FamilyCheck& c : pd::verify::check_law(law, 1))
+      worst = std::max(worst, c.angular_momentum_error);
     EXPECT_GT(worst, 1e-6) << n << " balances angular momentum: it could claim it";
   }
 }
@@ -68,7 +72,8 @@ TEST(AngularMomentum, CheckSeesATorqueFromForcesPerpendicularToTheBonds) {
     forces[1] -= forces[(k + 1) * 2 + 1];
   }
   EXPECT_LE(pd::verify::momentum_error(f, forces), 1e-15);
-  EXPECT_NEAR(pd::verify::angular_momentum_error(f, forces), 1.0, 1e-12);  // every bond's torque |Y|^2 adds up
+  EXPECT_NEAR(pd::verify::angular_momentum_error(f, forces), 1.0,
+              1e-12);  // every bond's torque |Y|^2 adds up
 }
 
 namespace {
@@ -108,6 +113,7 @@ TEST(TestValues, LawsDeclareValuesForTheirOwnParameters) {
   ASSERT_NE(silling, nullptr);
   ASSERT_NE(littlewood, nullptr);
   EXPECT_EQ(pd::verify::declared_test_values(*silling), (std::map<std::string, double>{{"stab", 1.0}}));
-  EXPECT_EQ(pd::verify::declared_test_values(*littlewood), (std::map<std::string, double>{{"hourglass", 1.0}}));
+  EXPECT_EQ(pd::verify::declared_test_values(*littlewood),
+            (std::map<std::string, double>{{"hourglass", 1.0}}));
   EXPECT_TRUE(pd::verify::declared_test_values(*pd::abi::find_law("silling_3d")).empty());  // K, G: elastic
 }

@@ -84,7 +84,8 @@ TEST(LawPhysics, ObjectivityUnderRigidRotation) {
   // is nonzero for a rotation, so it produces forces (documented, not a bug of the kernels).
   const double a = 0.3, c = std::cos(a) - 1, s = std::sin(a);
   const double R[9] = {c, -s, 0, s, c, 0, 0, 0, 0};
-  for (const char* name : {"silling_plane_strain", "oterkus_plane_strain", "bond_based_conical_2d", "correspondence_plane_strain"}) {
+  for (const char* name : {"silling_plane_strain", "oterkus_plane_strain", "bond_based_conical_2d",
+                           "correspondence_plane_strain"}) {
     TestFamily f = affine_family(name, R);
     double worst = 0;
     for (double v : f.forces(f.law->damaged)) worst = std::max(worst, std::fabs(v));
@@ -109,10 +110,12 @@ TEST(LawPhysics, StabilisationVanishesForAffineDeformationAndStiffensNonAffineOn
   }
   // A non-affine (zero-mean, alternating) perturbation: the stabilised energy exceeds the plain one.
   const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-  TestFamily plain = affine_family("correspondence_plane_strain", zero), stabilised = affine_family("correspondence_silling_plane_strain", zero);
+  TestFamily plain = affine_family("correspondence_plane_strain", zero),
+             stabilised = affine_family("correspondence_silling_plane_strain", zero);
   std::vector<double> y = plain.y;
   for (std::size_t i = 0; i < y.size(); ++i) y[i] += 1e-3 * ((i / 2) % 2 ? 1.0 : -1.0);
   plain.set_positions(y);
   stabilised.set_positions(y);
-  EXPECT_GT(stabilised.law->damaged.energy(stabilised.view()), plain.law->damaged.energy(plain.view()) * 1.01);
+  EXPECT_GT(stabilised.law->damaged.energy(stabilised.view()),
+            plain.law->damaged.energy(plain.view()) * 1.01);
 }

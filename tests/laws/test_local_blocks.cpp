@@ -41,9 +41,12 @@ TEST(PairBlocks, AreTheDenseMatrixOfEveryLawWithoutStates) {
         for (int r = 0; r < d; ++r)
           for (int q = 0; q < d; ++q) {
             double expected = 0.0;
-            if (a == 0 && b == 0) expected = B[r * d + q];
-            else if (a == 0 || b == 0) expected = B[(a + b) * dd + r * d + q];
-            else if (a == b) expected = -B[a * dd + r * d + q];
+            if (a == 0 && b == 0)
+              expected = B[r * d + q];
+            else if (a == 0 || b == 0)
+              expected = B[(a + b) * dd + r * d + q];
+            else if (a == b)
+              expected = -B[a * dd + r * d + q];
             ASSERT_NEAR(M[static_cast<std::size_t>((a * d + r) * n + b * d + q)], expected, tol)
                 << law.name << " block (" << a << ", " << b << ")";
           }

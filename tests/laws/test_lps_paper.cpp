@@ -20,7 +20,8 @@ std::vector<double> paper_forces(const pd::verify::TestFamily& f, bool corrected
   const int d = f.dim, L = f.bonds();
   const double lambda = f.params[0], mu = f.params[1];
   const double Ca = d == 2 ? 2.0 : 3.0, Cb = d == 2 ? 16.0 : 30.0;
-  const double m = d == 2 ? 2 * std::numbers::pi * std::pow(f.delta, 3) / 3 : std::numbers::pi * std::pow(f.delta, 4);
+  const double m =
+      d == 2 ? 2 * std::numbers::pi * std::pow(f.delta, 3) / 3 : std::numbers::pi * std::pow(f.delta, 4);
   std::vector<Eigen::VectorXd> xi(L), eta(L);
   std::vector<double> K(L);
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(d, d);
@@ -36,7 +37,8 @@ std::vector<double> paper_forces(const pd::verify::TestFamily& f, bool corrected
   std::vector<double> out(static_cast<std::size_t>((L + 1) * d), 0.0);
   for (int k = 0; k < L; ++k) {
     const Eigen::VectorXd t =
-        K[k] / m * (Ca * (lambda - mu) * theta * xi[k] + Cb / 2 * mu * xi[k].dot(eta[k]) / xi[k].squaredNorm() * xi[k]);
+        K[k] / m *
+        (Ca * (lambda - mu) * theta * xi[k] + Cb / 2 * mu * xi[k].dot(eta[k]) / xi[k].squaredNorm() * xi[k]);
     for (int c = 0; c < d; ++c) {
       out[c] += f.V0 * f.V[k] * t[c];
       out[(k + 1) * d + c] -= f.V0 * f.V[k] * t[c];
@@ -55,12 +57,14 @@ double max_abs(const std::vector<double>& a) {
 // Edge and corner families with broken bonds under a random deformation: the generated
 // force is the hand-written one, whose m is m(delta) whatever the family lost.
 TEST(LpsPaper, FamilyForcesAreEq213WithTheAnalyticWeightedVolume) {
-  for (const char* name : {"lps_paper_plane_strain", "lps_paper_3d", "lps_paper_corrected_plane_strain", "lps_paper_corrected_3d"}) {
+  for (const char* name : {"lps_paper_plane_strain", "lps_paper_3d", "lps_paper_corrected_plane_strain",
+                           "lps_paper_corrected_3d"}) {
     const auto* law = pd::abi::find_law(name);
     ASSERT_NE(law, nullptr) << name;
     ASSERT_EQ(std::string(law->param_names[0]), "lambda");
     const bool corrected = std::string(name).find("corrected") != std::string::npos;
-    for (auto t : {pd::verify::Truncation::Interior, pd::verify::Truncation::Edge, pd::verify::Truncation::Corner}) {
+    for (auto t :
+         {pd::verify::Truncation::Interior, pd::verify::Truncation::Edge, pd::verify::Truncation::Corner}) {
       pd::verify::FamilyOptions o;
       o.dim = law->dim;
       o.truncation = t;
@@ -76,7 +80,8 @@ TEST(LpsPaper, FamilyForcesAreEq213WithTheAnalyticWeightedVolume) {
       const double scale = max_abs(expected);
       ASSERT_GT(scale, 0.0);
       for (std::size_t i = 0; i < got.size(); ++i)
-        EXPECT_NEAR(got[i], expected[i], 1e-12 * scale) << name << " truncation " << static_cast<int>(t) << " dof " << i;
+        EXPECT_NEAR(got[i], expected[i], 1e-12 * scale)
+            << name << " truncation " << static_cast<int>(t) << " dof " << i;
     }
   }
 }
@@ -112,7 +117,8 @@ TEST(LpsPaper, DiffersFromTheDiscreteVolumeOnADamagedFamily) {
 // The energy claims: the plain variant has the potential of lps_*, the corrected one
 // (M^+ in the dilatation, xi in the force) has none.
 TEST(LpsPaper, OnlyThePlainVariantDeclaresAnEnergy) {
-  for (const char* name : {"lps_paper_plane_strain", "lps_paper_3d"}) EXPECT_NE(pd::abi::find_law(name)->damaged.energy, nullptr) << name;
+  for (const char* name : {"lps_paper_plane_strain", "lps_paper_3d"})
+    EXPECT_NE(pd::abi::find_law(name)->damaged.energy, nullptr) << name;
   for (const char* name : {"lps_paper_corrected_plane_strain", "lps_paper_corrected_3d"})
     EXPECT_EQ(pd::abi::find_law(name)->damaged.energy, nullptr) << name;
 }

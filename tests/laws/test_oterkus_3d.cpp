@@ -55,13 +55,15 @@ std::vector<double> stress(pd::verify::TestFamily& f, const double* H) {
 
 TEST(Oterkus3d, StressOfAnIsotropicStretchAndASimpleShearIsTheClassicalOne) {
   const double s = 1e-7;  // small: the law is linearised about the reference state
-  for (const auto& [name, dim, ratio, bulk] : {std::tuple{"oterkus_3d", 3, 2.5, 3.0}, std::tuple{"oterkus_plane_strain", 2, 3.0, 2.0}}) {
+  for (const auto& [name, dim, ratio, bulk] :
+       {std::tuple{"oterkus_3d", 3, 2.5, 3.0}, std::tuple{"oterkus_plane_strain", 2, 3.0, 2.0}}) {
     const Moduli m{1.7, 0.6};
     pd::verify::TestFamily f = regular_family(name, ratio, m);
     const double iso[9] = {s, 0, 0, 0, s, 0, 0, 0, dim == 3 ? s : 0};
     const std::vector<double> a = stress(f, iso);
     for (int i = 0; i < dim; ++i)
-      for (int j = 0; j < dim; ++j) EXPECT_NEAR(a[i * dim + j], i == j ? bulk * m.K * s : 0.0, 1e-6 * m.K * s) << name;
+      for (int j = 0; j < dim; ++j)
+        EXPECT_NEAR(a[i * dim + j], i == j ? bulk * m.K * s : 0.0, 1e-6 * m.K * s) << name;
     double theta = 0;
     f.law->damaged.outputs(f.view(), &theta);
     EXPECT_NEAR(theta, dim * s, 1e-6 * s) << name;

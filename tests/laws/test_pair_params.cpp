@@ -36,7 +36,8 @@ TEST_P(PairParams, TheCentersOwnValuesGiveTheForcesOfANullPointer) {
   const auto& law = *GetParam();
   auto f = jump_family(law);
   for (int k = 0; k < f.bonds(); ++k)
-    for (int p = 0; p < law.n_params; ++p) f.nbr_params[static_cast<std::size_t>(k * law.n_params + p)] = f.params[p];
+    for (int p = 0; p < law.n_params; ++p)
+      f.nbr_params[static_cast<std::size_t>(k * law.n_params + p)] = f.params[p];
   const auto with = f.forces(law.damaged);
   f.nbr_params.clear();
   EXPECT_EQ(with, f.forces(law.damaged));
@@ -51,12 +52,15 @@ TEST_P(PairParams, OnlyALawWithPairParametersSeesTheNeighbours) {
   f.nbr_params.clear();
   const auto without = f.forces(law.damaged);
   if (law.uses_pair_params)
-    EXPECT_GT(max_difference(with, without), 1e-3 * max_difference(without, std::vector<double>(without.size(), 0.0))) << law.name;
+    EXPECT_GT(max_difference(with, without),
+              1e-3 * max_difference(without, std::vector<double>(without.size(), 0.0)))
+        << law.name;
   else
     EXPECT_EQ(with, without) << law.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(AllLaws, PairParams, testing::ValuesIn(pd::test::all_law_descriptors()), pd::test::law_name);
+INSTANTIATE_TEST_SUITE_P(AllLaws, PairParams, testing::ValuesIn(pd::test::all_law_descriptors()),
+                         pd::test::law_name);
 
 // LPS's force on bond k with neighbour parameters equals the force of a homogeneous family
 // whose parameters are the harmonic means 2 p_0 p_k / (p_0 + p_k) of bond k's pair (the
@@ -81,7 +85,8 @@ TEST(PairParams, LpsBondForceUsesTheHarmonicMeanOfEachPair) {
       const auto hom = g.forces(law->damaged);
       // Bond k's force is the nodal force on its neighbour, local particle k + 1.
       for (int c = 0; c < d; ++c)
-        EXPECT_NEAR(jump[(k + 1) * d + c], hom[(k + 1) * d + c], 1e-13 * (std::fabs(hom[(k + 1) * d + c]) + 1e-300))
+        EXPECT_NEAR(jump[(k + 1) * d + c], hom[(k + 1) * d + c],
+                    1e-13 * (std::fabs(hom[(k + 1) * d + c]) + 1e-300))
             << name << " bond " << k;
     }
     EXPECT_GT(across, 3) << name << ": the family must have bonds across the interface";

@@ -44,7 +44,8 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
   const auto m = pd::IsotropicElastic::from_E_nu(1.0, 0.25);
   // Parameters that are not elastic constants take the values the law declares for its
   // tests: a law with its own parameter needs no edit here.
-  const auto params = pd::law_parameters(law, m, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(law));
+  const auto params =
+      pd::law_parameters(law, m, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(law));
   pd::AssemblerOptions options;
   options.intact = true;
   options.matrix = false;
@@ -63,8 +64,10 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
   int n_interior = 0;
   for (int i = 0; i < p.size(); ++i) {
     bool inside = true;
-    for (int c = 0; c < d; ++c) inside = inside && p.x[i * d + c] > 2 * delta + 0.5 && p.x[i * d + c] < n - 2 * delta - 0.5;
-    for (int c = 0; c < d; ++c) (inside ? interior : boundary) = std::max(inside ? interior : boundary, std::fabs(f[i * d + c]));
+    for (int c = 0; c < d; ++c)
+      inside = inside && p.x[i * d + c] > 2 * delta + 0.5 && p.x[i * d + c] < n - 2 * delta - 0.5;
+    for (int c = 0; c < d; ++c)
+      (inside ? interior : boundary) = std::max(inside ? interior : boundary, std::fabs(f[i * d + c]));
     n_interior += inside;
   }
   ASSERT_GT(n_interior, 0);
@@ -75,10 +78,12 @@ TEST_P(Patch, InteriorParticlesOfAHomogeneouslyStrainedGridFeelNoNetForce) {
 INSTANTIATE_TEST_SUITE_P(AllLawsAllInfluences, Patch, testing::ValuesIn(cases()), name);
 
 TEST(CorrectedDilatation, ExactForLinearFieldsOnTruncatedAndDamagedFamilies) {
-  for (const char* lname : {"lps_corrected_plane_strain", "lps_corrected_3d", "lps_paper_corrected_plane_strain", "lps_paper_corrected_3d"}) {
+  for (const char* lname : {"lps_corrected_plane_strain", "lps_corrected_3d",
+                            "lps_paper_corrected_plane_strain", "lps_paper_corrected_3d"}) {
     const auto* law = pd::abi::find_law(lname);
     ASSERT_NE(law, nullptr);
-    for (auto t : {pd::verify::Truncation::Interior, pd::verify::Truncation::Edge, pd::verify::Truncation::Corner}) {
+    for (auto t :
+         {pd::verify::Truncation::Interior, pd::verify::Truncation::Edge, pd::verify::Truncation::Corner}) {
       pd::verify::FamilyOptions o;
       o.dim = law->dim;
       o.truncation = t;

@@ -2,9 +2,8 @@
 // runtime/verify/reference_silling.hpp, and its tangent against automatic differentiation.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "verify/random_family.hpp"
@@ -18,8 +17,8 @@ using pd::verify::Truncation;
 namespace {
 std::vector<double> reference_forces(const TestFamily& f) {
   std::vector<double> forces(static_cast<std::size_t>(f.dofs()));
-  pd::verify::silling_forces<double>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(), f.V0,
-                                     f.params[0], f.params[1], f.y.data(), forces.data());
+  pd::verify::silling_forces<double>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(),
+                                     f.V0, f.params[0], f.params[1], f.y.data(), forces.data());
   return forces;
 }
 
@@ -45,7 +44,8 @@ void expect_matches_reference(const char* law_name, int dim) {
         double scale = 0;
         for (double v : expected) scale = std::max(scale, std::fabs(v));
         ASSERT_GT(scale, 0.0);
-        for (std::size_t i = 0; i < forces.size(); ++i) EXPECT_NEAR(forces[i], expected[i], 1e-12 * scale) << i;
+        for (std::size_t i = 0; i < forces.size(); ++i)
+          EXPECT_NEAR(forces[i], expected[i], 1e-12 * scale) << i;
       }
     }
   }
@@ -56,7 +56,9 @@ TEST(Silling, PlaneStrainResidualMatchesIndependentImplementation) {
   expect_matches_reference("silling_plane_strain", 2);
 }
 
-TEST(Silling, ThreeDimensionalResidualMatchesIndependentImplementation) { expect_matches_reference("silling_3d", 3); }
+TEST(Silling, ThreeDimensionalResidualMatchesIndependentImplementation) {
+  expect_matches_reference("silling_3d", 3);
+}
 
 TEST(Silling, DilatationOutputOfAUniformExpansion) {
   // y = (1 + s) x on an interior family: every bond stretches by s, so theta = dim * s exactly.
@@ -104,12 +106,13 @@ TEST(Silling, TangentEqualsForwardAutomaticDifferentiation) {
     using AD = Eigen::AutoDiffScalar<Eigen::VectorXd>;
     std::vector<AD> y(static_cast<std::size_t>(n)), forces(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) y[i] = AD(f.y[i], n, i);
-    pd::verify::silling_forces<AD>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(), f.V0,
-                                   f.params[0], f.params[1], y.data(), forces.data());
+    pd::verify::silling_forces<AD>(f.dim, f.bonds(), f.xi.data(), f.w.data(), f.alpha.data(), f.V.data(),
+                                   f.V0, f.params[0], f.params[1], y.data(), forces.data());
     const auto M = f.tangent_matrix(law->damaged);
     double scale = 0;
     for (double v : M) scale = std::max(scale, std::fabs(v));
     for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) EXPECT_NEAR(M[i * n + j], forces[i].derivatives()[j], 1e-12 * scale) << name;
+      for (int j = 0; j < n; ++j)
+        EXPECT_NEAR(M[i * n + j], forces[i].derivatives()[j], 1e-12 * scale) << name;
   }
 }

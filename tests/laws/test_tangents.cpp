@@ -96,7 +96,8 @@ TEST_P(LawTangent, ForcesOfAFamilySumToZero) {
   const auto forces = f.forces(f.law->damaged);
   for (int c = 0; c < f.dim; ++c) {
     double s = 0, scale = 0;
-    for (int a = 0; a <= f.bonds(); ++a) s += forces[a * f.dim + c], scale += std::fabs(forces[a * f.dim + c]);
+    for (int a = 0; a <= f.bonds(); ++a)
+      s += forces[a * f.dim + c], scale += std::fabs(forces[a * f.dim + c]);
     EXPECT_LE(std::fabs(s), 1e-12 * scale) << "component " << c;
   }
 }
@@ -117,7 +118,8 @@ TEST_P(LawTangent, IntactVariantEqualsDamagedWithAllBondsIntact) {
   const auto damaged = f.forces(f.law->damaged);
   std::vector<double> m_intact(static_cast<std::size_t>(f.law->n_moments) + 1);
   f.law->intact.moments(f.view(), m_intact.data());
-  for (int i = 0; i < f.law->n_moments; ++i) EXPECT_NEAR(m_intact[i], f.moments[i], 1e-13 * std::fabs(f.moments[i]));
+  for (int i = 0; i < f.law->n_moments; ++i)
+    EXPECT_NEAR(m_intact[i], f.moments[i], 1e-13 * std::fabs(f.moments[i]));
   const auto intact = f.forces(f.law->intact);
   for (int i = 0; i < f.dofs(); ++i) EXPECT_NEAR(intact[i], damaged[i], 1e-13 * (1 + std::fabs(damaged[i])));
 }

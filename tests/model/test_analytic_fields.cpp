@@ -43,7 +43,9 @@ TEST(AnalyticFields, WestergaardCrackOpening) {
       const double x = x0 + s * a;
       const double up[2] = {x, y0 + 1e-13}, down[2] = {x, y0 - 1e-13};
       const double opening = f.displacement(up)[1] - f.displacement(down)[1];
-      EXPECT_NEAR(opening, 4 * (1 - nu * nu) * p * std::sqrt(a * a - s * s * a * a) / E, 1e-9 * p * a / E * 1e3) << nu << " " << s;
+      EXPECT_NEAR(opening, 4 * (1 - nu * nu) * p * std::sqrt(a * a - s * s * a * a) / E,
+                  1e-9 * p * a / E * 1e3)
+          << nu << " " << s;
       EXPECT_GT(opening, 0.0);  // the pressure opens the crack
     }
     // Ahead of the tips the line y = y0 does not open, and u_x is continuous across it.
@@ -76,8 +78,10 @@ TEST(AnalyticFields, WestergaardTractionsEquilibriumAndFarField) {
     const double d = 1e-3;
     const Stress sx1 = stress(f, E, nu, x + d, y, h), sx0 = stress(f, E, nu, x - d, y, h);
     const Stress sy1 = stress(f, E, nu, x, y + d, h), sy0 = stress(f, E, nu, x, y - d, h);
-    EXPECT_NEAR((sx1.xx - sx0.xx) / (2 * d) + (sy1.xy - sy0.xy) / (2 * d), 0.0, 1e-4 * p / a) << x << " " << y;
-    EXPECT_NEAR((sx1.xy - sx0.xy) / (2 * d) + (sy1.yy - sy0.yy) / (2 * d), 0.0, 1e-4 * p / a) << x << " " << y;
+    EXPECT_NEAR((sx1.xx - sx0.xx) / (2 * d) + (sy1.xy - sy0.xy) / (2 * d), 0.0, 1e-4 * p / a)
+        << x << " " << y;
+    EXPECT_NEAR((sx1.xy - sx0.xy) / (2 * d) + (sy1.yy - sy0.yy) / (2 * d), 0.0, 1e-4 * p / a)
+        << x << " " << y;
   }
   // Stresses and displacements vanish far away (sigma ~ p a^2 / r^2).
   const Stress far = stress(f, E, nu, 60.0, 80.0, 1e-3);
@@ -125,7 +129,8 @@ TEST(AnalyticFields, ConstantStrainFieldsSatisfyTheirBoundaryConditions) {
 TEST(AnalyticFields, OriginShiftAndMaterialOverride) {
   // x0, y0 move the fixed corner; E and nu given in the field override the material's.
   const auto base = field("biaxial", {{"traction", 1e-3}, {"E", 200}, {"nu", 0.2}}, 1000, 0.0);
-  const auto moved = field("biaxial", {{"traction", 1e-3}, {"E", 200}, {"nu", 0.2}, {"x0", 1}, {"y0", 2}}, 1000, 0.0);
+  const auto moved =
+      field("biaxial", {{"traction", 1e-3}, {"E", 200}, {"nu", 0.2}, {"x0", 1}, {"y0", 2}}, 1000, 0.0);
   const double a[2] = {3.0, 4.0}, b[2] = {4.0, 6.0};
   EXPECT_DOUBLE_EQ(base.displacement(a)[0], moved.displacement(b)[0]);
   EXPECT_DOUBLE_EQ(base.displacement(a)[1], moved.displacement(b)[1]);

@@ -16,7 +16,9 @@ namespace {
 using Vec = std::array<double, 3>;
 Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec cross(const Vec& a, const Vec& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 double unit(double, double) { return 1.0; }
 
@@ -96,7 +98,10 @@ TEST(CrackCutting, TiltedPolygonsIn3D) {
     for (double& c : e1) c /= l1;
     const Vec e2 = cross(n, e1);
     const Vec o{0.5 + 0.05 * g(rng), 0.5 + 0.05 * g(rng), 0.5 + 0.05 * g(rng)};
-    auto at = [&](double s, double t) { return pd::Point{o[0] + s * e1[0] + t * e2[0], o[1] + s * e1[1] + t * e2[1], o[2] + s * e1[2] + t * e2[2]}; };
+    auto at = [&](double s, double t) {
+      return pd::Point{o[0] + s * e1[0] + t * e2[0], o[1] + s * e1[1] + t * e2[1],
+                       o[2] + s * e1[2] + t * e2[2]};
+    };
     // An L-shaped (non-convex) polygon: the union of the rectangles [-.3,.3]x[-.3,0] and [-.3,0]x[0,.3].
     pd::Crack crack;
     crack.points = {at(-0.3, -0.3), at(0.3, -0.3), at(0.3, 0.0), at(0.0, 0.0), at(0.0, 0.3), at(-0.3, 0.3)};

@@ -53,7 +53,8 @@ Band lattice_band(double half, int count, const std::string& placement, double c
 // count of broken bonds (one direction) whose mirror image is intact.
 int asymmetric_bonds(const Band& band, const pd::Bonds& b, bool flip_x) {
   std::vector<int> at(static_cast<std::size_t>(band.points) * band.points, -1);
-  for (std::size_t p = 0; p < band.i.size(); ++p) at[static_cast<std::size_t>(band.j[p]) * band.points + band.i[p]] = static_cast<int>(p);
+  for (std::size_t p = 0; p < band.i.size(); ++p)
+    at[static_cast<std::size_t>(band.j[p]) * band.points + band.i[p]] = static_cast<int>(p);
   const auto mirror = [&](int p) {
     const int i = flip_x ? band.points - 1 - band.i[p] : band.i[p];
     const int j = flip_x ? band.j[p] : band.points - 1 - band.j[p];
@@ -95,7 +96,8 @@ TEST(CrackTips, SymmetricCrackBreaksMirrorSymmetricBondsAtEveryCount) {
           pd::Bonds b = intact;
           const int n = pd::cut_bonds({crack}, band.particles, b);
           broken[tips == pd::CrackTips::kept] = n;
-          const std::string what = placement + " " + std::to_string(count) + (tips == pd::CrackTips::cut ? " tips cut" : " tips kept") +
+          const std::string what = placement + " " + std::to_string(count) +
+                                   (tips == pd::CrackTips::cut ? " tips cut" : " tips kept") +
                                    ", half-width " + std::to_string(g.half);
           ASSERT_GT(n, 0) << what;
           ASSERT_EQ(asymmetric_bonds(band, b, true), 0) << what << ": not symmetric in x";

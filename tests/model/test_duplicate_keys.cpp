@@ -23,7 +23,8 @@ std::string error_of(const std::string& yaml) {
 }  // namespace
 
 TEST(DuplicateKeys, TheSceneWithoutDuplicatesReads) {
-  EXPECT_EQ(error_of(kHead + "law: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25}]\n" + kTail), "(no error)");
+  EXPECT_EQ(error_of(kHead + "law: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25}]\n" + kTail),
+            "(no error)");
 }
 
 TEST(DuplicateKeys, LawTwiceAtTopLevelNamesBothLines) {
@@ -31,7 +32,8 @@ TEST(DuplicateKeys, LawTwiceAtTopLevelNamesBothLines) {
   const std::string yaml =
       kHead + "law: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25}]\nlaw: lps_plane_strain\n" + kTail;
   const std::string msg = error_of(yaml);
-  EXPECT_TRUE(std::regex_search(msg, std::regex(R"(^dup\.yaml:7: law: duplicate key 'law' \(first given on line 5)")))
+  EXPECT_TRUE(
+      std::regex_search(msg, std::regex(R"(^dup\.yaml:7: law: duplicate key 'law' \(first given on line 5)")))
       << msg;
 }
 
@@ -39,13 +41,15 @@ TEST(DuplicateKeys, YoungsModulusTwiceInABlockMaterial) {
   const std::string yaml =
       kHead + "law: silling_plane_strain\nmaterials:\n  - E: 1\n    nu: 0.25\n    E: 2\n" + kTail;
   const std::string msg = error_of(yaml);
-  EXPECT_TRUE(std::regex_search(msg, std::regex(R"(^dup\.yaml:9: materials\[0\]\.E: duplicate key 'E' \(first given on line 7)")))
+  EXPECT_TRUE(std::regex_search(
+      msg, std::regex(R"(^dup\.yaml:9: materials\[0\]\.E: duplicate key 'E' \(first given on line 7)")))
       << msg;
 }
 
 TEST(DuplicateKeys, YoungsModulusTwiceInAFlowMaterial) {
   const std::string yaml = kHead + "law: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25, E: 2}]\n" + kTail;
   const std::string msg = error_of(yaml);
-  EXPECT_TRUE(std::regex_search(msg, std::regex(R"(^dup\.yaml:6: materials\[0\]\.E: duplicate key 'E' \(first given on line 6)")))
+  EXPECT_TRUE(std::regex_search(
+      msg, std::regex(R"(^dup\.yaml:6: materials\[0\]\.E: duplicate key 'E' \(first given on line 6)")))
       << msg;
 }

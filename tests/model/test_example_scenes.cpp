@@ -24,7 +24,8 @@ TEST(ExampleScenes, EveryScenePartitionsIntoNonEmptyNodeSets) {
     const pd::Particles p = pd::discretize(s);
     EXPECT_GT(p.size(), 0);
     for (const auto& bc : s.boundary) EXPECT_FALSE(pd::region_particles(bc.region, p, s).empty()) << bc.where;
-    for (const auto& probe : s.probes) EXPECT_FALSE(pd::region_particles(probe.region, p, s).empty()) << probe.where;
+    for (const auto& probe : s.probes)
+      EXPECT_FALSE(pd::region_particles(probe.region, p, s).empty()) << probe.where;
   }
   EXPECT_GE(scenes, 4);
 }

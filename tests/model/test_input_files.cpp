@@ -26,8 +26,10 @@ const auto study = [](const std::string& p) { pd::read_study(p); };
 TEST(InputFiles, ADirectoryAsTheSceneIsNamedAsADirectory) {
   const auto dir = std::filesystem::temp_directory_path() / "pd_input_files_cases";
   std::filesystem::create_directories(dir);
-  EXPECT_EQ(error_of(scene, dir.string()), dir.string() + ": is a directory, not a scene file (give the .yaml file itself)");
-  EXPECT_EQ(error_of(study, dir.string()), dir.string() + ": is a directory, not a study file (give the .yaml file itself)");
+  EXPECT_EQ(error_of(scene, dir.string()),
+            dir.string() + ": is a directory, not a scene file (give the .yaml file itself)");
+  EXPECT_EQ(error_of(study, dir.string()),
+            dir.string() + ": is a directory, not a study file (give the .yaml file itself)");
   std::filesystem::remove(dir);
 }
 
@@ -38,7 +40,11 @@ TEST(InputFiles, AMissingFileAndADevice) {
 
 TEST(InputFiles, AStudyWhoseTopLevelIsNotAMap) {
   const auto path = std::filesystem::temp_directory_path() / "pd_input_files_list.yaml";
-  { std::FILE* f = std::fopen(path.c_str(), "w"); std::fputs("- a\n- b\n", f); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs("- a\n- b\n", f);
+    std::fclose(f);
+  }
   EXPECT_EQ(error_of(study, path.string()), path.string() + ":1: (top level): expected a map of keys");
   std::filesystem::remove(path);
 }

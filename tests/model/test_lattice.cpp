@@ -78,7 +78,8 @@ TEST(Lattice, HolesRemoveExactlyTheCellsInside) {
   s.holes.push_back(circle(0.6, 0.75, 0, 0.3));
   pd::Shape tri;
   tri.kind = pd::Shape::Kind::Polygon;
-  tri.vertices = {pd::Point{1.21, 0.21, 0}, pd::Point{1.91, 0.33, 0}, pd::Point{1.52, 1.31, 0}};  // edges miss the lattice
+  tri.vertices = {pd::Point{1.21, 0.21, 0}, pd::Point{1.91, 0.33, 0},
+                  pd::Point{1.52, 1.31, 0}};  // edges miss the lattice
   s.holes.push_back(tri);
   pd::Shape box;
   box.kind = pd::Shape::Kind::Box;
@@ -110,7 +111,8 @@ TEST(Lattice, HolesRemoveExactlyTheCellsInside) {
 TEST(Lattice, SphereHoleIn3D) {
   pd::Scene s = box_scene(3, 0.1);
   s.holes.push_back(circle(1.0, 0.75, 0.5, 0.35));
-  const int expected = count_cells(s, [](const double* x) { return std::hypot(x[0] - 1.0, x[1] - 0.75, x[2] - 0.5) > 0.35; });
+  const int expected =
+      count_cells(s, [](const double* x) { return std::hypot(x[0] - 1.0, x[1] - 0.75, x[2] - 0.5) > 0.35; });
   EXPECT_EQ(pd::discretize(s).size(), expected);
 }
 
@@ -138,7 +140,8 @@ TEST(Lattice, PerturbationIsSeededAndBounded) {
     a.seed = 11;
     pd::Scene b = a;
     b.seed = 12;
-    const pd::Particles p0 = pd::discretize(plain), pa = pd::discretize(a), pa2 = pd::discretize(a), pb = pd::discretize(b);
+    const pd::Particles p0 = pd::discretize(plain), pa = pd::discretize(a), pa2 = pd::discretize(a),
+                        pb = pd::discretize(b);
     ASSERT_EQ(pa.size(), p0.size());
     EXPECT_EQ(pa.x, pa2.x);  // deterministic
     EXPECT_NE(pa.x, pb.x);   // the seed matters
@@ -170,12 +173,14 @@ TEST(Regions, SidesHoldTheOutermostRowEvenWhenPerturbed) {
       const pd::Particles p = pd::discretize(s);
       const int extra = std::string(placement) == "node" ? 1 : 0;
       const int nx = 16 + extra, ny = 12 + extra, nz = dim == 3 ? 8 + extra : 1;
-      const std::vector<std::pair<std::string, int>> sides{{"left", ny * nz}, {"right", ny * nz}, {"bottom", nx * nz}, {"top", nx * nz}};
+      const std::vector<std::pair<std::string, int>> sides{
+          {"left", ny * nz}, {"right", ny * nz}, {"bottom", nx * nz}, {"top", nx * nz}};
       for (const auto& [side, n] : sides) {
         pd::Region r;
         r.kind = pd::Region::Kind::Side;
         r.side = side;
-        EXPECT_EQ(static_cast<int>(pd::region_particles(r, p, s).size()), n) << placement << " " << dim << "D " << side;
+        EXPECT_EQ(static_cast<int>(pd::region_particles(r, p, s).size()), n)
+            << placement << " " << dim << "D " << side;
       }
       if (dim == 3) {
         pd::Region r;
@@ -244,7 +249,8 @@ TEST(Neighbours, LatticeFamiliesAtIntegerRatiosAreComplete) {
         const double* x = p.position(i);
         const double margin = s.delta() + 0.5 * s.h;
         if (x[0] > margin && x[0] < 2 - margin && x[1] > margin && x[1] < 1.5 - margin) {
-          EXPECT_EQ(b.family_size(i), full) << placement << " delta/h " << ratio << " at " << x[0] << ", " << x[1];
+          EXPECT_EQ(b.family_size(i), full)
+              << placement << " delta/h " << ratio << " at " << x[0] << ", " << x[1];
         }
       }
     }

@@ -11,17 +11,19 @@
 #include <random>
 #include <string>
 
+#include "assembly/assembler.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/lattice_blocks.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "model/model.hpp"
-#include "assembly/assembler.hpp"
 #include "run/simulation.hpp"
 
 namespace {
 // Silling's zero-energy control needs its constant.
-std::string stab(const std::string& law) { return law.rfind("correspondence_silling", 0) == 0 ? ", parameters: {stab: 1}" : ""; }
+std::string stab(const std::string& law) {
+  return law.rfind("correspondence_silling", 0) == 0 ? ", parameters: {stab: 1}" : "";
+}
 
 // Fine block x < 0.5 (h = 0.025), coarse block x > 0.5 (h = 0.05), horizon 3 h each.
 std::string two_blocks(const std::string& law, const std::string& rest = "") {
@@ -31,9 +33,12 @@ std::string two_blocks(const std::string& law, const std::string& rest = "") {
          "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.025}\n"
          "    - {box: {min: [0.5, 0], max: [1, 1]}, spacing: 0.05}\n"
          "horizon: {ratio: 3}\n"
-         "law: " + law + "\n"
+         "law: " +
+         law +
+         "\n"
          "influence: const\n"
-         "materials: [{name: steel, E: 200, nu: 0.25" + stab(law) + "}]\n" + rest;
+         "materials: [{name: steel, E: 200, nu: 0.25" +
+         stab(law) + "}]\n" + rest;
 }
 
 std::string scene_error(const std::string& text) {
@@ -73,9 +78,11 @@ TEST(LatticeBlocks, EachBlockIsFilledWithItsOwnCellsAndVolumes) {
 TEST(LatticeBlocks, BadBlocksAreNamed) {
   const std::string head = "dimension: 2\ndomain:\n  blocks:\n";
   const std::string tail = "law: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25}]\n";
-  EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.03}\n" + tail)
-                .find("blocks.yaml:4: domain.blocks[0]: the side 0.5 along x is not a whole number of spacings 0.03"),
-            std::string::npos);
+  EXPECT_NE(
+      scene_error(head + "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.03}\n" + tail)
+          .find(
+              "blocks.yaml:4: domain.blocks[0]: the side 0.5 along x is not a whole number of spacings 0.03"),
+      std::string::npos);
   EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.05}\n" +
                         "    - {box: {min: [0.4, 0], max: [1, 1]}, spacing: 0.1}\n" + tail)
                 .find("domain.blocks[1]: overlaps blocks.yaml:4: domain.blocks[0]"),
@@ -83,10 +90,13 @@ TEST(LatticeBlocks, BadBlocksAreNamed) {
   EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [1, 1]}, spacing: 0.1}\n  count: 10\n" + tail)
                 .find("domain.count: count does not apply to a body of blocks"),
             std::string::npos);
-  EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [1, 1]}, spacing: 0.1}\n  quadrature: partial_exact\n" + tail)
+  EXPECT_NE(scene_error(
+                head +
+                "    - {box: {min: [0, 0], max: [1, 1]}, spacing: 0.1}\n  quadrature: partial_exact\n" + tail)
                 .find("quadrature: volume or partial_linear"),
             std::string::npos);
-  EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [1, 1]}, spacing: -1}\n" + tail).find("spacing must be positive"),
+  EXPECT_NE(scene_error(head + "    - {box: {min: [0, 0], max: [1, 1]}, spacing: -1}\n" + tail)
+                .find("spacing must be positive"),
             std::string::npos);
 }
 
@@ -107,7 +117,8 @@ TEST(LatticeBlocks, AFamilyIsEveryParticleWithinItsOwnHorizon) {
   EXPECT_GT(asymmetric, 0);  // coarse particles reach fine ones that do not reach back
   // One horizon for all: the same bonds as the uniform search.
   const pd::Bonds u = pd::find_bonds(p, 0.075, [](double, double) { return 1.0; });
-  const pd::Bonds v = pd::find_bonds_per_particle(p, std::vector<double>(p.size(), 0.075), [](double, double) { return 1.0; });
+  const pd::Bonds v = pd::find_bonds_per_particle(p, std::vector<double>(p.size(), 0.075),
+                                                  [](double, double) { return 1.0; });
   EXPECT_EQ(u.offsets, v.offsets);
   EXPECT_EQ(u.neighbor, v.neighbor);
   EXPECT_EQ(u.xi, v.xi);
@@ -119,13 +130,17 @@ TEST(LatticeBlocks, AFamilyIsEveryParticleWithinItsOwnHorizon) {
 // as on a uniform lattice, including the families that straddle the interface.
 TEST(LatticeBlocks, PartialVolumeFamiliesMatchTheUniformLatticeAndIntegrateTheDisc) {
   const std::string tail = "horizon: {ratio: 3}\nlaw: silling_plane_strain\nmaterials: [{E: 1, nu: 0.25}]\n";
-  const pd::Scene blocks = pd::parse_scene("dimension: 2\ndomain:\n  quadrature: partial_linear\n  blocks:\n"
-                                           "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.05}\n"
-                                           "    - {box: {min: [0.5, 0], max: [1, 1]}, spacing: 0.05}\n" + tail,
-                                           "blocks.yaml");
-  const pd::Scene uniform = pd::parse_scene("dimension: 2\ndomain:\n  quadrature: partial_linear\n"
-                                            "  box: {min: [0, 0], max: [1, 1]}\n  spacing: 0.05\n" + tail,
-                                            "uniform.yaml");
+  const pd::Scene blocks = pd::parse_scene(
+      "dimension: 2\ndomain:\n  quadrature: partial_linear\n  blocks:\n"
+      "    - {box: {min: [0, 0], max: [0.5, 1]}, spacing: 0.05}\n"
+      "    - {box: {min: [0.5, 0], max: [1, 1]}, spacing: 0.05}\n" +
+          tail,
+      "blocks.yaml");
+  const pd::Scene uniform = pd::parse_scene(
+      "dimension: 2\ndomain:\n  quadrature: partial_linear\n"
+      "  box: {min: [0, 0], max: [1, 1]}\n  spacing: 0.05\n" +
+          tail,
+      "uniform.yaml");
   const pd::Model mb = pd::build_model(blocks), mu = pd::build_model(uniform);
   ASSERT_EQ(mb.particles.size(), mu.particles.size());
   // Families keyed by positions (the blocks fill block by block, the box row by row).
@@ -171,7 +186,8 @@ TEST(LatticeBlocks, PartialVolumeFamiliesMatchTheUniformLatticeAndIntegrateTheDi
   }
   EXPECT_GT(straddling, 0);
   EXPECT_GT(worst_uniform, 0);
-  std::printf("disc quadrature error: %.4f on one spacing, %.4f across the interface\n", worst_uniform, worst_straddling);
+  std::printf("disc quadrature error: %.4f on one spacing, %.4f across the interface\n", worst_uniform,
+              worst_straddling);
   // Measured 0.0313 on one spacing (the linear rule's own error at delta = 3h), 0.0342 across.
   EXPECT_LT(worst_uniform, 0.035);
   EXPECT_LT(worst_straddling, 1.2 * worst_uniform);
@@ -181,7 +197,8 @@ TEST(LatticeBlocks, PartialVolumeFamiliesMatchTheUniformLatticeAndIntegrateTheDi
 // within its own min(delta_i, ratio h_i), not one short horizon from the largest spacing
 // (which gave a fine particle 4 h_fine here, more than its real family's 3 h_fine).
 TEST(LatticeBlocks, ShortHorizonPreconditionerTakesEachParticlesOwnSpacing) {
-  std::string text = two_blocks("oterkus_plane_strain", "solver: {linear: matrix_free, preconditioner_ratio: 2}\n");
+  std::string text =
+      two_blocks("oterkus_plane_strain", "solver: {linear: matrix_free, preconditioner_ratio: 2}\n");
   const pd::Scene s = pd::parse_scene(text, "blocks.yaml");
   pd::Model m = pd::build_model(s);
   pd::attach_short_horizon(m, s, std::min(s.delta(), s.solver.preconditioner_ratio * s.h));
@@ -206,7 +223,8 @@ TEST(LatticeBlocks, ShortHorizonPreconditionerTakesEachParticlesOwnSpacing) {
 // sign on its two particles, so they sum to zero; for an ordinary law (t parallel to Y)
 // their moment about the origin in the deformed configuration vanishes too.
 TEST(LatticeBlocks, MomentumIsBalancedAcrossTheInterface) {
-  for (const std::string law : {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
+  for (const std::string law :
+       {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
     const pd::Scene s = pd::parse_scene(two_blocks(law), "blocks.yaml");
     pd::Model m = pd::build_model(s);
     pd::attach_assembler(m, s, false, 1);
@@ -239,9 +257,12 @@ std::string wide_blocks(const std::string& law, const std::string& rest) {
          "    - {box: {min: [0, 0], max: [1, 2]}, spacing: 0.025}\n"
          "    - {box: {min: [1, 0], max: [2, 2]}, spacing: 0.05}\n"
          "horizon: {ratio: 3}\n"
-         "law: " + law + "\n"
+         "law: " +
+         law +
+         "\n"
          "influence: const\n"
-         "materials: [{name: steel, E: 200, nu: 0.25" + stab(law) + "}]\n" + rest;
+         "materials: [{name: steel, E: 200, nu: 0.25" +
+         stab(law) + "}]\n" + rest;
 }
 }  // namespace
 
@@ -252,14 +273,16 @@ std::string wide_blocks(const std::string& law, const std::string& rest) {
 // free edge particle feels, the scale of the error they cause.
 TEST(LatticeBlocks, PatchTestHomogeneousStrainLeavesNoForceAwayFromTheInterface) {
   const double H[4] = {1e-3, 4e-4, -2e-4, -5e-4};
-  for (const std::string law : {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
+  for (const std::string law :
+       {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
     const pd::Scene s = pd::parse_scene(wide_blocks(law, ""), "blocks.yaml");
     pd::Model m = pd::build_model(s);
     pd::attach_assembler(m, s, false, 1);
     const int n = m.particles.size();
     std::vector<double> u(2 * n), f(2 * n);
     for (int i = 0; i < n; ++i)
-      for (int r = 0; r < 2; ++r) u[2 * i + r] = H[2 * r] * m.particles.x[2 * i] + H[2 * r + 1] * m.particles.x[2 * i + 1];
+      for (int r = 0; r < 2; ++r)
+        u[2 * i + r] = H[2 * r] * m.particles.x[2 * i] + H[2 * r + 1] * m.particles.x[2 * i + 1];
     m.assembler->internal_forces(u.data(), f.data());
     const double far = 2 * 0.15 + 1e-9;
     double interior = 0, interface = 0, edge = 0;
@@ -272,7 +295,7 @@ TEST(LatticeBlocks, PatchTestHomogeneousStrainLeavesNoForceAwayFromTheInterface)
       if (to_edge < 0.05) edge = std::max(edge, size);
     }
     EXPECT_LT(interior, 1e-9 * edge) << law;
-    std::printf("%s: largest force density (interior, interface, edge): %.3g %.3g %.3g\n", law.c_str(), interior,
-                interface, edge);
+    std::printf("%s: largest force density (interior, interface, edge): %.3g %.3g %.3g\n", law.c_str(),
+                interior, interface, edge);
   }
 }

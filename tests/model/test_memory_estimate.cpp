@@ -10,10 +10,11 @@
 namespace {
 pd::Scene scene(int count, double ratio, int dim) {
   const std::string box = dim == 2 ? "{min: [0, 0], max: [1, 1]}" : "{min: [0, 0, 0], max: [1, 1, 1]}";
-  return pd::parse_scene("dimension: " + std::to_string(dim) + "\ndomain: {box: " + box + ", count: " + std::to_string(count) +
-                             "}\nhorizon: {ratio: " + std::to_string(ratio) + "}\nlaw: " +
-                             (dim == 2 ? "silling_plane_strain" : "lps_3d") + "\nmaterials: [{E: 1, nu: 0.25}]\n",
-                         "m.yaml");
+  return pd::parse_scene(
+      "dimension: " + std::to_string(dim) + "\ndomain: {box: " + box + ", count: " + std::to_string(count) +
+          "}\nhorizon: {ratio: " + std::to_string(ratio) +
+          "}\nlaw: " + (dim == 2 ? "silling_plane_strain" : "lps_3d") + "\nmaterials: [{E: 1, nu: 0.25}]\n",
+      "m.yaml");
 }
 }  // namespace
 

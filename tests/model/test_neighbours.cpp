@@ -72,8 +72,8 @@ void check_against_brute_force(const pd::Particles& p, double delta) {
 TEST(Neighbours, RandomCloudsMatchBruteForce2D) {
   const double square[2] = {2.0, 2.0}, strip[2] = {10.0, 0.3};
   check_against_brute_force(random_cloud(2, 700, square, 1), 0.17);
-  check_against_brute_force(random_cloud(2, 700, strip, 2), 0.25);    // fewer cells in y than the stencil
-  check_against_brute_force(random_cloud(2, 300, square, 3), 5.0);    // horizon larger than the cloud
+  check_against_brute_force(random_cloud(2, 700, strip, 2), 0.25);  // fewer cells in y than the stencil
+  check_against_brute_force(random_cloud(2, 300, square, 3), 5.0);  // horizon larger than the cloud
 }
 
 TEST(Neighbours, RandomCloudsMatchBruteForce3D) {
@@ -114,12 +114,14 @@ TEST(Neighbours, BondsAtExactlyTheHorizonAreKept) {
     int expected = 0;
     for (int a = -3; a <= 3; ++a)
       for (int c = -3; c <= 3; ++c)
-        for (int e = (dim == 3 ? -3 : 0); e <= (dim == 3 ? 3 : 0); ++e) expected += (a * a + c * c + e * e <= 9) && (a || c || e);
+        for (int e = (dim == 3 ? -3 : 0); e <= (dim == 3 ? 3 : 0); ++e)
+          expected += (a * a + c * c + e * e <= 9) && (a || c || e);
     EXPECT_EQ(expected, dim == 2 ? 28 : 122);
     int centre = 0;  // the particle nearest the middle
     for (int i = 0; i < p.size(); ++i) {
       double r = 0, rc = 0;
-      for (int c = 0; c < dim; ++c) r += std::pow(p.position(i)[c] - 0.55, 2), rc += std::pow(p.position(centre)[c] - 0.55, 2);
+      for (int c = 0; c < dim; ++c)
+        r += std::pow(p.position(i)[c] - 0.55, 2), rc += std::pow(p.position(centre)[c] - 0.55, 2);
       if (r < rc) centre = i;
     }
     EXPECT_EQ(b.family_size(centre), expected) << dim << "D";
@@ -141,11 +143,13 @@ TEST(Neighbours, IntegerHorizonRatiosKeepEveryLatticeNeighbour) {
   for (int k : {1, 2, 3}) {
     const pd::Bonds b = pd::find_bonds(p, k * s.h, weight);
     for (int i = 0; i < p.size(); ++i) {
-      const int ix = static_cast<int>(std::lround(p.position(i)[0] / s.h - 0.5)), iy = static_cast<int>(std::lround(p.position(i)[1] / s.h - 0.5));
+      const int ix = static_cast<int>(std::lround(p.position(i)[0] / s.h - 0.5)),
+                iy = static_cast<int>(std::lround(p.position(i)[1] / s.h - 0.5));
       int expected = 0;
       for (int a = -k; a <= k; ++a)
         for (int c = -k; c <= k; ++c)
-          expected += (a || c) && a * a + c * c <= k * k && ix + a >= 0 && ix + a < 10 && iy + c >= 0 && iy + c < 10;
+          expected +=
+              (a || c) && a * a + c * c <= k * k && ix + a >= 0 && ix + a < 10 && iy + c >= 0 && iy + c < 10;
       ASSERT_EQ(b.family_size(i), expected) << "delta = " << k << "h, particle " << i;
     }
   }

@@ -35,7 +35,8 @@ std::string error_of(const std::string& csv, const std::string& domain_extra = "
   const fs::path path = scratch() / "body.csv";
   std::ofstream(path) << csv;
   try {
-    pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + domain_extra + "}\n" + kRest, "scene.yaml");
+    pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + domain_extra + "}\n" + kRest,
+                    "scene.yaml");
   } catch (const pd::SceneError& e) {
     return e.what();
   }
@@ -54,12 +55,18 @@ std::string lattice_csv(int n, double h, const char* material_column) {
 }  // namespace
 
 TEST(ParticleFile, TheLatticeOfABoxSceneAsAFileGivesTheSameParticlesAndSolution) {
-  pd::Scene box = pd::parse_scene("dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 10, placement: node}\n" + kRest, "box.yaml");
+  pd::Scene box = pd::parse_scene(
+      "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 10, placement: node}\n" + kRest,
+      "box.yaml");
   const fs::path path = scratch() / "lattice.csv";
   std::ofstream(path) << lattice_csv(10, 0.1, nullptr);
-  // Without spacing, h is the mean of sqrt(volume): 0.1 up to rounding (which moves delta, and u, in the last digits).
-  EXPECT_NEAR(pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + "}\n" + kRest, "file.yaml").h, box.h, 1e-15);
-  pd::Scene file = pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + ", spacing: 0.1}\n" + kRest, "file.yaml");
+  // Without spacing, h is the mean of sqrt(volume): 0.1 up to rounding (which moves delta, and u, in the last
+  // digits).
+  EXPECT_NEAR(
+      pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + "}\n" + kRest, "file.yaml").h,
+      box.h, 1e-15);
+  pd::Scene file = pd::parse_scene(
+      "dimension: 2\ndomain: {particles: " + path.string() + ", spacing: 0.1}\n" + kRest, "file.yaml");
   EXPECT_EQ(file.h, box.h);
   for (int c = 0; c < 2; ++c) {
     EXPECT_EQ(file.lo[c], box.lo[c]);
@@ -79,7 +86,8 @@ TEST(ParticleFile, TheLatticeOfABoxSceneAsAFileGivesTheSameParticlesAndSolution)
 TEST(ParticleFile, MaterialsByNameOrIndex) {
   const fs::path path = scratch() / "two.csv";
   std::ofstream(path) << lattice_csv(4, 0.25, "1");  // index 1: glass
-  const pd::Scene s = pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + "}\n" + kRest, "scene.yaml");
+  const pd::Scene s =
+      pd::parse_scene("dimension: 2\ndomain: {particles: " + path.string() + "}\n" + kRest, "scene.yaml");
   const pd::Particles p = pd::discretize(s);
   int glass = 0;
   for (int m : p.material) glass += m == 1;
@@ -104,7 +112,8 @@ TEST(ParticleFile, MalformedFilesNameTheKeyTheLineAndTheRow) {
       {"x,y,volume\n0,0,1e999\n", "body.csv:2: row 1: volume: '1e999' is not a finite number"},
       {"x,y,volume\n0,0,-1\n", "body.csv:2: row 1: volume must be positive (got -1)"},
       {"x,y,volume\n0,0,1\n1,0,1\n0,0,1\n", "body.csv:4: row 3: a second particle at the same position"},
-      {"x,y,volume,material\n0,0,1,rock\n1,0,1,steel\n", "body.csv:3: row 2: unknown material 'steel' (the scene's materials: rock, glass)"},
+      {"x,y,volume,material\n0,0,1,rock\n1,0,1,steel\n",
+       "body.csv:3: row 2: unknown material 'steel' (the scene's materials: rock, glass)"},
       {"x,y,volume,material\n0,0,1,2\n", "body.csv:2: row 1: unknown material '2'"},
   };
   for (const auto& c : cases) {
@@ -112,14 +121,18 @@ TEST(ParticleFile, MalformedFilesNameTheKeyTheLineAndTheRow) {
     EXPECT_EQ(e.rfind(where, 0), 0u) << c.csv << "\n" << e;
     EXPECT_NE(e.find(c.message), std::string::npos) << c.csv << "\n" << e;
   }
-  EXPECT_NE(error_of("x,y,volume\n0,0,1\n", ", box: {min: [0, 0], max: [1, 1]}").find("domain.box: box does not apply to a body read from a particle file"),
+  EXPECT_NE(error_of("x,y,volume\n0,0,1\n", ", box: {min: [0, 0], max: [1, 1]}")
+                .find("domain.box: box does not apply to a body read from a particle file"),
             std::string::npos);
-  EXPECT_NE(error_of("x,y,volume\n0,0,1\n", ", spacing: 0").find("domain.spacing: spacing must be positive"), std::string::npos);
+  EXPECT_NE(error_of("x,y,volume\n0,0,1\n", ", spacing: 0").find("domain.spacing: spacing must be positive"),
+            std::string::npos);
   fs::remove(scratch() / "body.csv");
   try {
     pd::parse_scene("dimension: 2\ndomain: {particles: nowhere.csv}\n" + kRest, "/tmp/scene.yaml");
     ADD_FAILURE() << "a missing particle file was accepted";
   } catch (const pd::SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("domain.particles: /tmp/nowhere.csv: cannot open the particle file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("domain.particles: /tmp/nowhere.csv: cannot open the particle file"),
+              std::string::npos)
+        << e.what();
   }
 }

@@ -33,7 +33,8 @@ fs::path scratch() {
   return dir;
 }
 pd::Scene scene_of(const fs::path& file, const std::string& extra = "") {
-  return pd::parse_scene("dimension: 2\ndomain: {particles: " + file.string() + extra + "}\n" + kRest, "scene.yaml");
+  return pd::parse_scene("dimension: 2\ndomain: {particles: " + file.string() + extra + "}\n" + kRest,
+                         "scene.yaml");
 }
 std::string error_of(const std::string& vtu) {
   const fs::path path = scratch() / "body.vtu";
@@ -48,18 +49,26 @@ std::string error_of(const std::string& vtu) {
 // An ASCII VTU of two particles; the arrays' texts are parameters (line numbers: Points on 5,
 // volume on 8, material on 9).
 std::string ascii_vtu(const std::string& points = "0 0 0  1 0 0", const std::string& volume = "1 1",
-                      const std::string& material = "<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">0 1</DataArray>",
+                      const std::string& material =
+                          "<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">0 1</DataArray>",
                       const std::string& piece = "NumberOfPoints=\"2\" NumberOfCells=\"0\"") {
-  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-         "<UnstructuredGrid><Piece " + piece + ">\n<Points>\n"
-         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">" + points + "</DataArray>\n</Points>\n<PointData>\n"
-         "<DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">" + volume + "</DataArray>\n" + material +
-         "\n</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\">\n"
+         "<UnstructuredGrid><Piece " +
+         piece +
+         ">\n<Points>\n"
+         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">" +
+         points +
+         "</DataArray>\n</Points>\n<PointData>\n"
+         "<DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">" +
+         volume + "</DataArray>\n" + material + "\n</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
 }
 }  // namespace
 
 TEST(ParticleVtu, OurOwnWritersFileOfABoxLatticeGivesTheSameParticlesAndSolution) {
-  pd::Scene box = pd::parse_scene("dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 10, placement: node}\n" + kRest, "box.yaml");
+  pd::Scene box = pd::parse_scene(
+      "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 10, placement: node}\n" + kRest,
+      "box.yaml");
   pd::Particles lattice = pd::discretize(box);
   // The right half glass (index 1), stored as Float64 like every field our writer writes.
   std::vector<double> material(static_cast<std::size_t>(lattice.size()));
@@ -80,7 +89,8 @@ TEST(ParticleVtu, OurOwnWritersFileOfABoxLatticeGivesTheSameParticlesAndSolution
   EXPECT_EQ(glass, 5 * 11);  // the columns x = 0.6, ..., 1.0 of 11 rows
 
   // Without the material array every particle is the first material, as in the box scene: the same solution.
-  pd::write_vtu_file(path.string(), pd::discretize(box), {}, std::vector<pd::OutputField>{{"volume", 1, lattice.volume}});
+  pd::write_vtu_file(path.string(), pd::discretize(box), {},
+                     std::vector<pd::OutputField>{{"volume", 1, lattice.volume}});
   pd::Scene plain = scene_of(path, ", spacing: 0.1");
   box.output.vtu = box.output.csv = plain.output.vtu = plain.output.csv = false;
   pd::Simulation sa(box, [](const std::string&) {}), sb(plain, [](const std::string&) {});
@@ -97,20 +107,27 @@ TEST(ParticleVtu, MalformedFilesNameTheKeyTheLineAndThePoint) {
   } cases[] = {
       {"not xml at all", "body.vtu:1: not a VTK XML file: "},
       {"<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"/>\n", "body.vtu:2: not a VTK unstructured grid"},
-      {ascii_vtu("0 0 0  1 0 0", "1 -1"), "body.vtu:8: PointData 'volume': point id 1: volume must be positive and finite (got -1)"},
-      {ascii_vtu("0 0 0  1 0 0", "1 nan"), "body.vtu:8: PointData 'volume': point id 1: volume must be positive and finite (got nan)"},
+      {ascii_vtu("0 0 0  1 0 0", "1 -1"),
+       "body.vtu:8: PointData 'volume': point id 1: volume must be positive and finite (got -1)"},
+      {ascii_vtu("0 0 0  1 0 0", "1 nan"),
+       "body.vtu:8: PointData 'volume': point id 1: volume must be positive and finite (got nan)"},
       {ascii_vtu("0 0 0  1 0 0", "1"), "body.vtu:8: PointData 'volume': 1 values where 2 were expected"},
       {ascii_vtu("0 0 0  1 zero 0"), "body.vtu:5: Points: value 4: 'zero' is not a number"},
       {ascii_vtu("0 0 0  1 0 0.5"), "body.vtu:5: Points: point id 1: z = 0.5 in a 2D scene"},
       {ascii_vtu("0 0 0  0 0 0"), "body.vtu:5: Points: point id 1: a second particle at the same position"},
-      {ascii_vtu("0 0 0  1 0 0", "1 1", "<DataArray type=\"Float64\" Name=\"material\" format=\"ascii\">0 0.5</DataArray>"),
+      {ascii_vtu("0 0 0  1 0 0", "1 1",
+                 "<DataArray type=\"Float64\" Name=\"material\" format=\"ascii\">0 0.5</DataArray>"),
        "body.vtu:9: PointData 'material': point id 1: 0.5 is not a material index"},
-      {ascii_vtu("0 0 0  1 0 0", "1 1", "<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">0 2</DataArray>"),
+      {ascii_vtu("0 0 0  1 0 0", "1 1",
+                 "<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">0 2</DataArray>"),
        "body.vtu:9: point id 1: unknown material '2' (the scene's materials: rock, glass)"},
-      {ascii_vtu("0 0 0  1 0 0", "1 1", "<DataArray type=\"Int32\" Name=\"volume\" format=\"ascii\">1 1</DataArray>"),
+      {ascii_vtu("0 0 0  1 0 0", "1 1",
+                 "<DataArray type=\"Int32\" Name=\"volume\" format=\"ascii\">1 1</DataArray>"),
        "body.vtu:9: a second DataArray 'volume' (the first is on line 8)"},
-      {ascii_vtu("0 0 0  1 0 0", "1 1", "", "NumberOfPoints=\"0\" NumberOfCells=\"0\""), "body.vtu:3: the grid has no points"},
-      {ascii_vtu("0 0 0  1 0 0", "1 1", "<DataArray type=\"Int32\" Name=\"material\" format=\"binary\">AAAA!AAA</DataArray>"),
+      {ascii_vtu("0 0 0  1 0 0", "1 1", "", "NumberOfPoints=\"0\" NumberOfCells=\"0\""),
+       "body.vtu:3: the grid has no points"},
+      {ascii_vtu("0 0 0  1 0 0", "1 1",
+                 "<DataArray type=\"Int32\" Name=\"material\" format=\"binary\">AAAA!AAA</DataArray>"),
        "body.vtu:9: PointData 'material': cannot decode the binary data: '!' is not a base64 character"},
   };
   for (const auto& c : cases) {
@@ -120,16 +137,20 @@ TEST(ParticleVtu, MalformedFilesNameTheKeyTheLineAndThePoint) {
   }
   // Appended raw data whose block header promises 48 bytes where 2 follow.
   const std::string truncated =
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
       "<UnstructuredGrid><Piece NumberOfPoints=\"2\">\n<Points>\n"
       "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>\n</Points>\n"
       "<PointData><DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">1 1</DataArray></PointData>\n"
       "</Piece></UnstructuredGrid>\n<AppendedData encoding=\"raw\">_" +
       std::string("\x30\0\0\0\0\0\0\0\x01\x02", 10) + "</AppendedData></VTKFile>\n";
-  EXPECT_NE(error_of(truncated).find("body.vtu:5: Points: cannot decode the appended data: the data ends before the array does"),
-            std::string::npos) << error_of(truncated);
+  EXPECT_NE(error_of(truncated).find(
+                "body.vtu:5: Points: cannot decode the appended data: the data ends before the array does"),
+            std::string::npos)
+      << error_of(truncated);
   // No volume array: the PointData element's line.
   std::string no_volume = ascii_vtu("0 0 0  1 0 0", "1 1", "");
   no_volume.replace(no_volume.find("Name=\"volume\""), 13, "Name=\"vol\"");
-  EXPECT_NE(error_of(no_volume).find("body.vtu:7: no point data array 'volume'"), std::string::npos) << error_of(no_volume);
+  EXPECT_NE(error_of(no_volume).find("body.vtu:7: no point data array 'volume'"), std::string::npos)
+      << error_of(no_volume);
 }

@@ -65,8 +65,8 @@ void expect_counted_alike(const std::string& text, int stop_after) {
   EXPECT_EQ(ranked.calls, serial.calls) << "each rank calls every effect's after_step once per step";
   long long families = 0;
   MPI_Allreduce(&ranked.families, &families, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
-  EXPECT_EQ(families, serial.families) << "the ranks' families together are the body's, once each, on " << ranks
-                                       << " rank(s)";
+  EXPECT_EQ(families, serial.families)
+      << "the ranks' families together are the body's, once each, on " << ranks << " rank(s)";
 }
 
 const char* kPlate = R"(dimension: 2
@@ -85,11 +85,13 @@ boundary:
 )";
 
 TEST(AfterStepOnRanks, ExplicitDynamicsCallsEveryEffectOnEveryRank) {
-  expect_counted_alike(std::string(kPlate) + "dynamics: {method: explicit, steps: 25, output_every: 5}\n", 25);
+  expect_counted_alike(std::string(kPlate) + "dynamics: {method: explicit, steps: 25, output_every: 5}\n",
+                       25);
 }
 
 TEST(AfterStepOnRanks, RelaxationCallsEveryEffectOnEveryRank) {
-  expect_counted_alike(std::string(kPlate) + "dynamics: {method: relaxation, tolerance: 1.0e-14, steps: 1000}\n", 30);
+  expect_counted_alike(
+      std::string(kPlate) + "dynamics: {method: relaxation, tolerance: 1.0e-14, steps: 1000}\n", 30);
 }
 
 }  // namespace

@@ -14,8 +14,8 @@
 #include "damage/critical_stretch.hpp"
 #include "exec/serial_steps.hpp"
 #include "input/scene.hpp"
-#include "petsc/partition.hpp"
 #include "model/model.hpp"
+#include "petsc/partition.hpp"
 #include "run/dynamic_run.hpp"
 
 namespace pd {
@@ -35,8 +35,10 @@ Scene scene(const std::string& name, const std::vector<std::pair<std::string, st
 }
 
 Scene notched_plate() {
-  return scene("notched_plate.yaml", {{"count: 50", "count: 24"}, {"steps: 150", "steps: 80"},
-                                      {"snapshot_every: 10", "snapshot_every: 0"}, {"checkpoint_every: 50", "checkpoint_every: 0"}});
+  return scene("notched_plate.yaml", {{"count: 50", "count: 24"},
+                                      {"steps: 150", "steps: 80"},
+                                      {"snapshot_every: 10", "snapshot_every: 0"},
+                                      {"checkpoint_every: 50", "checkpoint_every: 0"}});
 }
 
 // The same scene on the PETSc backend: run_dynamic then steps each rank's own particles.
@@ -99,7 +101,8 @@ void expect_same_fracture(MakeScene make, long long min_broken) {
   ASSERT_EQ(serial.series.size(), distributed.series.size());
   for (std::size_t k = 0; k < serial.series.size(); ++k) {
     EXPECT_EQ(serial.series[k].broken_bonds, distributed.series[k].broken_bonds) << "row " << k;
-    EXPECT_NEAR(serial.series[k].kinetic, distributed.series[k].kinetic, 1e-10 * serial.series[k].kinetic + 1e-300);
+    EXPECT_NEAR(serial.series[k].kinetic, distributed.series[k].kinetic,
+                1e-10 * serial.series[k].kinetic + 1e-300);
   }
 }
 
@@ -108,8 +111,12 @@ TEST(DistributedDynamics, NotchedPlateFractureEqualsSerial) { expect_same_fractu
 // The notched 3D bar (scenes/notched_bar_3d.yaml) at spacing 2 mm for 100 steps (33 us):
 // the crack has left the notch (the full scene's separation is in docs/scaling.md).
 TEST(DistributedDynamics, NotchedBar3DFractureEqualsSerial) {
-  expect_same_fracture([] { return scene("notched_bar_3d.yaml", {{"spacing: 0.001 ", "spacing: 0.002 "}, {"steps: 300", "steps: 100"}}); },
-                       200);
+  expect_same_fracture(
+      [] {
+        return scene("notched_bar_3d.yaml",
+                     {{"spacing: 0.001 ", "spacing: 0.002 "}, {"steps: 300", "steps: 100"}});
+      },
+      200);
 }
 
 // Adaptive dynamic relaxation over the ranks against the serial iteration. Unlike the
@@ -155,7 +162,8 @@ void expect_same_relaxation(MakeScene make) {
   EXPECT_LT(relative_difference(serial.u, distributed.u), 1e-8);
   ASSERT_EQ(s.probes.size(), ss.probes.size());
   for (std::size_t k = 0; k < ss.probes.size(); ++k)
-    EXPECT_NEAR(s.probes[k].value, ss.probes[k].value, 1e-8 * std::abs(ss.probes[k].value)) << ss.probes[k].name;
+    EXPECT_NEAR(s.probes[k].value, ss.probes[k].value, 1e-8 * std::abs(ss.probes[k].value))
+        << ss.probes[k].name;
 }
 
 // scenes/relaxation_uniaxial.yaml (2D, 400 particles): the loads' reference and the
@@ -171,9 +179,10 @@ TEST(DistributedRelaxation, UniaxialEqualsSerial) {
 // tolerance ball is small enough for the 1e-8 comparison.
 TEST(DistributedRelaxation, CubeTension3DEqualsSerial) {
   expect_same_relaxation([] {
-    return scene("cube_tension.yaml", {{"output: {directory: out/cube_tension}",
-                                        "output: {directory: out/cube_tension}\ndynamics: {method: relaxation, tolerance: "
-                                        "1.0e-11, steps: 20000, output_every: 100}"}});
+    return scene("cube_tension.yaml",
+                 {{"output: {directory: out/cube_tension}",
+                   "output: {directory: out/cube_tension}\ndynamics: {method: relaxation, tolerance: "
+                   "1.0e-11, steps: 20000, output_every: 100}"}});
   });
 }
 

@@ -21,7 +21,8 @@ struct Cloud {
 };
 
 // The unit square (dim 2) or cube (dim 3).
-inline Cloud unit_box_cloud(int dim, double h, double horizon_ratio = 3.5, double perturbation = 0.2, int seed = 11) {
+inline Cloud unit_box_cloud(int dim, double h, double horizon_ratio = 3.5, double perturbation = 0.2,
+                            int seed = 11) {
   Cloud c;
   c.h = h;
   c.delta = horizon_ratio * h;

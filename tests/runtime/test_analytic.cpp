@@ -24,11 +24,14 @@ TEST(Analytic, ConstantStrainFieldsAtTheLoadedEdge) {
   const auto m = pd::IsotropicElastic::from_E_nu(1000.0, 0.25);
   const double T = 1e-3, H = 10, nu = 0.25, E = 1000;
   const double top[2] = {5.0, H};
-  auto u = [&](const char* name) { return pd::AnalyticField(pd::FieldSpec{name, {{"traction", T}}}, m).displacement(top); };
+  auto u = [&](const char* name) {
+    return pd::AnalyticField(pd::FieldSpec{name, {{"traction", T}}}, m).displacement(top);
+  };
   EXPECT_NEAR(u("uniaxial")[1], T * H * (1 - nu - 2 * nu * nu) / (E * (1 - nu)), 1e-15);
   EXPECT_NEAR(u("biaxial")[1], T * H * (1 - nu - 2 * nu * nu) / E, 1e-15);
   EXPECT_NEAR(u("shear")[0], 2 * T * H * (1 + nu) / E, 1e-15);
-  EXPECT_THROW(pd::AnalyticField(pd::FieldSpec{"shear", {{"traction", T}, {"typo", 1}}}, m), std::invalid_argument);
+  EXPECT_THROW(pd::AnalyticField(pd::FieldSpec{"shear", {{"traction", T}, {"typo", 1}}}, m),
+               std::invalid_argument);
 }
 
 TEST(Analytic, RotationMovesPointsRigidly) {
@@ -48,8 +51,15 @@ TEST(Analytic, InclusionFieldSatisfiesTheInterfaceAndFarFieldConditions) {
   // radial traction is continuous at r = a and tends to T far away; u_r is continuous.
   const double E = 2.0, nu = 0.3, Ei = 50.0, nui = 0.2, T = 0.01, a = 0.4;
   const auto m = pd::IsotropicElastic::from_E_nu(E, nu), mi = pd::IsotropicElastic::from_E_nu(Ei, nui);
-  const pd::AnalyticField f(pd::FieldSpec{"inclusion", {{"traction", T}, {"radius", a}, {"E_inclusion", Ei}, {"nu_inclusion", nui}}}, m);
-  auto ur = [&](double r) { const double x[2] = {r * 0.6, r * 0.8}; const auto u = f.displacement(x); return u[0] * 0.6 + u[1] * 0.8; };
+  const pd::AnalyticField f(
+      pd::FieldSpec{"inclusion",
+                    {{"traction", T}, {"radius", a}, {"E_inclusion", Ei}, {"nu_inclusion", nui}}},
+      m);
+  auto ur = [&](double r) {
+    const double x[2] = {r * 0.6, r * 0.8};
+    const auto u = f.displacement(x);
+    return u[0] * 0.6 + u[1] * 0.8;
+  };
   auto srr = [&](double r, const pd::IsotropicElastic& k) {
     const double e = 1e-6, err = (ur(r + e) - ur(r - e)) / (2 * e), ett = ur(r) / r;
     return k.lambda * (err + ett) + 2 * k.G * err;
@@ -62,7 +72,9 @@ TEST(Analytic, InclusionFieldSatisfiesTheInterfaceAndFarFieldConditions) {
   EXPECT_NEAR(at_interface(-1, mi), at_interface(1, m), 1e-8);
   EXPECT_NEAR(srr(1e3, m), T, 1e-7);
   // Equal materials: the uniform biaxial field, u_r = T r / (2 (lambda + mu)).
-  const pd::AnalyticField same(pd::FieldSpec{"inclusion", {{"traction", T}, {"radius", a}, {"E_inclusion", E}, {"nu_inclusion", nu}}}, m);
+  const pd::AnalyticField same(
+      pd::FieldSpec{"inclusion", {{"traction", T}, {"radius", a}, {"E_inclusion", E}, {"nu_inclusion", nu}}},
+      m);
   const double x[2] = {0.1, 0.2};
   EXPECT_NEAR(same.displacement(x)[1], T * 0.2 / (2 * (m.lambda + m.G)), 1e-15);
 }

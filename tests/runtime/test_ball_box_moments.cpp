@@ -57,7 +57,8 @@ TEST(BallBoxMoments, CutBallsMatchABruteForceAngularIntegration) {
       const double exact = pd::ball_box_moment_2d(f, deltas[k], centres[k], kUnitBox);
       const double brute = brute_force(f, deltas[k], centres[k], kUnitBox, 400000);
       EXPECT_NEAR(exact, brute, 1e-10 * std::pow(deltas[k], f.degree() - f.inverse_r_power + 2))
-          << "centre " << k << ", b = (" << f.powers[0] << ", " << f.powers[1] << "), s = " << f.inverse_r_power;
+          << "centre " << k << ", b = (" << f.powers[0] << ", " << f.powers[1]
+          << "), s = " << f.inverse_r_power;
     }
 }
 

@@ -18,7 +18,8 @@ namespace {
 double reference(const pd::BondMonomial& f, double delta, const double* c, const double* disk, double a) {
   std::vector<double> x, w;
   pd_test::gauss_legendre(40, x, w);  // Newton on P_n: not the library's Golub-Welsch rule
-  const double g[2] = {disk[0] - c[0], disk[1] - c[1]}, dist = std::hypot(g[0], g[1]), phi = std::atan2(g[1], g[0]);
+  const double g[2] = {disk[0] - c[0], disk[1] - c[1]}, dist = std::hypot(g[0], g[1]),
+               phi = std::atan2(g[1], g[0]);
   const double L = std::sqrt(dist * dist - a * a);
   auto half_width = [&](double r) {
     if (r <= dist - a) return 0.0;
@@ -56,16 +57,19 @@ TEST(BallDiskShadowMoments, EqualTheRadialFirstIntegral) {
     double disk[2], a, delta;
   };
   // The disk inside the horizon; crossing it (tangent points inside and outside); beyond it.
-  const Case cases[] = {{{0.6, 0.3}, 0.25, 1.5}, {{0.9, 0.1}, 0.5, 1.0}, {{-0.7, -1.1}, 0.9, 1.2}, {{0.4, 0.2}, 0.05, 0.6}};
+  const Case cases[] = {
+      {{0.6, 0.3}, 0.25, 1.5}, {{0.9, 0.1}, 0.5, 1.0}, {{-0.7, -1.1}, 0.9, 1.2}, {{0.4, 0.2}, 0.05, 0.6}};
   for (const Case& k : cases)
-    for (const auto& f : {pd::BondMonomial{{0, 0, 0}, 0}, pd::BondMonomial{{1, 0, 0}, 0}, pd::BondMonomial{{2, 1, 0}, 0},
-                          pd::BondMonomial{{3, 0, 0}, 3}, pd::BondMonomial{{2, 2, 0}, 3}, pd::BondMonomial{{1, 3, 0}, 3},
-                          pd::BondMonomial{{0, 4, 0}, 3}}) {
+    for (const auto& f :
+         {pd::BondMonomial{{0, 0, 0}, 0}, pd::BondMonomial{{1, 0, 0}, 0}, pd::BondMonomial{{2, 1, 0}, 0},
+          pd::BondMonomial{{3, 0, 0}, 3}, pd::BondMonomial{{2, 2, 0}, 3}, pd::BondMonomial{{1, 3, 0}, 3},
+          pd::BondMonomial{{0, 4, 0}, 3}}) {
       const double got = pd::ball_disk_shadow_moment_2d(f, k.delta, c, k.disk, k.a);
       const double ref = reference(f, k.delta, c, k.disk, k.a);
       const double scale = std::pow(k.delta, f.degree() - f.inverse_r_power + 2);
-      EXPECT_NEAR(got, ref, 1e-11 * scale) << "disk (" << k.disk[0] << ", " << k.disk[1] << ") a " << k.a << " powers "
-                                           << f.powers[0] << f.powers[1] << " s " << f.inverse_r_power;
+      EXPECT_NEAR(got, ref, 1e-11 * scale)
+          << "disk (" << k.disk[0] << ", " << k.disk[1] << ") a " << k.a << " powers " << f.powers[0]
+          << f.powers[1] << " s " << f.inverse_r_power;
     }
 }
 

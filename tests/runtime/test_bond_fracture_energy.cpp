@@ -21,7 +21,8 @@ constexpr double kE = 72e9, kNu = 1.0 / 3.0, kDelta = 0.003, kG0 = 8.0;
 
 double crossing_bond_energy(bool conical, double s0) {
   const double pi = std::numbers::pi;
-  const double c0 = conical ? 24 * kE / (pi * std::pow(kDelta, 3) * (1 - kNu)) : 9 * kE / (pi * std::pow(kDelta, 3));
+  const double c0 =
+      conical ? 24 * kE / (pi * std::pow(kDelta, 3) * (1 - kNu)) : 9 * kE / (pi * std::pow(kDelta, 3));
   constexpr int n = 800;  // grid of bond vectors over [-delta, delta] x [0, delta]
   const double d = kDelta / n;
   double sum = 0;
@@ -68,6 +69,7 @@ TEST(BondFractureEnergy, StateBasedLawsAreNotPairwise) {
   const pd::abi::LawDescriptor* law = pd::abi::find_law("silling_plane_strain");
   ASSERT_NE(law, nullptr);
   EXPECT_FALSE(pd::is_pairwise_law(*law));
-  EXPECT_THROW(pd::pairwise_fracture_energy_per_stretch2(*law, {1.0, 1.0}, [](double, double) { return 1.0; }, 1.0),
+  EXPECT_THROW(pd::pairwise_fracture_energy_per_stretch2(
+                   *law, {1.0, 1.0}, [](double, double) { return 1.0; }, 1.0),
                std::invalid_argument);
 }

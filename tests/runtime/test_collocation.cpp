@@ -31,12 +31,14 @@ std::vector<double> random_field(int n, double scale, unsigned seed) {
 // V_i sum_j [C_a (lambda - mu) (theta_i + theta_j) xi + C_b mu (xi (x) xi / |xi|^2) eta]
 // K_ij omega_{j,i} / m_i ... with each family's m and theta from its own weights; the
 // t_j<i> term uses m_j (the law divides by the family's weighted volume).
-std::vector<double> paper_forces(const obq_test::Cloud& c, const pd::Collocation& col, const std::vector<double>& u) {
+std::vector<double> paper_forces(const obq_test::Cloud& c, const pd::Collocation& col,
+                                 const std::vector<double>& u) {
   const pd::Bonds& B = c.bonds;
   const int n = c.particles.size();
   std::vector<double> m(n, 0.0), theta(n, 0.0), f(2 * n, 0.0);
   for (int p = 0; p < n; ++p) {
-    for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b) m[p] += B.w[b] * B.length[b] * B.length[b] * col.weight[b];
+    for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b)
+      m[p] += B.w[b] * B.length[b] * B.length[b] * col.weight[b];
     for (int b = B.offsets[p]; b < B.offsets[p + 1]; ++b) {
       const int q = B.neighbor[b];
       theta[p] += 2 / m[p] * B.w[b] * col.weight[b] *
@@ -81,7 +83,8 @@ TEST(Collocation, ForcesAreThePapersSumOverNonSymmetricWeights) {
   EXPECT_LT(worst, 1e-12 * scale);
   // The weights really are not symmetric (else this test would not test collocation).
   double asym = 0;
-  for (int b = c.bonds.offsets[200]; b < c.bonds.offsets[201]; ++b) asym = std::max(asym, std::abs(col.row_scale[b] - 1));
+  for (int b = c.bonds.offsets[200]; b < c.bonds.offsets[201]; ++b)
+    asym = std::max(asym, std::abs(col.row_scale[b] - 1));
   EXPECT_GT(asym, 1e-3);
 }
 
@@ -114,7 +117,8 @@ TEST(Collocation, TangentProductAndDiagonalMatchFiniteDifferencesOnAPerturbedClo
       for (int i = 0; i < N; ++i) worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
     }
     EXPECT_LT(worst, 1e-7 * scale) << name;
-    EXPECT_GT((Kd - Kd.transpose()).cwiseAbs().maxCoeff(), 1e-3 * scale) << name << ": expected a non-symmetric K";
+    EXPECT_GT((Kd - Kd.transpose()).cwiseAbs().maxCoeff(), 1e-3 * scale)
+        << name << ": expected a non-symmetric K";
     // The matrix-free product and the diagonal against the assembled matrix.
     const std::vector<double> v = random_field(N, 1.0, 9);
     std::vector<double> Kv(N), diag(N);
@@ -170,7 +174,8 @@ TEST(Collocation, SymmetricPairWeightsConserveMomentumAndKeepALatticeInterior) {
   // Regular lattice: an interior family's OBQ weights equal its neighbours' mirrored
   // ones, so symmetrising leaves every family whose neighbours all have full balls as it was.
   const obq_test::Cloud lattice = obq_test::unit_box_cloud(2, 1.0 / 24, 3.5, 0.0);
-  const std::vector<double> lw = pd::obq_weights(lattice.particles, lattice.bonds, pd::paper001_space(2), lattice.full_ball);
+  const std::vector<double> lw =
+      pd::obq_weights(lattice.particles, lattice.bonds, pd::paper001_space(2), lattice.full_ball);
   const std::vector<double> ls = pd::symmetric_pair_weights(lattice.particles, lattice.bonds, lw);
   int checked = 0;
   for (int p = 0; p < lattice.particles.size(); ++p) {
@@ -192,8 +197,8 @@ TEST(Collocation, SymmetricPairWeightsGiveASymmetricSystemWithAnEnergy) {
   // The paper's unsymmetric weights on the same cloud keep the non-symmetric path.
   const obq_test::Cloud c = obq_test::unit_square_cloud(1.0 / 12);
   const pd::Collocation plain = obq_test::paper001_collocation(c);
-  const pd::Collocation sym =
-      pd::make_collocation(c.particles, c.bonds, pd::symmetric_pair_weights(c.particles, c.bonds, plain.weight));
+  const pd::Collocation sym = pd::make_collocation(
+      c.particles, c.bonds, pd::symmetric_pair_weights(c.particles, c.bonds, plain.weight));
   EXPECT_TRUE(sym.pair_symmetric);
   EXPECT_FALSE(plain.pair_symmetric);
   const auto* law = pd::abi::find_law("lps_plane_strain");

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "assembly/family_gather.hpp"
 #include "assembly/compensation.hpp"
+#include "assembly/family_gather.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
@@ -31,8 +31,8 @@ struct Plate {
     const auto* law = pd::abi::find_law(law_name);
     const auto* influence = pd::abi::find_influence("const");
     b = pd::find_quadrature_bonds(p, ratio, 1.0, q, influence->weight);
-    params = {pd::law_parameters(*law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain,
-                                 pd::verify::declared_test_values(*law))};
+    params = {pd::law_parameters(*law, pd::IsotropicElastic::from_E_nu(1.0, 0.25),
+                                 pd::PlaneAssumption::Strain, pd::verify::declared_test_values(*law))};
     in = {law, &params, ratio, 1.0, q, influence->weight};
   }
   int at(double x, double y) const {
@@ -74,9 +74,11 @@ TEST(Compensation, CutsTheSurfaceShortfallOfTheTrialEnergy) {
   const std::vector<double> beta = pd::compensation_factors(plate.p, plate.b, plate.in);
   const double full = plate.length_volume_sum(plate.at(8.5, 8.5));
   double worst_before = 0, worst_after = 0;
-  for (int i = 0; i < plate.p.size(); ++i) worst_before = std::max(worst_before, std::abs(plate.length_volume_sum(i) / full - 1));
+  for (int i = 0; i < plate.p.size(); ++i)
+    worst_before = std::max(worst_before, std::abs(plate.length_volume_sum(i) / full - 1));
   pd::apply_compensation(plate.b, beta);
-  for (int i = 0; i < plate.p.size(); ++i) worst_after = std::max(worst_after, std::abs(plate.length_volume_sum(i) / full - 1));
+  for (int i = 0; i < plate.p.size(); ++i)
+    worst_after = std::max(worst_after, std::abs(plate.length_volume_sum(i) / full - 1));
   std::printf("worst |W/W_inf - 1|: %.4f without, %.4f with the compensation\n", worst_before, worst_after);
   EXPECT_GT(worst_before, 0.5);
   EXPECT_LT(worst_after, 0.5 * worst_before);
@@ -90,6 +92,7 @@ TEST(Compensation, EveryLawWithAnEnergyHasAFactorOfOneInside) {
     const Plate plate(law.name, pd::Quadrature::Volume, 16, 3.0);
     const std::vector<double> beta = pd::compensation_factors(plate.p, plate.b, plate.in);
     EXPECT_NEAR(beta[plate.at(8.5, 8.5)], 1.0, 1e-10) << law.name;
-    std::printf("%s: beta face %.4f corner %.4f\n", law.name, beta[plate.at(8.5, 0.5)], beta[plate.at(0.5, 0.5)]);
+    std::printf("%s: beta face %.4f corner %.4f\n", law.name, beta[plate.at(8.5, 0.5)],
+                beta[plate.at(0.5, 0.5)]);
   }
 }

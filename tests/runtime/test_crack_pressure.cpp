@@ -2,9 +2,8 @@
 // p x crack length, whatever the perturbation (on the paper's lattice it is by construction).
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <Eigen/Sparse>
+#include <cmath>
 
 #include "assembly/sparsity_pattern.hpp"
 #include "discretize/discretization.hpp"

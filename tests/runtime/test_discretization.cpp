@@ -37,8 +37,7 @@ TEST(Discretization, HolesRemoveParticles) {
   hole.radius = 0.5;
   s.holes.push_back(hole);
   const pd::Particles p = pd::discretize(s);
-  for (int i = 0; i < p.size(); ++i)
-    EXPECT_GT(std::hypot(p.x[2 * i] - 1, p.x[2 * i + 1] - 0.75), 0.5);
+  for (int i = 0; i < p.size(); ++i) EXPECT_GT(std::hypot(p.x[2 * i] - 1, p.x[2 * i + 1] - 0.75), 0.5);
   const double removed_area = (40 * 30 - p.size()) * 0.05 * 0.05;
   EXPECT_NEAR(removed_area, M_PI * 0.25, 0.02);
 }
@@ -99,7 +98,8 @@ TEST(Discretization, ThreeDimensionalPolygonCrack) {
   const pd::Particles p = pd::discretize(s);
   pd::Bonds b = pd::find_bonds(p, 0.15, unit);
   pd::Crack crack;  // the square x in [0.5, 1.5], y in [0.5, 1], in the plane z = 0.52
-  crack.points = {pd::Point{0.5, 0.5, 0.52}, pd::Point{1.5, 0.5, 0.52}, pd::Point{1.5, 1.0, 0.52}, pd::Point{0.5, 1.0, 0.52}};
+  crack.points = {pd::Point{0.5, 0.5, 0.52}, pd::Point{1.5, 0.5, 0.52}, pd::Point{1.5, 1.0, 0.52},
+                  pd::Point{0.5, 1.0, 0.52}};
   pd::cut_bonds({crack}, p, b);
   for (int i = 0; i < p.size(); ++i)
     for (int e = b.offsets[i]; e < b.offsets[i + 1]; ++e) {

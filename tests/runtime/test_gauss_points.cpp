@@ -25,10 +25,10 @@
 #include "discretize/mls.hpp"
 #include "discretize/partial_volume.hpp"
 #include "input/scene.hpp"
+#include "material/elastic_constants.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 #include "verify/test_values.hpp"  // a law's own parameters at its declared test values
-#include "material/elastic_constants.hpp"
 
 namespace {
 
@@ -165,8 +165,10 @@ TEST(GaussPointThreads, OneAndTwoThreadsGiveTheSameBits) {
       ASSERT_EQ(one.f[i], two.f[i]) << name << " force " << i;
       ASSERT_EQ(one.Kv[i], two.Kv[i]) << name << " product " << i;
     }
-    for (std::size_t i = 0; i < one.sigma.size(); ++i) ASSERT_EQ(one.sigma[i], two.sigma[i]) << name << " stress " << i;
-    for (std::size_t i = 0; i < one.outputs.size(); ++i) ASSERT_EQ(one.outputs[i], two.outputs[i]) << name << " output " << i;
+    for (std::size_t i = 0; i < one.sigma.size(); ++i)
+      ASSERT_EQ(one.sigma[i], two.sigma[i]) << name << " stress " << i;
+    for (std::size_t i = 0; i < one.outputs.size(); ++i)
+      ASSERT_EQ(one.outputs[i], two.outputs[i]) << name << " output " << i;
     EXPECT_EQ(one.energy, two.energy) << name;
     double fmax = 0;
     for (double x : one.f) fmax = std::max(fmax, std::abs(x));
@@ -204,14 +206,16 @@ TEST_P(GaussPointTangent, StiffnessProductAndDiagonalAreTheDerivativeOfTheForces
     u[j] -= 2 * eps;
     a.assemble(u.data(), fm.data(), nullptr);
     u[j] += eps;
-    for (std::size_t i = 0; i < N; ++i) worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
+    for (std::size_t i = 0; i < N; ++i)
+      worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
   }
   EXPECT_LT(worst, 1e-6 * scale) << law.name << ": largest |K - FD| " << worst << " of max |K| " << scale;
   // The product and the diagonal.
   std::vector<double> Kv(N), diag(N);
   a.stiffness_product(u.data(), v.data(), Kv.data());
   const Eigen::VectorXd ref = Kd * Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(N));
-  for (std::size_t i = 0; i < N; ++i) EXPECT_NEAR(Kv[i], ref[i], 1e-11 * ref.cwiseAbs().maxCoeff()) << law.name << " " << i;
+  for (std::size_t i = 0; i < N; ++i)
+    EXPECT_NEAR(Kv[i], ref[i], 1e-11 * ref.cwiseAbs().maxCoeff()) << law.name << " " << i;
   a.stiffness_diagonal(u.data(), diag.data());
   for (std::size_t i = 0; i < N; ++i) EXPECT_NEAR(diag[i], Kd(i, i), 1e-12 * scale) << law.name << " " << i;
   // The matrix-free bound on the Gershgorin row sums (the explicit step) is at least the
@@ -228,8 +232,8 @@ TEST_P(GaussPointTangent, StiffnessProductAndDiagonalAreTheDerivativeOfTheForces
   // Measured: 1.9-3.4 (2D), 2.1-5.3 (3D): the MLS weights are partly negative and the bound
   // drops the cancellations between bonds. The estimate is stable, up to 2.3x short.
   EXPECT_LT(loosest_max / exact_max, 6.0) << law.name;
-  std::printf("%s: row-sum bound / exact row sum: largest row %.3f, worst row %.3f\n", law.name, loosest_max / exact_max,
-              loosest);
+  std::printf("%s: row-sum bound / exact row sum: largest row %.3f, worst row %.3f\n", law.name,
+              loosest_max / exact_max, loosest);
   // The forces are -dE/du for a law with an energy: the map P^T is the chain rule.
   if (law.damaged.energy != nullptr) {
     double fworst = 0, fscale = 0;
@@ -284,8 +288,10 @@ TEST_P(GaussPointStress, IsHookesLawWithinTheQuadratureError) {
   const auto params = params_of(law);
   const pd::GaussPointAssembler a(p, gp, law, law.damaged, params, false);
   Eigen::MatrixXd e(d, d);
-  if (d == 2) e << 1.0e-4, 0.4e-4, 0.4e-4, -0.3e-4;
-  else e << 1.0e-4, 0.4e-4, -0.2e-4, 0.4e-4, -0.3e-4, 0.5e-4, -0.2e-4, 0.5e-4, 0.6e-4;
+  if (d == 2)
+    e << 1.0e-4, 0.4e-4, 0.4e-4, -0.3e-4;
+  else
+    e << 1.0e-4, 0.4e-4, -0.2e-4, 0.4e-4, -0.3e-4, 0.5e-4, -0.2e-4, 0.5e-4, 0.6e-4;
   std::vector<double> u(p.x.size());
   for (int i = 0; i < p.size(); ++i)
     for (int r = 0; r < d; ++r)
@@ -301,8 +307,8 @@ TEST_P(GaussPointStress, IsHookesLawWithinTheQuadratureError) {
   ASSERT_NE(law.damaged.energy, nullptr);
   const double W = a.family_energy_density(centre, u.data());
   const double w_error = std::abs(W / energy - 1);
-  std::printf("%s delta/h=%g gauss 2^%d: |sigma - C:eps| / |C:eps| = %.4f, energy error %.4f\n", law.name, delta, d,
-              error, w_error);
+  std::printf("%s delta/h=%g gauss 2^%d: |sigma - C:eps| / |C:eps| = %.4f, energy error %.4f\n", law.name,
+              delta, d, error, w_error);
   EXPECT_LT(error, w_error + 0.01) << law.name << "\nsigma\n" << sigma << "\nC:eps\n" << expected;
 }
 
@@ -319,7 +325,8 @@ INSTANTIATE_TEST_SUITE_P(EnergyLaws, GaussPointStress, testing::ValuesIn(energy_
 namespace {
 std::string scene_error(const std::string& domain_extra) {
   const std::string yaml = R"(dimension: 2
-domain: {box: {min: [0, 0], max: [1, 1]}, count: 10)" + domain_extra + R"(}
+domain: {box: {min: [0, 0], max: [1, 1]}, count: 10)" +
+                           domain_extra + R"(}
 horizon: {ratio: 3.0}
 law: lps_plane_strain
 materials: [{E: 1.0, nu: 0.25}]
@@ -335,11 +342,14 @@ materials: [{E: 1.0, nu: 0.25}]
 
 TEST(GaussPointScene, ErrorsNameTheKey) {
   EXPECT_EQ(scene_error(", gauss_points: {per_axis: 2, support: 3.5}"), "");
-  EXPECT_NE(scene_error(", gauss_points: {per_axis: 4}").find("g.yaml:2: domain.gauss_points.per_axis: per_axis is 1, 2 or 3"),
+  EXPECT_NE(scene_error(", gauss_points: {per_axis: 4}")
+                .find("g.yaml:2: domain.gauss_points.per_axis: per_axis is 1, 2 or 3"),
             std::string::npos)
       << scene_error(", gauss_points: {per_axis: 4}");
-  EXPECT_NE(scene_error(", gauss_points: {support: 0.5}").find("domain.gauss_points.support"), std::string::npos);
-  EXPECT_NE(scene_error(", quadrature: partial_linear, gauss_points: {per_axis: 2}").find("not with another quadrature"),
+  EXPECT_NE(scene_error(", gauss_points: {support: 0.5}").find("domain.gauss_points.support"),
+            std::string::npos);
+  EXPECT_NE(scene_error(", quadrature: partial_linear, gauss_points: {per_axis: 2}")
+                .find("not with another quadrature"),
             std::string::npos);
   EXPECT_NE(scene_error(", gauss_points: {per_axis: 2, bogus: 1}").find("bogus"), std::string::npos);
 }
@@ -358,7 +368,8 @@ solver: {backend: petsc}
     pd::parse_scene(yaml, "g.yaml");
     FAIL() << "gauss_points with backend petsc was accepted";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("g.yaml:6: solver.backend: backend petsc does not integrate over Gauss points"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "g.yaml:6: solver.backend: backend petsc does not integrate over Gauss points"),
               std::string::npos)
         << e.what();
   }
@@ -383,11 +394,13 @@ probes:
 output: {vtu: false, csv: false}
 )";
   std::string log;
-  pd::Simulation sim(pd::parse_scene(yaml, "plate.yaml"), [&](const std::string& line) { log += line + "\n"; });
+  pd::Simulation sim(pd::parse_scene(yaml, "plate.yaml"),
+                     [&](const std::string& line) { log += line + "\n"; });
   const pd::RunSummary r = sim.run(false);
   ASSERT_TRUE(r.newton.converged);
   ASSERT_EQ(r.probes.size(), 2u);
-  const double lambda = 0.4, mu = 0.4, e11 = 1e-4, e22 = -0.3e-4, e12 = 0.4e-4;  // E = 1, nu = 1/4, plane strain
+  const double lambda = 0.4, mu = 0.4, e11 = 1e-4, e22 = -0.3e-4,
+               e12 = 0.4e-4;  // E = 1, nu = 1/4, plane strain
   EXPECT_NEAR(r.probes[0].value, lambda * (e11 + e22) + 2 * mu * e22, 1e-10);
   EXPECT_NEAR(r.probes[1].value, 2 * mu * e12, 1e-10);
   EXPECT_NE(log.find("gauss points: 2^2 per cell"), std::string::npos) << log;
@@ -411,14 +424,17 @@ TEST(GaussPointCollocation, IsNotMomentumBalancedWhereTheVariationalFormIs) {
     return true;
   };
   // Affine: u = eps x.
-  for (int i = 0; i < p.size(); ++i) u[i * 2] = 1e-3 * p.x[i * 2] + 4e-4 * p.x[i * 2 + 1], u[i * 2 + 1] = -2e-4 * p.x[i * 2 + 1];
+  for (int i = 0; i < p.size(); ++i)
+    u[i * 2] = 1e-3 * p.x[i * 2] + 4e-4 * p.x[i * 2 + 1], u[i * 2 + 1] = -2e-4 * p.x[i * 2 + 1];
   a.collocation_forces(u.data(), fc.data());
   a.assemble(u.data(), fv.data(), nullptr);
   double fmax = 0, coll_in = 0, var_in = 0;
   for (std::size_t i = 0; i < N; ++i) fmax = std::max(fmax, std::abs(fc[i]));
   for (int i = 0; i < p.size(); ++i)
     if (interior(i))
-      for (int c = 0; c < 2; ++c) coll_in = std::max(coll_in, std::abs(fc[i * 2 + c])), var_in = std::max(var_in, std::abs(fv[i * 2 + c]));
+      for (int c = 0; c < 2; ++c)
+        coll_in = std::max(coll_in, std::abs(fc[i * 2 + c])),
+        var_in = std::max(var_in, std::abs(fv[i * 2 + c]));
   EXPECT_LT(coll_in, 1e-12 * fmax);
   EXPECT_LT(var_in, 1e-12 * fmax);
   // Quadratic: u = 1e-3 (x^2, x y) / 16.
@@ -433,11 +449,15 @@ TEST(GaussPointCollocation, IsNotMomentumBalancedWhereTheVariationalFormIs) {
     for (int c = 0; c < 2; ++c) {
       sc[c] += fc[i * 2 + c], sv[c] += fv[i * 2 + c];
       ac += std::abs(fc[i * 2 + c]), av += std::abs(fv[i * 2 + c]);
-      if (interior(i)) diff = std::max(diff, std::abs(fc[i * 2 + c] - fv[i * 2 + c])), size = std::max(size, std::abs(fv[i * 2 + c]));
+      if (interior(i))
+        diff = std::max(diff, std::abs(fc[i * 2 + c] - fv[i * 2 + c])),
+        size = std::max(size, std::abs(fv[i * 2 + c]));
     }
   const double imbalance = std::hypot(sc[0], sc[1]) / ac, balanced = std::hypot(sv[0], sv[1]) / av;
-  std::printf("collocation |sum f| / sum |f| = %.3e (variational %.3e); interior max |f_coll - f_var| / max |f_var| = %.3e\n",
-              imbalance, balanced, diff / size);
+  std::printf(
+      "collocation |sum f| / sum |f| = %.3e (variational %.3e); interior max |f_coll - f_var| / max |f_var| "
+      "= %.3e\n",
+      imbalance, balanced, diff / size);
   EXPECT_LT(balanced, 1e-13);
   EXPECT_GT(imbalance, 1e-3);  // measured 2.97e-3
   // In the interior of a lattice the two forms agree (measured 8.6e-13): the reactions the
@@ -468,7 +488,8 @@ probes:
 output: {vtu: false, csv: false}
 )";
   std::string log;
-  pd::DynamicSimulation sim(pd::parse_scene(yaml, "plate.yaml"), [&](const std::string& line) { log += line + "\n"; });
+  pd::DynamicSimulation sim(pd::parse_scene(yaml, "plate.yaml"),
+                            [&](const std::string& line) { log += line + "\n"; });
   const pd::RunSummary r = sim.run(false);
   ASSERT_TRUE(r.dynamics.has_value());
   EXPECT_GT(r.dynamics->dt_stable, 0.0);

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "run/manufactured_solve.hpp"
 #include "fields/michell.hpp"
 #include "obq_cloud.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
 // Whether the segment xa-xb meets the circle (the solve's bond-breaking rule, written again).
@@ -38,9 +38,9 @@ TEST(HoleCutWeights, IntegrateTheSpaceOverTheBallPastTheHole) {
     ASSERT_LT(n, c.bonds.family_size(p));
     const double d = c.delta;
     const double ux[2] = {x[0] / d, x[1] / d}, uc[2] = {hole[0] / d, hole[1] / d};
-    const std::vector<double> w = pd::obq_family_weights_over(space, xi.data(), n, d, p, x, [&](const pd::BondMonomial& f) {
-      return pd::ball_disk_shadow_moment_2d(f, 1.0, ux, uc, a / d);
-    });
+    const std::vector<double> w = pd::obq_family_weights_over(
+        space, xi.data(), n, d, p, x,
+        [&](const pd::BondMonomial& f) { return pd::ball_disk_shadow_moment_2d(f, 1.0, ux, uc, a / d); });
     for (const pd::BondMonomial& f : space.terms) {
       double sum = 0;
       for (int j = 0; j < n; ++j) {
@@ -62,7 +62,9 @@ TEST(HoleCutWeights, TheHoleSolveReweighsEveryCutFamily) {
   pd::MichellHole hole;
   hole.T = 1, hole.a = 0.2, hole.x0 = 0.5, hole.y0 = 0.5, hole.lambda = 0.5, hole.mu = 0.5;
   const pd::ManufacturedField field{"michell", [hole](double x, double y) { return hole.displacement(x, y); },
-                                    [](double, double, double, double) { return std::array<double, 2>{0.0, 0.0}; }};
+                                    [](double, double, double, double) {
+                                      return std::array<double, 2>{0.0, 0.0};
+                                    }};
   pd::ManufacturedSetup s;
   s.n = 24;
   s.collar_outside = true;

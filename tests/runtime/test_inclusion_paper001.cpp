@@ -31,26 +31,33 @@ TEST(InclusionPaper001, PIsTheStressInsideAndTractionIsContinuous) {
     EXPECT_NEAR(s[0], P, 1e-7 * P);
     EXPECT_NEAR(s[1], P, 1e-7 * P);
   }
-  const double below = radial_stress(f, kA * (1 - 1e-4), l1, m1)[0], above = radial_stress(f, kA * (1 + 1e-4), l2, m2)[0];
+  const double below = radial_stress(f, kA * (1 - 1e-4), l1, m1)[0],
+               above = radial_stress(f, kA * (1 + 1e-4), l2, m2)[0];
   EXPECT_NEAR(below, above, 1e-3 * P);
-  const double u_in = f.displacement(kCx + kA * (1 - 1e-12), kCy)[0], u_out = f.displacement(kCx + kA * (1 + 1e-12), kCy)[0];
+  const double u_in = f.displacement(kCx + kA * (1 - 1e-12), kCy)[0],
+               u_out = f.displacement(kCx + kA * (1 + 1e-12), kCy)[0];
   EXPECT_NEAR(u_in, u_out, 1e-12);
   // Radial: u_theta = 0 off the axes too.
   const auto u = f.displacement(kCx + 0.3, kCy + 0.4);
   EXPECT_NEAR(u[0] * 0.4 - u[1] * 0.3, 0.0, 1e-15);
   // The matrix in equilibrium: sigma_rr' + (sigma_rr - sigma_tt) / r = 0 at r = 2a.
   const double r = 2 * kA, e = 1e-4;
-  const auto sp = radial_stress(f, r + e, l2, m2), sm = radial_stress(f, r - e, l2, m2), s0 = radial_stress(f, r, l2, m2);
+  const auto sp = radial_stress(f, r + e, l2, m2), sm = radial_stress(f, r - e, l2, m2),
+             s0 = radial_stress(f, r, l2, m2);
   EXPECT_NEAR((sp[0] - sm[0]) / (2 * e) + (s0[0] - s0[1]) / r, 0.0, 1e-4 * P / r);
 }
 
 TEST(InclusionPaper001, TheSceneFieldWithInclusionStressIsThePapersField) {
   const double P = 0.8, E1 = 5.0, nu1 = 0.3, E2 = 1.0, nu2 = 0.25;
   const pd::IsotropicElastic matrix = pd::IsotropicElastic::from_E_nu(E2, nu2);
-  const pd::AnalyticField scene(
-      pd::FieldSpec{"inclusion",
-                    {{"inclusion_stress", P}, {"radius", kA}, {"E_inclusion", E1}, {"nu_inclusion", nu1}, {"x0", kCx}, {"y0", kCy}}},
-      matrix);
+  const pd::AnalyticField scene(pd::FieldSpec{"inclusion",
+                                              {{"inclusion_stress", P},
+                                               {"radius", kA},
+                                               {"E_inclusion", E1},
+                                               {"nu_inclusion", nu1},
+                                               {"x0", kCx},
+                                               {"y0", kCy}}},
+                                matrix);
   const auto in = pd::lame_from_young_poisson(E1, nu1), out = pd::lame_from_young_poisson(E2, nu2);
   const auto paper = pd::paper001_inclusion(P, kA, kCx, kCy, in[0], in[1], out[0], out[1]);
   for (double x : {0.45, 0.62, 0.9})
@@ -62,14 +69,17 @@ TEST(InclusionPaper001, TheSceneFieldWithInclusionStressIsThePapersField) {
       EXPECT_NEAR(a[1], b[1], 1e-15);
     }
   // Both traction and inclusion_stress, or neither: refused.
-  EXPECT_THROW(pd::AnalyticField(pd::FieldSpec{"inclusion", {{"radius", kA}, {"E_inclusion", E1}, {"nu_inclusion", nu1}}}, matrix),
-               std::invalid_argument);
+  EXPECT_THROW(
+      pd::AnalyticField(
+          pd::FieldSpec{"inclusion", {{"radius", kA}, {"E_inclusion", E1}, {"nu_inclusion", nu1}}}, matrix),
+      std::invalid_argument);
 }
 
 // Table 2's uniform column at nu = 0.25 on its first two grids: the error falls at an order
 // above 0.9 and stays within 2x of the paper's 0.00569 and 0.00201.
 TEST(InclusionPaper001, LpsWithPairMeansConvergesOnUniformGrids) {
-  const auto in = pd::lame_from_young_poisson(6 * (1 - 0.5), 0.25), out = pd::lame_from_young_poisson(3 * (1 - 0.5), 0.25);
+  const auto in = pd::lame_from_young_poisson(6 * (1 - 0.5), 0.25),
+             out = pd::lame_from_young_poisson(3 * (1 - 0.5), 0.25);
   const auto field = pd::paper001_inclusion(1.0, kA, kCx, kCy, in[0], in[1], out[0], out[1]);
   double e[2];
   const int grids[2] = {16, 32};

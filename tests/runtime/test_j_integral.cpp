@@ -1,12 +1,11 @@
 // The nonlocal J-integral (paper 004, runtime/post/j_integral.*) on the paper's edge-notched
 // plate, coarse: zero without a notch, path independent with one, and the general
 // (state-based) form against the paper's pairwise eq. (21).
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
-
-#include <fmt/core.h>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -23,8 +22,8 @@ std::string plate(const std::string& law, int count, bool notch, const std::vect
   const double h = 1.0 / count;
   std::string contours;
   for (double c : halves)
-    contours += fmt::format("{}{{contour: {{min: [{}, {}], max: [{}, {}]}}}}", contours.empty() ? "" : ", ", 0.5 - c,
-                            0.5 - c, 0.5 + c, 0.5 + c);
+    contours += fmt::format("{}{{contour: {{min: [{}, {}], max: [{}, {}]}}}}", contours.empty() ? "" : ", ",
+                            0.5 - c, 0.5 - c, 0.5 + c, 0.5 + c);
   return fmt::format(R"(dimension: 2
 domain: {{box: {{min: [0, 0], max: [1, 1]}}, count: {}}}
 horizon: {{ratio: 3.0}}
@@ -39,8 +38,8 @@ boundary:
   - {{region: {{box: {{min: [0, {}], max: [{}, 0.5]}}}}, fixed: [y]}}
 output: {{j_integral: [{}]}}
 )",
-                     count, law, notch ? "cracks: [{segment: [[0, 0.5], [0.5, 0.5]]}]" : "", 1 - h, 0.5 - h, 0.5 - h, h,
-                     contours);
+                     count, law, notch ? "cracks: [{segment: [[0, 0.5], [0.5, 0.5]]}]" : "", 1 - h, 0.5 - h,
+                     0.5 - h, h, contours);
 }
 
 std::vector<pd::JIntegralResult> run(const std::string& yaml) {

@@ -38,7 +38,11 @@ std::vector<std::vector<double>> params_for(const pd::abi::LawDescriptor& law, d
   std::vector<double> p(law.n_params);
   for (int i = 0; i < law.n_params; ++i) {
     const std::string n = law.param_names[i];
-    p[i] = n == "lambda" ? lambda : n == "mu" || n == "G" ? mu : n == "kappa2" ? lambda + mu : n == "K" ? lambda + 2 * mu / 3 : 0;
+    p[i] = n == "lambda"           ? lambda
+           : n == "mu" || n == "G" ? mu
+           : n == "kappa2"         ? lambda + mu
+           : n == "K"              ? lambda + 2 * mu / 3
+                                   : 0;
   }
   return {p};
 }
@@ -106,14 +110,16 @@ TEST(InfluenceSeries, EveryInfluenceIsASumOfPowersOfRho) {
           << w.name << " at " << rho;
   }
   // The binomial expansions, written out.
-  const std::vector<pd::RadialPower> cubic = pd::influence_power_series(pd::abi::find_influence("cubic")->weight, "cubic");
+  const std::vector<pd::RadialPower> cubic =
+      pd::influence_power_series(pd::abi::find_influence("cubic")->weight, "cubic");
   ASSERT_EQ(cubic.size(), 4u);
   const double binomial[4] = {1, -3, 3, -1};
   for (int k = 0; k < 4; ++k) {
     EXPECT_EQ(cubic[k].power, k);
     EXPECT_NEAR(cubic[k].coefficient, binomial[k], 1e-12);
   }
-  const std::vector<pd::RadialPower> inv = pd::influence_power_series(pd::abi::find_influence("inv")->weight, "inv");
+  const std::vector<pd::RadialPower> inv =
+      pd::influence_power_series(pd::abi::find_influence("inv")->weight, "inv");
   ASSERT_EQ(inv.size(), 1u);
   EXPECT_EQ(inv[0].power, -1);
 }
@@ -130,7 +136,8 @@ TEST(InfluenceSeries, AFunctionThatIsNoSuchSumIsRefusedByName) {
 TEST(LawSpace, WeightedMomentsMatchNumericalIntegration) {
   const double delta = 0.3;
   for (int dim : {2, 3})
-    for (const char* law : {"silling", "oterkus", "correspondence", "bond_based_conical", "bond_based_constant", "lps_paper"})
+    for (const char* law :
+         {"silling", "oterkus", "correspondence", "bond_based_conical", "bond_based_constant", "lps_paper"})
       for (const char* influence : {"cubic", "inv", "quarticA"}) {
         const std::string name = std::string(law) + (dim == 2 ? "_plane_strain" : "_3d");
         const auto* w = pd::abi::find_influence(influence);
@@ -139,13 +146,15 @@ TEST(LawSpace, WeightedMomentsMatchNumericalIntegration) {
           double closed = 0;
           // c rho^k f = c delta^-k r^k f, and r^k f is the monomial g.
           for (const auto& [c, g] : pd::weighted_term(space, f))
-            closed += c * pd::ball_moment(dim, g, delta) / std::pow(delta, f.inverse_r_power - g.inverse_r_power);
-          const double numeric =
-              pd_test::integrate_numerically(dim, f, delta, [&](double rho) { return pd::radial_weight(space, rho); });
+            closed +=
+                c * pd::ball_moment(dim, g, delta) / std::pow(delta, f.inverse_r_power - g.inverse_r_power);
+          const double numeric = pd_test::integrate_numerically(
+              dim, f, delta, [&](double rho) { return pd::radial_weight(space, rho); });
           // Scale: the integral of |f| w is at most delta^(|b|-s+d) times a number of order 10.
           const double scale = std::pow(delta, f.degree() - f.inverse_r_power + dim);
-          EXPECT_NEAR(closed, numeric, 1e-12 * scale) << space.name << " powers " << f.powers[0] << f.powers[1]
-                                                       << f.powers[2] << " /r^" << f.inverse_r_power;
+          EXPECT_NEAR(closed, numeric, 1e-12 * scale)
+              << space.name << " powers " << f.powers[0] << f.powers[1] << f.powers[2] << " /r^"
+              << f.inverse_r_power;
         }
       }
 }
@@ -165,16 +174,19 @@ TEST(LawSpace, UnknownLawsAndDivergentSumsAreErrors) {
   EXPECT_THROW(pd::law_reproducing_space("my_new_law", 2, cubic, "cubic"), std::invalid_argument);
   // Oterkus's theta sum w xi / r with w = 1/r^2 is 1/r^2 in 2D: log-divergent.
   const auto r2 = pd::abi::find_influence("rational_a0_n2")->weight;
-  EXPECT_THROW(pd::law_reproducing_space("oterkus_plane_strain", 2, r2, "rational_a0_n2"), std::invalid_argument);
-  EXPECT_THROW(pd::law_reproducing_space("silling_plane_strain", 2, gaussian, "gaussian"), std::invalid_argument);
+  EXPECT_THROW(pd::law_reproducing_space("oterkus_plane_strain", 2, r2, "rational_a0_n2"),
+               std::invalid_argument);
+  EXPECT_THROW(pd::law_reproducing_space("silling_plane_strain", 2, gaussian, "gaussian"),
+               std::invalid_argument);
 }
 
 TEST(LawSpace, InteriorFamilyHasTheContinuumModuliIn2D) {
   // lps_paper_* have K = 1/r built in: their space ignores the scene's influence, and so
   // do their moduli.
-  for (const char* law : {"silling_plane_strain", "lps_plane_strain", "lps_corrected_plane_strain", "oterkus_plane_strain",
-                          "correspondence_plane_strain", "bond_based_constant_2d", "bond_based_conical_2d",
-                          "lps_paper_plane_strain", "lps_paper_corrected_plane_strain"})
+  for (const char* law :
+       {"silling_plane_strain", "lps_plane_strain", "lps_corrected_plane_strain", "oterkus_plane_strain",
+        "correspondence_plane_strain", "bond_based_constant_2d", "bond_based_conical_2d",
+        "lps_paper_plane_strain", "lps_paper_corrected_plane_strain"})
     for (const char* influence : {"cubic", "inv", "const", "quarticA"}) {
       const pd::ReproducingSpace space =
           pd::law_reproducing_space(law, 2, pd::abi::find_influence(influence)->weight, influence);
@@ -185,8 +197,10 @@ TEST(LawSpace, InteriorFamilyHasTheContinuumModuliIn2D) {
 }
 
 TEST(LawSpace, InteriorFamilyHasTheContinuumModuliIn3D) {
-  for (const char* law : {"silling_3d", "lps_3d", "oterkus_3d", "correspondence_3d", "bond_based_conical_3d", "lps_paper_3d"}) {
-    const pd::ReproducingSpace space = pd::law_reproducing_space(law, 3, pd::abi::find_influence("cubic")->weight, "cubic");
+  for (const char* law :
+       {"silling_3d", "lps_3d", "oterkus_3d", "correspondence_3d", "bond_based_conical_3d", "lps_paper_3d"}) {
+    const pd::ReproducingSpace space =
+        pd::law_reproducing_space(law, 3, pd::abi::find_influence("cubic")->weight, "cubic");
     const Measured m = measure(law, "cubic", 3, 1.0 / 8, &space);
     EXPECT_LT(m.moduli_error, 1e-10) << law;
     EXPECT_LT(m.force, 1e-10) << law;
@@ -200,9 +214,10 @@ TEST(LawSpace, Paper001SpaceAndVolumeQuadratureMissTheModuli) {
   const pd::ReproducingSpace paper = pd::paper001_space(2);
   const Measured obq = measure("silling_plane_strain", "cubic", 2, 1.0 / 24, &paper);
   const Measured volume = measure("silling_plane_strain", "cubic", 2, 1.0 / 24, nullptr);
-  std::printf("silling cubic, 24^2 perturbed, interior family: moduli error / mu: paper001 space %.3g, volume %.3g; "
-              "force * delta / mu: paper001 space %.3g, volume %.3g\n",
-              obq.moduli_error, volume.moduli_error, obq.force, volume.force);
+  std::printf(
+      "silling cubic, 24^2 perturbed, interior family: moduli error / mu: paper001 space %.3g, volume %.3g; "
+      "force * delta / mu: paper001 space %.3g, volume %.3g\n",
+      obq.moduli_error, volume.moduli_error, obq.force, volume.force);
   EXPECT_GT(obq.moduli_error, 1e-4);
   EXPECT_GT(volume.moduli_error, 1e-3);
   EXPECT_GT(volume.force, 1e-4);

@@ -6,11 +6,12 @@
 
 #include <cmath>
 
-#include "run/manufactured_solve.hpp"
 #include "fields/michell.hpp"
+#include "run/manufactured_solve.hpp"
 
 namespace {
-pd::ManufacturedResult solve_with(const char* law, const pd::ManufacturedField& field, pd::ManufacturedSetup s) {
+pd::ManufacturedResult solve_with(const char* law, const pd::ManufacturedField& field,
+                                  pd::ManufacturedSetup s) {
   s.law = law;
   return pd::solve_manufactured(field, s);
 }
@@ -19,7 +20,9 @@ pd::ManufacturedField michell_field(double lambda, double mu) {
   pd::MichellHole hole;
   hole.T = 1, hole.a = 0.2, hole.x0 = 0.5, hole.y0 = 0.5, hole.lambda = lambda, hole.mu = mu;
   return {"michell", [hole](double x, double y) { return hole.displacement(x, y); },
-          [](double, double, double, double) { return std::array<double, 2>{0.0, 0.0}; }};
+          [](double, double, double, double) {
+            return std::array<double, 2>{0.0, 0.0};
+          }};
 }
 }  // namespace
 
@@ -48,7 +51,8 @@ TEST(LpsPaperSolve, BondsBrokenByTheHoleMakeTheAnalyticVolumeAndTheCorrectionAct
   EXPECT_GT(std::fabs(paper - discrete), 0.2 * discrete);
   s.lambda = 1.7, s.mu = 0.3;
   const double plain = solve_with("lps_paper_plane_strain", michell_field(1.7, 0.3), s).rms_error;
-  const double corrected = solve_with("lps_paper_corrected_plane_strain", michell_field(1.7, 0.3), s).rms_error;
+  const double corrected =
+      solve_with("lps_paper_corrected_plane_strain", michell_field(1.7, 0.3), s).rms_error;
   EXPECT_GT(std::fabs(plain - corrected), 0.05 * plain);
 }
 

@@ -9,7 +9,8 @@
 
 namespace {
 // div sigma by central differences of the plane-strain stress of the field.
-std::array<double, 2> div_stress_fd(const pd::ManufacturedField& f, double x, double y, double lambda, double mu) {
+std::array<double, 2> div_stress_fd(const pd::ManufacturedField& f, double x, double y, double lambda,
+                                    double mu) {
   const double e = 1e-4;
   auto stress = [&](double px, double py) {
     auto g = [&](int c, int dir) {
@@ -18,16 +19,19 @@ std::array<double, 2> div_stress_fd(const pd::ManufacturedField& f, double x, do
       return (a[c] - b[c]) / (2 * e);
     };
     const double div = g(0, 0) + g(1, 1);
-    return std::array<double, 3>{lambda * div + 2 * mu * g(0, 0), lambda * div + 2 * mu * g(1, 1), mu * (g(0, 1) + g(1, 0))};
+    return std::array<double, 3>{lambda * div + 2 * mu * g(0, 0), lambda * div + 2 * mu * g(1, 1),
+                                 mu * (g(0, 1) + g(1, 0))};
   };
   const double E = 1e-3;
   const auto sxp = stress(x + E, y), sxm = stress(x - E, y), syp = stress(x, y + E), sym = stress(x, y - E);
-  return {(sxp[0] - sxm[0]) / (2 * E) + (syp[2] - sym[2]) / (2 * E), (sxp[2] - sxm[2]) / (2 * E) + (syp[1] - sym[1]) / (2 * E)};
+  return {(sxp[0] - sxm[0]) / (2 * E) + (syp[2] - sym[2]) / (2 * E),
+          (sxp[2] - sxm[2]) / (2 * E) + (syp[1] - sym[1]) / (2 * E)};
 }
 }  // namespace
 
 TEST(Manufactured, BodyForcesAreMinusTheDivergenceOfTheStress) {
-  for (const pd::ManufacturedField& f : {pd::paper001_u1(), pd::paper001_u2(), pd::paper001_u2_wavenumber(M_PI)})
+  for (const pd::ManufacturedField& f :
+       {pd::paper001_u1(), pd::paper001_u2(), pd::paper001_u2_wavenumber(M_PI)})
     for (double x : {0.1, 0.6})
       for (double y : {0.3, 0.9}) {
         const auto b = f.body_force(x, y, 0.7, 0.3), ref = div_stress_fd(f, x, y, 0.7, 0.3);

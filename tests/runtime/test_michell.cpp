@@ -22,7 +22,8 @@ pd::MichellHole hole(double nu) {
 template <class F>
 void for_points(const pd::MichellHole& m, F f) {
   for (double rr : {1.05, 1.5, 3.0})
-    for (double t : {0.1, 0.9, 2.0, 3.3, 4.4, 5.9}) f(m.x0 + rr * m.a * std::cos(t), m.y0 + rr * m.a * std::sin(t));
+    for (double t : {0.1, 0.9, 2.0, 3.3, 4.4, 5.9})
+      f(m.x0 + rr * m.a * std::cos(t), m.y0 + rr * m.a * std::sin(t));
 }
 }  // namespace
 
@@ -48,7 +49,8 @@ TEST(Michell, StressIsInEquilibrium) {
   const pd::MichellHole m = hole(0.3);
   const double e = 1e-5;
   for_points(m, [&](double x, double y) {
-    const auto xp = m.stress(x + e, y), xm = m.stress(x - e, y), yp = m.stress(x, y + e), ym = m.stress(x, y - e);
+    const auto xp = m.stress(x + e, y), xm = m.stress(x - e, y), yp = m.stress(x, y + e),
+               ym = m.stress(x, y - e);
     // div sigma = (d sxx/dx + d sxy/dy, d sxy/dx + d syy/dy)
     EXPECT_NEAR((xp[0] - xm[0]) / (2 * e) + (yp[2] - ym[2]) / (2 * e), 0.0, 1e-7 * m.T / m.a);
     EXPECT_NEAR((xp[2] - xm[2]) / (2 * e) + (yp[1] - ym[1]) / (2 * e), 0.0, 1e-7 * m.T / m.a);
@@ -87,7 +89,8 @@ TEST(Michell, FarFieldIsTheUniformTension) {
 
 TEST(Michell, SceneFieldIsTheSameSolution) {
   const auto mat = pd::IsotropicElastic::from_E_nu(1.0, 0.3);
-  const pd::AnalyticField f(pd::FieldSpec{"michell", {{"traction", 0.7}, {"radius", 0.2}, {"x0", 0.5}, {"y0", 0.4}}}, mat);
+  const pd::AnalyticField f(
+      pd::FieldSpec{"michell", {{"traction", 0.7}, {"radius", 0.2}, {"x0", 0.5}, {"y0", 0.4}}}, mat);
   const pd::MichellHole m = hole(0.3);
   const double p[2] = {0.9, 0.1};
   const auto u = f.displacement(p);

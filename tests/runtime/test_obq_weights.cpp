@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -19,8 +18,8 @@ Cloud perturbed_cloud(int dim, double h) { return obq_test::unit_box_cloud(dim, 
 
 // Largest violation of the constraints over the family, relative to delta^(|b| - s + d),
 // the size of each moment.
-double worst_constraint_error(const pd::ReproducingSpace& space, const pd::Bonds& bonds, const std::vector<double>& w,
-                              int p) {
+double worst_constraint_error(const pd::ReproducingSpace& space, const pd::Bonds& bonds,
+                              const std::vector<double>& w, int p) {
   double worst = 0;
   for (const pd::BondMonomial& f : space.terms) {
     double sum = 0;
@@ -45,8 +44,8 @@ int faces_within_horizon(const Cloud& c, int p) {
 // The weights of family p alone, in a vector indexed like the bonds.
 void family_weights(const Cloud& c, const pd::ReproducingSpace& space, int p, std::vector<double>& w) {
   const int begin = c.bonds.offsets[p];
-  const std::vector<double> f = pd::obq_family_weights(space, &c.bonds.xi[begin * c.bonds.dim], c.bonds.family_size(p),
-                                                       c.delta, p, c.particles.position(p));
+  const std::vector<double> f = pd::obq_family_weights(
+      space, &c.bonds.xi[begin * c.bonds.dim], c.bonds.family_size(p), c.delta, p, c.particles.position(p));
   std::copy(f.begin(), f.end(), w.begin() + begin);
 }
 }  // namespace
@@ -110,10 +109,12 @@ TEST(ObqWeights, AreTheLeastNormSolution) {
   const pd::ReproducingSpace space = pd::paper001_space(2);
   const int p = c.particles.size() / 2 + 8;
   const int n = c.bonds.family_size(p), begin = c.bonds.offsets[p];
-  const std::vector<double> w = pd::obq_family_weights(space, &c.bonds.xi[begin * 2], n, c.delta, p, c.particles.position(p));
+  const std::vector<double> w =
+      pd::obq_family_weights(space, &c.bonds.xi[begin * 2], n, c.delta, p, c.particles.position(p));
   Eigen::MatrixXd A(space.terms.size(), n);
   for (int t = 0; t < A.rows(); ++t)
-    for (int j = 0; j < n; ++j) A(t, j) = space.terms[t].value(2, &c.bonds.xi[(begin + j) * 2], c.bonds.length[begin + j]);
+    for (int j = 0; j < n; ++j)
+      A(t, j) = space.terms[t].value(2, &c.bonds.xi[(begin + j) * 2], c.bonds.length[begin + j]);
   const Eigen::MatrixXd null = Eigen::FullPivLU<Eigen::MatrixXd>(A).kernel();
   ASSERT_EQ(null.cols(), n - A.rows());
   const Eigen::Map<const Eigen::VectorXd> omega(w.data(), n);
@@ -131,7 +132,9 @@ TEST(ObqWeights, IntegrateTheLpsTensorKernelOfAQuadraticFieldExactly) {
   const int p = c.particles.size() / 2 + 10;
   std::vector<double> w(c.bonds.bond_count(), 0.0);
   family_weights(c, pd::paper001_space(2), p, w);
-  auto field = [](double x, double y) { return std::array<double, 2>{0.3 + x * x - 2 * x * y + 0.5 * y, 4 * y * y + x * y - x}; };
+  auto field = [](double x, double y) {
+    return std::array<double, 2>{0.3 + x * x - 2 * x * y + 0.5 * y, 4 * y * y + x * y - x};
+  };
   const double* x0 = c.particles.position(p);
   double discrete[2] = {0, 0};
   for (int b = c.bonds.offsets[p]; b < c.bonds.offsets[p + 1]; ++b) {
@@ -154,7 +157,8 @@ TEST(ObqWeights, IntegrateTheLpsTensorKernelOfAQuadraticFieldExactly) {
     const double g[2] = {0.5 * (a[0] - bm[0]), 0.5 * (a[1] - bm[1])};
     const double q[2] = {0.5 * (a[0] + bm[0]) - u0[0], 0.5 * (a[1] + bm[1]) - u0[1]};
     const double pg = nx * g[0] + ny * g[1], pq = nx * q[0] + ny * q[1];
-    const double radial = pg * std::pow(c.delta, 2) / 2 + pq * std::pow(c.delta, 3) / 3;  // int r^(0|1) * r dr
+    const double radial =
+        pg * std::pow(c.delta, 2) / 2 + pq * std::pow(c.delta, 3) / 3;  // int r^(0|1) * r dr
     exact[0] += nx * radial * 2 * M_PI / n_phi;
     exact[1] += ny * radial * 2 * M_PI / n_phi;
   }
@@ -178,7 +182,8 @@ TEST(ObqWeights, NonUnisolventFamilyIsANamedError) {
   }
   // Enough bonds but all on one line: rank-deficient.
   std::vector<double> line;
-  for (int k = 1; k <= 20; ++k) line.insert(line.end(), {0.009 * k * (k % 2 ? 1 : -1), 0.0045 * k * (k % 2 ? 1 : -1)});
+  for (int k = 1; k <= 20; ++k)
+    line.insert(line.end(), {0.009 * k * (k % 2 ? 1 : -1), 0.0045 * k * (k % 2 ? 1 : -1)});
   EXPECT_THROW(pd::obq_family_weights(space, line.data(), 20, 0.2, 3, center), pd::NotUnisolventError);
 }
 
@@ -203,14 +208,16 @@ TEST(ObqWeights, FamiliesAtAFaceOfTheBodyIntegrateOverTheCutBall) {
     ++cut;
     for (const pd::BondMonomial& f : space.terms) {
       double sum = 0;
-      for (int k = 0; k < n; ++k) sum += f.value(2, &c.bonds.xi[(begin + k) * 2], c.bonds.length[begin + k]) * w[k];
+      for (int k = 0; k < n; ++k)
+        sum += f.value(2, &c.bonds.xi[(begin + k) * 2], c.bonds.length[begin + k]) * w[k];
       const double scale = std::pow(c.delta, f.degree() - f.inverse_r_power + 2);
       worst = std::max(worst, std::abs(sum - pd::ball_box_moment_2d(f, c.delta, x, body)) / scale);
     }
     // The weights sum to the cut area, not to the whole disc's.
     double sum = 0;
     for (double v : w) sum += v;
-    total_weight_gap = std::max(total_weight_gap, std::abs(sum - pd::ball_box_moment_2d({}, c.delta, x, body)));
+    total_weight_gap =
+        std::max(total_weight_gap, std::abs(sum - pd::ball_box_moment_2d({}, c.delta, x, body)));
     const double depth = std::min({x[0], 1 - x[0], x[1], 1 - x[1]});
     if (depth < 0.5 * c.delta) {
       EXPECT_LT(sum, 0.9 * M_PI * c.delta * c.delta) << "particle " << p;

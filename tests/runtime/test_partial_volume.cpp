@@ -90,7 +90,8 @@ TEST(PartialVolume, CellDiscAreaOnLatticeCellsStraddlingTheAxes) {
     for (int i = -8; i <= 8; ++i)
       for (int j = -8; j <= 8; ++j) {
         const double a = pd::cell_disc_area(i, j, R, 1.0);
-        ASSERT_NEAR(a, clipped_area(i - 0.5, j - 0.5, i + 0.5, j + 0.5, R), 1e-10) << i << " " << j << " R " << R;
+        ASSERT_NEAR(a, clipped_area(i - 0.5, j - 0.5, i + 0.5, j + 0.5, R), 1e-10)
+            << i << " " << j << " R " << R;
         total += a;
       }
     EXPECT_NEAR(total, std::numbers::pi * R * R, 1e-9);  // the cells tile the plane
@@ -147,7 +148,8 @@ TEST(AdaptiveIntegration, CellVolumeEqualsTheIntegratedExactDiscArea) {
   // integrated over z by composite Simpson with 20000 panels (the integrand is smooth
   // apart from square-root ends, which limits Simpson to ~1e-7 here).
   const double R = 3.0, h = 1.0;
-  const double centres[][3] = {{0, 0, 3}, {1, 1, 2.5}, {2, 1, 2}, {1.5, 1.5, 1.5}, {0.7, 2.2, 1.3}, {0, 3, 1}};
+  const double centres[][3] = {{0, 0, 3},       {1, 1, 2.5},     {2, 1, 2},
+                               {1.5, 1.5, 1.5}, {0.7, 2.2, 1.3}, {0, 3, 1}};
   for (const auto& c : centres) {
     const int panels = 20000;
     const double z0 = c[2] - h / 2, dz = h / panels;

@@ -30,7 +30,8 @@ double energy_ratio(const char* law_name, pd::Quadrature q, double ratio) {
   const pd::Bonds b = pd::find_quadrature_bonds(p, ratio, 1.0, q, influence->weight);
   pd::FamilyInputs in;
   in.particles = &p, in.bonds = &b;
-  in.params = {pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain, {})};
+  in.params = {
+      pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain, {})};
   const double stretch = 1e-4;
   std::vector<double> u(p.x.size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = stretch * p.x[i];
@@ -56,8 +57,8 @@ TEST(PartialVolumeEnergy, ExactAreasCutTheWorstErrorOfTheConstantMicromodulus) {
       const double whole = std::abs(energy_ratio(name, pd::Quadrature::Volume, ratio) - 1);
       const double linear = std::abs(energy_ratio(name, pd::Quadrature::PartialLinear, ratio) - 1);
       const double exact = std::abs(energy_ratio(name, pd::Quadrature::PartialExact, ratio) - 1);
-      std::printf("%s delta/h=%g: |W/W_cont - 1| volume %.4f partial_linear %.4f partial_exact %.4f\n", name, ratio,
-                  whole, linear, exact);
+      std::printf("%s delta/h=%g: |W/W_cont - 1| volume %.4f partial_linear %.4f partial_exact %.4f\n", name,
+                  ratio, whole, linear, exact);
       worst_whole = std::max(worst_whole, whole), worst_exact = std::max(worst_exact, exact);
     }
     if (std::string(name) == "bond_based_constant_2d") {

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "assembly/peridynamic_stress.hpp"
 #include "discretize/discretization.hpp"
 #include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
-#include "assembly/peridynamic_stress.hpp"
 #include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
 namespace {
@@ -34,7 +34,8 @@ struct HomogeneousBody {
   int centre = -1;
 
   HomogeneousBody(const pd::abi::LawDescriptor& l, double ratio, pd::Quadrature q, int reach)
-      : law(l), material(pd::IsotropicElastic::from_E_nu(1.0, l.has_fixed_poisson_ratio ? l.poisson_ratio : 0.3)) {
+      : law(l),
+        material(pd::IsotropicElastic::from_E_nu(1.0, l.has_fixed_poisson_ratio ? l.poisson_ratio : 0.3)) {
     pd::Scene s;
     s.dim = l.dim, s.h = 1.0;
     const double n = reach + 0.5;
@@ -42,10 +43,12 @@ struct HomogeneousBody {
     s.materials.resize(1);
     particles = pd::discretize(s);
     bonds = pd::find_quadrature_bonds(particles, ratio, 1.0, q, pd::abi::find_influence("const")->weight);
-    const auto params = pd::law_parameters(l, material, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(l));
+    const auto params =
+        pd::law_parameters(l, material, pd::PlaneAssumption::Strain, pd::verify::declared_test_values(l));
     pd::AssemblerOptions o;
     o.matrix = false;
-    assembler = std::make_unique<pd::FamilyAssembler>(particles, bonds, l, std::vector<std::vector<double>>{params}, o);
+    assembler = std::make_unique<pd::FamilyAssembler>(particles, bonds, l,
+                                                      std::vector<std::vector<double>>{params}, o);
     for (int i = 0; i < particles.size(); ++i) {
       double r = 0;
       for (int c = 0; c < l.dim; ++c) r += std::abs(particles.x[i * l.dim + c]);
@@ -72,8 +75,10 @@ struct HomogeneousBody {
 
 Eigen::MatrixXd strain(int d) {
   Eigen::MatrixXd e(d, d);
-  if (d == 2) e << 1.0e-4, 0.4e-4, 0.4e-4, -0.3e-4;
-  else e << 1.0e-4, 0.4e-4, -0.2e-4, 0.4e-4, -0.3e-4, 0.5e-4, -0.2e-4, 0.5e-4, 0.6e-4;
+  if (d == 2)
+    e << 1.0e-4, 0.4e-4, 0.4e-4, -0.3e-4;
+  else
+    e << 1.0e-4, 0.4e-4, -0.2e-4, 0.4e-4, -0.3e-4, 0.5e-4, -0.2e-4, 0.5e-4, 0.6e-4;
   return e;
 }
 
@@ -86,7 +91,8 @@ Eigen::MatrixXd hooke(const pd::IsotropicElastic& m, const Eigen::MatrixXd& e) {
 // standing for a unit length of L), R+ the particles with x_b > -1/2. tau_a is the force
 // per unit area on x_hat's side from R+: sum_k sum_{j in R+} f_a(x_hat_k, j) V_j with the
 // pair force density f = t_xhat<j> - t_j<xhat> taken from both families' nodal forces.
-Eigen::VectorXd areal_force_density(const HomogeneousBody& body, const std::vector<double>& u, int b, double delta) {
+Eigen::VectorXd areal_force_density(const HomogeneousBody& body, const std::vector<double>& u, int b,
+                                    double delta) {
   const int d = body.dim();
   const auto& p = body.particles;
   const auto& B = body.bonds;
@@ -136,12 +142,14 @@ TEST_P(PeridynamicStress, EqualsTheArealForceDensityOfALatticePlane) {
   const double delta = law.dim == 2 ? 3.0 : 2.0;
   const HomogeneousBody body(law, delta, pd::Quadrature::PartialLinear, 3 * static_cast<int>(delta) + 2);
   const auto u = body.displacement(strain(law.dim));
-  const Eigen::MatrixXd sigma = body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
+  const Eigen::MatrixXd sigma =
+      body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
   ASSERT_GT(sigma.norm(), 0.0);
   for (int b = 0; b < law.dim; ++b) {
     const Eigen::VectorXd tau = areal_force_density(body, u, b, delta);
-    EXPECT_LT((tau - sigma.col(b)).norm(), 1e-12 * sigma.norm()) << law.name << " n = e" << b << "\ntau " << tau.transpose()
-                                                                  << "\nsigma n " << sigma.col(b).transpose();
+    EXPECT_LT((tau - sigma.col(b)).norm(), 1e-12 * sigma.norm())
+        << law.name << " n = e" << b << "\ntau " << tau.transpose() << "\nsigma n "
+        << sigma.col(b).transpose();
   }
 }
 
@@ -153,7 +161,8 @@ TEST_P(PeridynamicStressOfEnergyLaws, IsTheDerivativeOfTheFamilyEnergy) {
   Eigen::MatrixXd grad = strain(d) * 100;  // finite strain (1 %): P, not a linearisation
   grad(0, 1) += 0.01;                      // and a rotation-like skew part
   const auto u = body.displacement(grad);
-  const Eigen::MatrixXd sigma = body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
+  const Eigen::MatrixXd sigma =
+      body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
   pd::FamilyGather gather(body.assembler->inputs());
   auto energy = [&](const Eigen::MatrixXd& g) {
     const auto v = body.displacement(g);
@@ -167,7 +176,9 @@ TEST_P(PeridynamicStressOfEnergyLaws, IsTheDerivativeOfTheFamilyEnergy) {
       gp(a, b) += eps, gm(a, b) -= eps;
       dW(a, b) = (energy(gp) - energy(gm)) / (2 * eps);
     }
-  EXPECT_LT((dW - sigma).norm(), 1e-6 * sigma.norm()) << law.name << "\ndW/dF\n" << dW << "\nsigma\n" << sigma;
+  EXPECT_LT((dW - sigma).norm(), 1e-6 * sigma.norm()) << law.name << "\ndW/dF\n"
+                                                      << dW << "\nsigma\n"
+                                                      << sigma;
 }
 
 // C : eps within the quadrature error of the same horizon sum, measured independently on
@@ -178,24 +189,27 @@ TEST_P(PeridynamicStressOfEnergyLaws, IsTheDerivativeOfTheFamilyEnergy) {
 TEST_P(PeridynamicStressOfEnergyLaws, IsHookesLawWithinTheQuadratureError) {
   const auto& law = *GetParam();
   const int d = law.dim;
-  const double delta = d == 2 ? 6.0 : 3.0;  // 2D: at 4.5 the conical law's lattice error is 2.0 % (energy 0.7 %)
+  const double delta =
+      d == 2 ? 6.0 : 3.0;  // 2D: at 4.5 the conical law's lattice error is 2.0 % (energy 0.7 %)
   // The conical laws take their micromodulus c (1 - |xi|/delta) from |xi| inside the law, so
   // the cut cells beyond delta that the partial choices add enter with a negative modulus
   // (docs/paper002.md, "What the factors buy"): they keep the whole-volume rule here.
   const bool conical = std::string(law.name).find("conical") != std::string::npos;
-  const pd::Quadrature q = conical ? pd::Quadrature::Volume : d == 2 ? pd::Quadrature::PartialExact : pd::Quadrature::PartialLinear;
+  const pd::Quadrature q = conical  ? pd::Quadrature::Volume
+                           : d == 2 ? pd::Quadrature::PartialExact
+                                    : pd::Quadrature::PartialLinear;
   const HomogeneousBody body(law, delta, q, 2 * static_cast<int>(delta) + 2);
   const Eigen::MatrixXd e = strain(d);
   const auto u = body.displacement(e);
-  const Eigen::MatrixXd sigma = body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
+  const Eigen::MatrixXd sigma =
+      body.stress_at(pd::peridynamic_stress(*body.assembler, u.data()), body.centre);
   const Eigen::MatrixXd expected = hooke(body.material, e);
   const double error = (sigma - expected).norm() / expected.norm();
   pd::FamilyGather gather(body.assembler->inputs());
   const double W = body.assembler->variant().energy(gather.gather(body.centre, u.data()));
   const double w_error = std::abs(W / (0.5 * (expected.array() * e.array()).sum()) - 1);
   std::printf("%s delta/h=%g %s: |sigma - C:eps| / |C:eps| = %.4f, energy error %.4f\n", law.name, delta,
-              std::string(pd::quadrature_name(q)).c_str(), error,
-              w_error);
+              std::string(pd::quadrature_name(q)).c_str(), error, w_error);
   EXPECT_LT(error, w_error + 0.01) << law.name << "\nsigma\n" << sigma << "\nC:eps\n" << expected;
 }
 

@@ -50,8 +50,8 @@ TEST_P(QuadratureAssembly, StiffnessIsMinusDerivativeOfForcesAndProductEqualsMat
   for (double f : b.volume_factor) fractional += f > 0 && f < 1;
   ASSERT_GT(fractional, 0);
   ASSERT_EQ(b.volume_factor.size(), b.neighbor.size());
-  const auto params = pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain,
-                                         pd::verify::declared_test_values(law));
+  const auto params = pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25),
+                                         pd::PlaneAssumption::Strain, pd::verify::declared_test_values(law));
   const pd::FamilyAssembler a(p, b, law, {params}, {});
   const int dofs = static_cast<int>(p.x.size());
   std::vector<double> u(dofs), v(dofs);
@@ -71,15 +71,18 @@ TEST(QuadratureAssembly, PartialFactorsChangeTheForces) {
   s.materials.resize(1);
   const pd::Particles p = pd::discretize(s);
   const auto* influence = pd::abi::find_influence("const");
-  const auto params = pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain, {});
+  const auto params =
+      pd::law_parameters(law, pd::IsotropicElastic::from_E_nu(1.0, 0.25), pd::PlaneAssumption::Strain, {});
   std::vector<double> u(p.x.size()), f0(u.size()), f1(u.size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.01 * std::sin(1.7 * p.x[i] + i);
   const pd::Bonds b0 = pd::find_quadrature_bonds(p, 2.5, 1.0, pd::Quadrature::Volume, influence->weight);
-  const pd::Bonds b1 = pd::find_quadrature_bonds(p, 2.5, 1.0, pd::Quadrature::PartialExact, influence->weight);
+  const pd::Bonds b1 =
+      pd::find_quadrature_bonds(p, 2.5, 1.0, pd::Quadrature::PartialExact, influence->weight);
   pd::FamilyAssembler(p, b0, law, {params}, {}).internal_forces(u.data(), f0.data());
   pd::FamilyAssembler(p, b1, law, {params}, {}).internal_forces(u.data(), f1.data());
   double diff = 0, size = 0;
-  for (std::size_t i = 0; i < u.size(); ++i) diff = std::max(diff, std::abs(f1[i] - f0[i])), size = std::max(size, std::abs(f0[i]));
+  for (std::size_t i = 0; i < u.size(); ++i)
+    diff = std::max(diff, std::abs(f1[i] - f0[i])), size = std::max(size, std::abs(f0[i]));
   EXPECT_GT(diff, 1e-3 * size);
 }
 

@@ -83,17 +83,22 @@ TEST(SceneReader, ErrorsNameFileLineAndKey) {
   const std::vector<Case> cases{
       {"spacing: 0.5", "spacing: -1", R"(^s\.yaml:4: domain\.spacing: spacing must be positive)"},
       {"spacing: 0.5", "spacing: abc", R"(^s\.yaml:4: domain\.spacing: expected a number)"},
-      {"influence: cubic", "influence: cubik", R"(^s\.yaml:10: influence: unknown influence function 'cubik')"},
+      {"influence: cubic", "influence: cubik",
+       R"(^s\.yaml:10: influence: unknown influence function 'cubik')"},
       {"law: silling_plane_strain", "law: nope", R"(^s\.yaml:9: law: unknown law 'nope')"},
       {"law: silling_plane_strain", "law: silling_3d", R"(^s\.yaml:9: law: law silling_3d is 3D)"},
-      {"horizon: {ratio: 3.5}", "horizon: {ratio: 3.5, colour: red}", R"(^s\.yaml:8: horizon\.colour: unknown key 'colour')"},
+      {"horizon: {ratio: 3.5}", "horizon: {ratio: 3.5, colour: red}",
+       R"(^s\.yaml:8: horizon\.colour: unknown key 'colour')"},
       {"nu: 0.25", "nu: 0.5", R"(^s\.yaml:12: materials\[0\]: Poisson's ratio)"},
       {"fixed: [x, y]", "fixed: [x, w]", R"(^s\.yaml:15: boundary\[0\]\.fixed: 'w' is not a component)"},
-      {"    traction: [0, -0.001]", "    traction: [0, -0.001]\n    fixed: [x]", R"(^s\.yaml:16: boundary\[1\]: give exactly one of)"},
+      {"    traction: [0, -0.001]", "    traction: [0, -0.001]\n    fixed: [x]",
+       R"(^s\.yaml:16: boundary\[1\]: give exactly one of)"},
       {"linear: cholmod", "linear: magic", R"(^s\.yaml:21: solver\.linear: 'magic' is not one of)"},
-      {"segment: [[1, 2], [3, 2]]", "segment: [[1, 2]]", R"(^s\.yaml:19: cracks\[0\]\.segment: a 2D crack is a segment)"},
+      {"segment: [[1, 2], [3, 2]]", "segment: [[1, 2]]",
+       R"(^s\.yaml:19: cracks\[0\]\.segment: a 2D crack is a segment)"},
       {"dimension: 2", "dimension: 4", R"(^s\.yaml:1: dimension: dimension must be 2 or 3)"},
-      {"box: {min: [0, 0], max: [10, 5]}", "box: {min: [0, 0], max: [10]}", R"(^s\.yaml:3: domain\.box\.max: expected 2 coordinates)"},
+      {"box: {min: [0, 0], max: [10, 5]}", "box: {min: [0, 0], max: [10]}",
+       R"(^s\.yaml:3: domain\.box\.max: expected 2 coordinates)"},
   };
   for (const Case& c : cases) {
     const std::string msg = error_of(replace(kValid, c.from, c.to));
@@ -102,10 +107,13 @@ TEST(SceneReader, ErrorsNameFileLineAndKey) {
 }
 
 TEST(SceneReader, MissingRequiredKeysAndSyntaxErrors) {
-  EXPECT_TRUE(std::regex_search(error_of("dimension: 2\n"), std::regex(R"(s\.yaml:1: \(top level\): missing required key 'domain')")))
+  EXPECT_TRUE(std::regex_search(error_of("dimension: 2\n"),
+                                std::regex(R"(s\.yaml:1: \(top level\): missing required key 'domain')")))
       << error_of("dimension: 2\n");
-  EXPECT_TRUE(std::regex_search(error_of("domain: [1, 2\n"), std::regex(R"(^s\.yaml:\d+: YAML syntax error)")))
+  EXPECT_TRUE(
+      std::regex_search(error_of("domain: [1, 2\n"), std::regex(R"(^s\.yaml:\d+: YAML syntax error)")))
       << error_of("domain: [1, 2\n");
-  EXPECT_TRUE(std::regex_search(error_of("- 1\n- 2\n"), std::regex(R"(^s\.yaml:1: \(top level\): expected a map)")));
+  EXPECT_TRUE(
+      std::regex_search(error_of("- 1\n- 2\n"), std::regex(R"(^s\.yaml:1: \(top level\): expected a map)")));
   EXPECT_THROW(pd::read_scene("/nonexistent/scene.yaml"), pd::SceneError);
 }

@@ -76,7 +76,8 @@ TEST(Smoothing, LinearFieldsAreReproducedInTheInteriorOnly) {
     for (int i = 0; i < p.size(); ++i) {
       const double* x = p.position(i);
       const double err = std::hypot(s[2 * i] - u[2 * i], s[2 * i + 1] - u[2 * i + 1]);
-      if (x[0] > delta && x[0] < 2 - delta && x[1] > delta && x[1] < 1.5 - delta) interior = std::max(interior, err);
+      if (x[0] > delta && x[0] < 2 - delta && x[1] > delta && x[1] < 1.5 - delta)
+        interior = std::max(interior, err);
       if (x[0] < 0.1 && x[1] < 0.1) corner = err;
     }
     EXPECT_LT(interior, 1e-13) << w;
@@ -113,8 +114,9 @@ TEST(Smoothing, SingularInfluenceIsRejected) {
 }
 
 TEST(Smoothing, SceneKeyErrorsNameTheLine) {
-  const std::string base = "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 4}\nlaw: silling_plane_strain\n"
-                           "materials: [{E: 1, nu: 0.2}]\n";
+  const std::string base =
+      "dimension: 2\ndomain: {box: {min: [0, 0], max: [1, 1]}, count: 4}\nlaw: silling_plane_strain\n"
+      "materials: [{E: 1, nu: 0.2}]\n";
   const auto message = [&](const std::string& output) {
     try {
       pd::parse_scene(base + output, "s.yaml");
@@ -123,12 +125,16 @@ TEST(Smoothing, SceneKeyErrorsNameTheLine) {
     }
     return std::string();
   };
-  EXPECT_EQ(pd::parse_scene(base + "output: {smoothing: {influence: linear}}\n", "s.yaml").output.smoothing_influence, "linear");
-  EXPECT_TRUE(std::regex_search(message("output:\n  smoothing: {influence: inv}\n"),
-                                std::regex(R"(^s\.yaml:6: output\.smoothing\.influence: 'inv' is singular at r = 0)")))
+  EXPECT_EQ(pd::parse_scene(base + "output: {smoothing: {influence: linear}}\n", "s.yaml")
+                .output.smoothing_influence,
+            "linear");
+  EXPECT_TRUE(std::regex_search(
+      message("output:\n  smoothing: {influence: inv}\n"),
+      std::regex(R"(^s\.yaml:6: output\.smoothing\.influence: 'inv' is singular at r = 0)")))
       << message("output:\n  smoothing: {influence: inv}\n");
-  EXPECT_TRUE(std::regex_search(message("output: {smoothing: {influence: wobbly}}\n"),
-                                std::regex(R"(^s\.yaml:5: output\.smoothing\.influence: unknown influence function 'wobbly')")));
+  EXPECT_TRUE(std::regex_search(
+      message("output: {smoothing: {influence: wobbly}}\n"),
+      std::regex(R"(^s\.yaml:5: output\.smoothing\.influence: unknown influence function 'wobbly')")));
   EXPECT_TRUE(std::regex_search(message("output: {smoothing: {influence: linear, radius: 2}}\n"),
                                 std::regex(R"(^s\.yaml:5: output\.smoothing\.radius: unknown key)")));
 }

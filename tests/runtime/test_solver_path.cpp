@@ -77,7 +77,8 @@ TEST(SolverPath, AutoFallsBackToJacobiWhenThePreconditionerCannotFit) {
 TEST(SolverPath, ACountedShortFamilyReplacesTheVolumeScaling) {
   pd::SolverSpec spec;
   spec.preconditioner_max_nonzeros = 1.5e8;
-  EXPECT_EQ(pd::plan_solver(spec, {1000000, 35.9, 2, 3.5}).preconditioner, pd::Preconditioner::diagonal);  // about 1.9e8
+  EXPECT_EQ(pd::plan_solver(spec, {1000000, 35.9, 2, 3.5}).preconditioner,
+            pd::Preconditioner::diagonal);  // about 1.9e8
   const pd::SolverPlan path = pd::plan_solver(spec, {1000000, 35.9, 2, 3.5, 8.0});
   EXPECT_EQ(path.preconditioner, pd::Preconditioner::short_horizon);
   EXPECT_NE(path.reason.find("1.32e+08"), std::string::npos) << path.reason;  // 1e6 x (4 x 8 + 1) x 4

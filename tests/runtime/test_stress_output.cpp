@@ -6,13 +6,12 @@
 // free particles next to it, and the stress inside is off by 39 % in
 // sigma_yy, 3.6 % in sigma_xy); the correspondence law
 // reproduces an affine deformation gradient exactly, so the interior stress is C : eps.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <string>
-
-#include <fmt/core.h>
 
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
@@ -72,16 +71,19 @@ TEST(StressOutput, SceneErrorsNameTheKey) {
     return s;
   };
   EXPECT_NE(error_of(with("component: yy", "component: y")).find("two letters"), std::string::npos);
-  EXPECT_NE(error_of(with("component: yy", "component: zy")).find("not a component of a 2D scene"), std::string::npos);
-  EXPECT_NE(error_of(with("quantity: stress, component: yy", "quantity: stress, component: yy, reference: {solution: "
-                                                              "uniaxial, traction: 1}"))
+  EXPECT_NE(error_of(with("component: yy", "component: zy")).find("not a component of a 2D scene"),
+            std::string::npos);
+  EXPECT_NE(error_of(with("quantity: stress, component: yy",
+                          "quantity: stress, component: yy, reference: {solution: "
+                          "uniaxial, traction: 1}"))
                 .find("a stress probe has no reference"),
             std::string::npos);
   EXPECT_NE(error_of(with("e12: 0.4e-4", "e13: 0.4e-4")).find("e13 belongs to 3D scenes"), std::string::npos);
   EXPECT_NE(error_of(plate("out", "oterkus_plane_strain", ", compensation: true")).find("no energy kernel"),
             std::string::npos);
-  EXPECT_NE(error_of(plate("out", "silling_plane_strain", ", compensation: true, perturbation: {amplitude: 0.1}"))
-                .find("perturbed"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(plate("out", "silling_plane_strain", ", compensation: true, perturbation: {amplitude: 0.1}"))
+          .find("perturbed"),
+      std::string::npos);
   EXPECT_EQ(error_of(plate("out", "silling_plane_strain", ", compensation: true")), "");
 }

@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "assembly/assembler.hpp"
 #include "assembler_fd.hpp"
-#include "assembly/family_gather.hpp"
+#include "assembly/assembler.hpp"
 #include "assembly/compensation.hpp"
-#include "discretize/discretization.hpp"
-#include "discretize/partial_volume.hpp"
-#include "discretize/lattice_family.hpp"
+#include "assembly/family_gather.hpp"
 #include "assembly/surface_correction.hpp"
+#include "discretize/discretization.hpp"
+#include "discretize/lattice_family.hpp"
+#include "discretize/partial_volume.hpp"
 #include "material/elastic_constants.hpp"
 #include "verify/test_values.hpp"  // a law's own parameters at its declared test values
 
@@ -30,7 +30,8 @@ struct Block {
   std::vector<std::vector<double>> params;
   pd::SurfaceCorrectionInputs in;
   const pd::abi::LawDescriptor* law;
-  Block(const char* law_name, int count, double ratio, pd::Quadrature q = pd::Quadrature::Volume, double nu = 0.25) {
+  Block(const char* law_name, int count, double ratio, pd::Quadrature q = pd::Quadrature::Volume,
+        double nu = 0.25) {
     law = pd::abi::find_law(law_name);
     pd::Scene s;
     s.dim = law->dim, s.h = 1.0;
@@ -55,8 +56,8 @@ struct Block {
 
 // R(eps) = -(1/V0) sum_a df_a . (eps x_a) from the residual kernel: df by central
 // differences of the forces at Y = (I +- t eps) xi, every bond carrying s_d and s_f.
-double residual_response(const pd::abi::LawDescriptor& law, pd::abi::Family f, const std::vector<double>& eps, double sd,
-                         double sf) {
+double residual_response(const pd::abi::LawDescriptor& law, pd::abi::Family f, const std::vector<double>& eps,
+                         double sd, double sf) {
   const int d = law.dim, L = f.n_bonds;
   std::vector<double> m(static_cast<std::size_t>(law.n_moments)), Y(static_cast<std::size_t>(L * d));
   std::vector<double> s_d(L, sd), s_f(L, sf), fp((L + 1) * d), fm((L + 1) * d), dx((L + 1) * d, 0.0);
@@ -81,11 +82,12 @@ std::vector<std::vector<double>> dilatation_and_deviatoric(int d) {
   if (d == 2) return {{1, 0, 0, 1}, {1, 0, 0, -1}, {0, 1, 1, 0}};
   const double a = 1 / std::sqrt(3.0);
   return {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {1, 0, 0, 0, -1, 0, 0, 0, 0}, {a, 0, 0, 0, a, 0, 0, 0, -2 * a},
-          {0, 1, 0, 1, 0, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0, 1, 0, 0}, {0, 0, 0, 0, 0, 1, 0, 1, 0}};
+          {0, 1, 0, 1, 0, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0, 1, 0, 0},  {0, 0, 0, 0, 0, 1, 0, 1, 0}};
 }
 
 // The (dilatation, deviatoric) residual responses of a family with uniform factors.
-std::pair<double, double> responses(const pd::abi::LawDescriptor& law, const pd::abi::Family& f, double sd, double sf) {
+std::pair<double, double> responses(const pd::abi::LawDescriptor& law, const pd::abi::Family& f, double sd,
+                                    double sf) {
   const auto strains = dilatation_and_deviatoric(law.dim);
   double dev = 0;
   for (std::size_t s = 1; s < strains.size(); ++s) dev += residual_response(law, f, strains[s], sd, sf);
@@ -97,7 +99,8 @@ std::pair<double, double> responses(const pd::abi::LawDescriptor& law, const pd:
 // s_d, read from the law's output "dilatation" (through the outputs kernel).
 double dilatation(const pd::abi::LawDescriptor& law, pd::abi::Family f, double sd) {
   const int L = f.n_bonds, d = law.dim;
-  std::vector<double> m(static_cast<std::size_t>(law.n_moments)), Y(f.xi, f.xi + L * d), s_d(L, sd), out(law.n_outputs);
+  std::vector<double> m(static_cast<std::size_t>(law.n_moments)), Y(f.xi, f.xi + L * d), s_d(L, sd),
+      out(law.n_outputs);
   if (law.n_moments > 0) law.intact.moments(f, m.data());
   f.moments = m.data();
   for (double& y : Y) y *= 1 + 1e-6;
@@ -127,7 +130,8 @@ Surface surface_particles(const Block& blk, bool three) {
 // has the exact dilatation on a cut family (its constants come from the family's own
 // moments), so s_d = 1 and the dilatation *response* is then off by s_f (printed).
 TEST(SurfaceCorrection, TermsGiveTheInteriorDilatationAndDeviatoricResponse) {
-  for (const char* name : {"oterkus_plane_strain", "silling_plane_strain", "lps_plane_strain", "oterkus_3d", "silling_3d"}) {
+  for (const char* name :
+       {"oterkus_plane_strain", "silling_plane_strain", "lps_plane_strain", "oterkus_3d", "silling_3d"}) {
     const bool three = std::string(name).find("3d") != std::string::npos;
     const Block blk(name, three ? 8 : 16, three ? 2.0 : 3.0, pd::Quadrature::Volume, 0.2);
     const auto& law = *blk.law;
@@ -137,25 +141,32 @@ TEST(SurfaceCorrection, TermsGiveTheInteriorDilatationAndDeviatoricResponse) {
     const int interior = blk.at(surf.mid, surf.mid, surf.mid);
     EXPECT_NEAR(s.dilatation[interior], 1.0, 1e-9) << name;
     EXPECT_NEAR(s.force[interior], 1.0, 1e-9) << name;
-    pd::LatticeFamily full(blk.in.quadrature, blk.in.delta, 1.0, law.dim, blk.in.influence, 0.0, law.scratch_per_bond);
+    pd::LatticeFamily full(blk.in.quadrature, blk.in.delta, 1.0, law.dim, blk.in.influence, 0.0,
+                           law.scratch_per_bond);
     const pd::abi::Family ff = full.family(1.0, blk.in.delta, blk.params[0].data());
     const auto target = responses(law, ff, 1, 1);
     const double theta = dilatation(law, ff, 1);
     pd::FamilyInputs fi;
-    fi.particles = &blk.p, fi.bonds = &blk.b, fi.params = blk.params, fi.scratch_per_bond = law.scratch_per_bond;
+    fi.particles = &blk.p, fi.bonds = &blk.b, fi.params = blk.params,
+    fi.scratch_per_bond = law.scratch_per_bond;
     pd::FamilyGather gather(fi);
     double worst_before = 0;
     for (int i : surf.particles) {
       const auto before = responses(law, gather.gather(i, nullptr), 1, 1);
       const auto after = responses(law, gather.gather(i, nullptr), s.dilatation[i], s.force[i]);
       worst_before = std::max(worst_before, std::abs(before.second / target.second - 1));
-      EXPECT_NEAR(dilatation(law, gather.gather(i, nullptr), s.dilatation[i]) / theta, 1.0, 1e-6) << name << " particle " << i;
+      EXPECT_NEAR(dilatation(law, gather.gather(i, nullptr), s.dilatation[i]) / theta, 1.0, 1e-6)
+          << name << " particle " << i;
       EXPECT_NEAR(s.dilatation[i], 1.0, 1e-6) << name << ": the law's dilatation is exact on a cut family";
       EXPECT_NEAR(after.second / target.second, 1.0, 1e-6) << name << " particle " << i;
-      std::printf("%s particle %d: s_f %.4f; deviatoric response %.4f before; dilatation response %.4f before, %.4f after\n",
-                  name, i, s.force[i], before.second / target.second, before.first / target.first, after.first / target.first);
+      std::printf(
+          "%s particle %d: s_f %.4f; deviatoric response %.4f before; dilatation response %.4f before, %.4f "
+          "after\n",
+          name, i, s.force[i], before.second / target.second, before.first / target.first,
+          after.first / target.first);
     }
-    EXPECT_GT(worst_before, 1e-3) << name << ": the surface families were already exact, so the test shows nothing";
+    EXPECT_GT(worst_before, 1e-3) << name
+                                  << ": the surface families were already exact, so the test shows nothing";
   }
 }
 
@@ -174,10 +185,12 @@ TEST(SurfaceCorrection, ResponsesMatchBothTrialsOrRefuse) {
     const int interior = blk.at(surf.mid, surf.mid, surf.mid);
     EXPECT_NEAR(s.dilatation[interior], 1.0, 1e-8) << name;
     EXPECT_NEAR(s.force[interior], 1.0, 1e-8) << name;
-    pd::LatticeFamily full(blk.in.quadrature, blk.in.delta, 1.0, law.dim, blk.in.influence, 0.0, law.scratch_per_bond);
+    pd::LatticeFamily full(blk.in.quadrature, blk.in.delta, 1.0, law.dim, blk.in.influence, 0.0,
+                           law.scratch_per_bond);
     const auto target = responses(law, full.family(1.0, blk.in.delta, blk.params[0].data()), 1, 1);
     pd::FamilyInputs fi;
-    fi.particles = &blk.p, fi.bonds = &blk.b, fi.params = blk.params, fi.scratch_per_bond = law.scratch_per_bond;
+    fi.particles = &blk.p, fi.bonds = &blk.b, fi.params = blk.params,
+    fi.scratch_per_bond = law.scratch_per_bond;
     pd::FamilyGather gather(fi);
     for (int i : surf.particles) {
       const auto after = responses(law, gather.gather(i, nullptr), s.dilatation[i], s.force[i]);
@@ -198,7 +211,8 @@ TEST(SurfaceCorrection, ResponsesMatchBothTrialsOrRefuse) {
 TEST(SurfaceCorrection, WithoutADilatationSumTheFactorIsPaper002sCompensation) {
   const Block bb("bond_based_constant_2d", 16, 3.0);
   const pd::SurfaceFactors s = pd::surface_correction_factors(bb.p, bb.b, bb.in);
-  const pd::CompensationInputs ci{bb.law, &bb.params, 3.0, 1.0, pd::Quadrature::Volume, bb.in.influence, 1e-4};
+  const pd::CompensationInputs ci{bb.law,          &bb.params, 3.0, 1.0, pd::Quadrature::Volume,
+                                  bb.in.influence, 1e-4};
   const std::vector<double> beta = pd::compensation_factors(bb.p, bb.b, ci);
   for (int i = 0; i < bb.p.size(); ++i) {
     ASSERT_NEAR(s.force[i], beta[i], 1e-9 * beta[i]) << "particle " << i;
@@ -207,7 +221,8 @@ TEST(SurfaceCorrection, WithoutADilatationSumTheFactorIsPaper002sCompensation) {
   EXPECT_GT(s.force[bb.at(0.5, 0.5)], 2.0);
   const Block cs("correspondence_silling_plane_strain", 12, 3.0);
   const pd::SurfaceFactors c = pd::surface_correction_factors(cs.p, cs.b, cs.in);
-  for (int i : {cs.at(0.5, 0.5), cs.at(6.5, 0.5), cs.at(6.5, 6.5)}) EXPECT_NEAR(c.force[i], 1.0, 1e-9) << "particle " << i;
+  for (int i : {cs.at(0.5, 0.5), cs.at(6.5, 0.5), cs.at(6.5, 6.5)})
+    EXPECT_NEAR(c.force[i], 1.0, 1e-9) << "particle " << i;
 }
 
 // With the correction applied (bond means of the factors), the assembled stiffness is
@@ -220,14 +235,16 @@ TEST(SurfaceCorrection, TangentIsMinusTheDerivativeOfTheForcesAndTheProductTheMa
     pd::apply_surface_correction(blk.b, pd::surface_correction_factors(blk.p, blk.b, blk.in), true);
     double spread = 0;
     for (std::size_t e = 0; e < blk.b.surface_force.size(); ++e)
-      spread = std::max({spread, std::abs(blk.b.surface_force[e] - 1), std::abs(blk.b.surface_dilatation[e] - 1)});
+      spread =
+          std::max({spread, std::abs(blk.b.surface_force[e] - 1), std::abs(blk.b.surface_dilatation[e] - 1)});
     ASSERT_GT(spread, 1e-3) << name << ": the factors must be active";
     const pd::FamilyAssembler a(blk.p, blk.b, *blk.law, blk.params, {});
     EXPECT_FALSE(a.has_energy());
     EXPECT_FALSE(a.symmetric());
     const int dofs = static_cast<int>(blk.p.x.size());
     std::vector<double> u(dofs), v(dofs);
-    for (int i = 0; i < dofs; ++i) u[i] = 0.01 * std::sin(2.3 * blk.p.x[i] + 0.9 * i), v[i] = std::cos(1.1 * i);
+    for (int i = 0; i < dofs; ++i)
+      u[i] = 0.01 * std::sin(2.3 * blk.p.x[i] + 0.9 * i), v[i] = std::cos(1.1 * i);
     const pd::test::TangentFdCheck fd = pd::test::tangent_fd_check(a, u);
     ASSERT_GT(fd.scale, 0.0);
     EXPECT_LT(fd.worst, 1e-6 * fd.scale) << name;
@@ -239,7 +256,8 @@ TEST(SurfaceCorrection, TangentIsMinusTheDerivativeOfTheForcesAndTheProductTheMa
     pd::FamilyAssembler(blk.p, plain, *blk.law, blk.params, {}).internal_forces(u.data(), f0.data());
     a.internal_forces(u.data(), f1.data());
     double diff = 0, size = 0;
-    for (int i = 0; i < dofs; ++i) diff = std::max(diff, std::abs(f1[i] - f0[i])), size = std::max(size, std::abs(f0[i]));
+    for (int i = 0; i < dofs; ++i)
+      diff = std::max(diff, std::abs(f1[i] - f0[i])), size = std::max(size, std::abs(f0[i]));
     EXPECT_GT(diff, 1e-3 * size) << name;
   }
 }

@@ -30,11 +30,16 @@ TEST(SurfaceCorrectionScene, ReadsTheKeyAndRefusesWhatItCannotCorrect) {
   EXPECT_TRUE(terms.surface_correction);
   EXPECT_FALSE(terms.surface_match_responses);
   EXPECT_TRUE(pd::parse_scene(plate("  surface_correction: responses\n"), "s.yaml").surface_match_responses);
-  EXPECT_NE(error_of(plate("  surface_correction: yes\n")).find("s.yaml:5: domain.surface_correction: surface_correction is none"),
-            std::string::npos) << error_of(plate("  surface_correction: yes\n"));
-  EXPECT_NE(error_of(plate("  compensation: true\n  surface_correction: terms\n")).find("choose one"), std::string::npos);
-  EXPECT_NE(error_of(plate("  quadrature: obq\n  surface_correction: terms\n")).find("obq"), std::string::npos);
-  EXPECT_NE(error_of(plate("  surface_correction: terms\n  gauss_points: {per_axis: 2}\n")).find("surface_correction"),
+  EXPECT_NE(error_of(plate("  surface_correction: yes\n"))
+                .find("s.yaml:5: domain.surface_correction: surface_correction is none"),
+            std::string::npos)
+      << error_of(plate("  surface_correction: yes\n"));
+  EXPECT_NE(error_of(plate("  compensation: true\n  surface_correction: terms\n")).find("choose one"),
+            std::string::npos);
+  EXPECT_NE(error_of(plate("  quadrature: obq\n  surface_correction: terms\n")).find("obq"),
+            std::string::npos);
+  EXPECT_NE(error_of(plate("  surface_correction: terms\n  gauss_points: {per_axis: 2}\n"))
+                .find("surface_correction"),
             std::string::npos);
 }
 
@@ -58,7 +63,8 @@ TEST(SurfaceCorrectionScene, BuildModelPutsTheBondMeansOnTheBonds) {
         }
     }
   // A law without a dilatation sum gets the force factor only.
-  const pd::Model bb = pd::build_model(pd::parse_scene(plate("  surface_correction: terms\n", "bond_based_constant_2d"), "s.yaml"));
+  const pd::Model bb = pd::build_model(
+      pd::parse_scene(plate("  surface_correction: terms\n", "bond_based_constant_2d"), "s.yaml"));
   EXPECT_TRUE(bb.bonds.surface_dilatation.empty());
   EXPECT_FALSE(bb.bonds.surface_force.empty());
 }

@@ -42,7 +42,8 @@ inline Body make_grid(int dim, int nx, int ny, int nz, double ratio, double jitt
     for (int q = 0; q < n; ++q) {
       if (q == p) continue;
       double r2 = 0;
-      for (int c = 0; c < dim; ++c) r2 += (P.x[q * dim + c] - P.x[p * dim + c]) * (P.x[q * dim + c] - P.x[p * dim + c]);
+      for (int c = 0; c < dim; ++c)
+        r2 += (P.x[q * dim + c] - P.x[p * dim + c]) * (P.x[q * dim + c] - P.x[p * dim + c]);
       if (r2 > delta * delta) continue;
       const double r = std::sqrt(r2);
       B.neighbor.push_back(q);

@@ -27,7 +27,8 @@ double norm_of(const double* a) {
 template <int D, bool Linear>
 struct SpringLaw {
   static constexpr int n_states = 0, n_moments = 0;
-  static void bonds(const abi::Family& f, bool use_alpha, double* t, double* direct, double*, double*, double*) {
+  static void bonds(const abi::Family& f, bool use_alpha, double* t, double* direct, double*, double*,
+                    double*) {
     const double c0 = f.params[0];
     for (int i = 0; i < f.n_bonds; ++i) {
       const double* xi = f.xi + i * D;
@@ -98,8 +99,8 @@ struct StateLaw {
     }
     return th;
   }
-  static void bonds(const abi::Family& f, bool use_alpha, double* t, double* direct, double* left, double* right,
-                    double*) {
+  static void bonds(const abi::Family& f, bool use_alpha, double* t, double* direct, double* left,
+                    double* right, double*) {
     const double A = f.params[0], B = f.params[1], m = f.moments[0], th = theta(f, use_alpha);
     for (int i = 0; i < f.n_bonds; ++i) {
       const double a = use_alpha ? f.alpha[i] : 1.0, w = f.w[i];
@@ -136,8 +137,7 @@ struct Kernels {
   static constexpr int S = Law::n_states;
   struct Scratch {
     std::vector<double> t, direct, left, right;
-    explicit Scratch(int L)
-        : t(L * D), direct(L * D * D), left(L * S * D + 1), right(L * S * D + 1) {}
+    explicit Scratch(int L) : t(L * D), direct(L * D * D), left(L * S * D + 1), right(L * S * D + 1) {}
   };
   static void moments(const abi::Family& f, double* m) {
     if constexpr (Law::n_moments > 0) m[0] = Law::moment(f, UseAlpha);

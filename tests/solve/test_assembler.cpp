@@ -17,7 +17,7 @@ struct Problem {
   std::unique_ptr<pd::FamilyAssembler> a;
   std::vector<double> u;
   Problem(const pd::abi::LawDescriptor& law, std::vector<double> params, int break_every, int dim = 2,
-        pd::AssemblerOptions opt = {}) {
+          pd::AssemblerOptions opt = {}) {
     body = dim == 2 ? pd::test::make_grid(2, 7, 6, 1, 2.2, 0.25, break_every)
                     : pd::test::make_grid(3, 4, 3, 3, 1.8, 0.2, break_every);
     a = std::make_unique<pd::FamilyAssembler>(body.particles, body.bonds, law,
@@ -43,7 +43,8 @@ void expect_stiffness_matches_fd(Problem& s) {
     um[j] -= eps;
     s.a->internal_forces(up.data(), fp.data());
     s.a->internal_forces(um.data(), fm.data());
-    for (int i = 0; i < s.n(); ++i) worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
+    for (int i = 0; i < s.n(); ++i)
+      worst = std::max(worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
   }
   EXPECT_LT(worst, 1e-6 * Kd.cwiseAbs().maxCoeff()) << s.a->law().name;
   EXPECT_GT(Kd.cwiseAbs().maxCoeff(), 0.0);
@@ -85,7 +86,8 @@ TEST(Assembler, MatrixFreeProductAndDiagonalEqualTheMatrix) {
     const double scale = ref.cwiseAbs().maxCoeff();
     for (int i = 0; i < s.n(); ++i) EXPECT_NEAR(Kv[i], ref[i], 1e-12 * scale) << law->name;
     s.a->stiffness_diagonal(s.u.data(), diag.data());
-    for (int i = 0; i < s.n(); ++i) EXPECT_NEAR(diag[i], K.coeff(i, i), 1e-12 * scale) << law->name << " diag " << i;
+    for (int i = 0; i < s.n(); ++i)
+      EXPECT_NEAR(diag[i], K.coeff(i, i), 1e-12 * scale) << law->name << " diag " << i;
   }
 }
 

@@ -35,7 +35,8 @@ TEST(DofMap, NumbersFreeDofsInOrder) {
   m.apply_prescribed(full, 0.5);
   EXPECT_DOUBLE_EQ(full[1], -0.5);
   EXPECT_DOUBLE_EQ(full[5], 1.0);
-  EXPECT_THROW(pd::DofMap::from_list(7, std::vector<int>{1, 1}, std::vector<double>{0, 0}), std::invalid_argument);
+  EXPECT_THROW(pd::DofMap::from_list(7, std::vector<int>{1, 1}, std::vector<double>{0, 0}),
+               std::invalid_argument);
   EXPECT_THROW(pd::DofMap::from_list(7, std::vector<int>{7}, std::vector<double>{0}), std::out_of_range);
 }
 

@@ -46,8 +46,8 @@ TEST(DofTies, ReducedBlocksAreFreeRowsOfKTimesP) {
   for (std::size_t j = 0; j < C.size(); ++j) Pc(C[j], j) = 1;
   P(3, m.free_index(5)) = -1;
   P(3, m.free_index(1)) = 0.5;
-  Pc(10, 0) = 2;                    // constrained dof 0 is the first constrained one
-  P(10, m.free_index(7)) = 0.5;     // -1 + 1.5
+  Pc(10, 0) = 2;                 // constrained dof 0 is the first constrained one
+  P(10, m.free_index(7)) = 0.5;  // -1 + 1.5
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(F.size(), n);
   for (std::size_t i = 0; i < F.size(); ++i) S(i, F[i]) = 1;
   pd::ReducedSystem red(m, K);
@@ -81,11 +81,11 @@ TEST(DofTies, TiedValuesFollowMastersAndLoad) {
 
 TEST(DofTies, RefusesBadTies) {
   pd::DofMap m = pd::DofMap::from_list(8, std::vector<int>{0}, std::vector<double>{0.0});
-  EXPECT_THROW(m.tie({pd::TiedDof{0, {1}, {1.0}, 0.0}}), std::invalid_argument);              // constrained
-  EXPECT_THROW(m.tie({pd::TiedDof{2, {3}, {1.0}, 0.0}, pd::TiedDof{3, {4}, {1.0}, 0.0}}),     // chained
+  EXPECT_THROW(m.tie({pd::TiedDof{0, {1}, {1.0}, 0.0}}), std::invalid_argument);           // constrained
+  EXPECT_THROW(m.tie({pd::TiedDof{2, {3}, {1.0}, 0.0}, pd::TiedDof{3, {4}, {1.0}, 0.0}}),  // chained
                std::invalid_argument);
-  EXPECT_THROW(m.tie({pd::TiedDof{2, {3}, {1.0}, 0.0}, pd::TiedDof{2, {4}, {1.0}, 0.0}}),     // twice
+  EXPECT_THROW(m.tie({pd::TiedDof{2, {3}, {1.0}, 0.0}, pd::TiedDof{2, {4}, {1.0}, 0.0}}),  // twice
                std::invalid_argument);
   EXPECT_THROW(m.tie({pd::TiedDof{2, {9}, {1.0}, 0.0}}), std::out_of_range);
-  EXPECT_THROW(m.tie({pd::TiedDof{2, {3, 4}, {1.0}, 0.0}}), std::invalid_argument);           // sizes
+  EXPECT_THROW(m.tie({pd::TiedDof{2, {3, 4}, {1.0}, 0.0}}), std::invalid_argument);  // sizes
 }

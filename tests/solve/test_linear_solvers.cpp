@@ -18,7 +18,8 @@ struct Reduced {
     pb.assembler->stiffness(nullptr, K, f.data());
     red = std::make_unique<pd::ReducedSystem>(pb.dofs, K);
     red->update(K);
-    const Eigen::VectorXd uc = Eigen::Map<const Eigen::VectorXd>(pb.dofs.prescribed().data(), pb.dofs.constrained_count());
+    const Eigen::VectorXd uc =
+        Eigen::Map<const Eigen::VectorXd>(pb.dofs.prescribed().data(), pb.dofs.constrained_count());
     b = red->rhs(f, uc);  // f = 0 at u = 0: b = -K_fc u_c
   }
 };
@@ -34,8 +35,9 @@ TEST(LinearSolvers, EachSolverSolvesTheSpringGrid) {
     M method;
     P pre;
   };
-  for (const Case& c : {Case{M::cholmod, P::automatic}, Case{M::umfpack, P::automatic}, Case{M::cg, P::ic},
-                        Case{M::cg, P::diagonal}, Case{M::bicgstab, P::ilut}, Case{M::automatic, P::automatic}}) {
+  for (const Case& c :
+       {Case{M::cholmod, P::automatic}, Case{M::umfpack, P::automatic}, Case{M::cg, P::ic},
+        Case{M::cg, P::diagonal}, Case{M::bicgstab, P::ilut}, Case{M::automatic, P::automatic}}) {
     pd::LinearSolverOptions o;
     o.method = c.method;
     o.preconditioner = c.pre;
@@ -46,7 +48,8 @@ TEST(LinearSolvers, EachSolverSolvesTheSpringGrid) {
     Eigen::VectorXd x;
     const pd::LinearSolveStats st = s.solve(r.b, x);
     EXPECT_TRUE(st.converged) << pd::name_of(c.method);
-    EXPECT_LT((r.red->Kff() * x - r.b).norm(), 1e-10 * r.b.norm()) << pd::name_of(c.method) << "+" << pd::name_of(c.pre);
+    EXPECT_LT((r.red->Kff() * x - r.b).norm(), 1e-10 * r.b.norm())
+        << pd::name_of(c.method) << "+" << pd::name_of(c.pre);
     EXPECT_LT((x - ref).norm(), 1e-8 * ref.norm()) << pd::name_of(c.method);
     if (c.method == M::cg || c.method == M::bicgstab) {
       EXPECT_GT(st.iterations, 0) << pd::name_of(c.method);
@@ -64,7 +67,9 @@ TEST(LinearSolvers, AutomaticRule) {
   pd::LinearSolverOptions o;
   o.direct_max_nonzeros = 1000;
   auto choose = [&](std::int64_t nonzeros, bool symmetric) {
-    return pd::choose_linear_solver(o.method, o.preconditioner, o.direct_max_nonzeros, 100, nonzeros, symmetric).method;
+    return pd::choose_linear_solver(o.method, o.preconditioner, o.direct_max_nonzeros, 100, nonzeros,
+                                    symmetric)
+        .method;
   };
   EXPECT_EQ(choose(1000, true), pd::LinearMethod::cholmod);
   EXPECT_EQ(choose(1000, false), pd::LinearMethod::umfpack);
@@ -92,7 +97,8 @@ TEST(LinearSolvers, IndefiniteMatrixFallsBackToUmfpack) {
   ASSERT_TRUE(s.factor(A));
   EXPECT_EQ(s.name(), "umfpack");
   bool said = false;
-  for (const auto& m : log) said |= m.find("not positive definite") != std::string::npos && m.find("umfpack") != std::string::npos;
+  for (const auto& m : log)
+    said |= m.find("not positive definite") != std::string::npos && m.find("umfpack") != std::string::npos;
   EXPECT_TRUE(said);
   Eigen::VectorXd x;
   s.solve(r.b, x);
@@ -130,7 +136,8 @@ TEST(LinearSolvers, UmfpackNamesASingularMatrix) {
   EXPECT_LT((A * x - b).norm(), 1e-12 * b.norm());
 
   pd::SparseMatrix S = A;
-  S.coeffRef(n / 2, n / 2) = 0, S.coeffRef(n / 2, n / 2 + 1) = 0, S.coeffRef(n / 2, n / 2 - 1) = 0;  // a zero row
+  S.coeffRef(n / 2, n / 2) = 0, S.coeffRef(n / 2, n / 2 + 1) = 0,
+                        S.coeffRef(n / 2, n / 2 - 1) = 0;  // a zero row
   auto singular = pd::make_sparse_solver(pd::LinearMethod::umfpack, pd::LinearSolverOptions{});
   singular->analyse(S);
   EXPECT_FALSE(singular->factor(S));

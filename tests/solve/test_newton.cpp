@@ -24,15 +24,19 @@ struct NonSymmetric final : pd::NonlinearSystem {
   explicit NonSymmetric(pd::NonlinearSystem& inner) : s(inner) {}
   int size() const override { return s.size(); }
   void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r); }
-  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override { s.tangent(u, l, K, r); }
+  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override {
+    s.tangent(u, l, K, r);
+  }
   bool symmetric() const override { return false; }
   bool has_jvp() const override { return true; }
-  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override { s.jvp(u, l, v, Kv); }
+  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override {
+    s.jvp(u, l, v, Kv);
+  }
   void diagonal(const Eigen::VectorXd& u, double l, Eigen::VectorXd& d) override { s.diagonal(u, l, d); }
 };
 
-pd::NewtonResult run(pd::NonlinearSystem& sys, const pd::DofMap& dofs, Eigen::VectorXd& u, pd::NewtonSettings st,
-                     std::vector<std::string>* log = nullptr) {
+pd::NewtonResult run(pd::NonlinearSystem& sys, const pd::DofMap& dofs, Eigen::VectorXd& u,
+                     pd::NewtonSettings st, std::vector<std::string>* log = nullptr) {
   u = Eigen::VectorXd::Zero(sys.size());
   pd::NewtonSolver solver(st, [&](const std::string& m) {
     if (log) log->push_back(m);
@@ -72,7 +76,8 @@ TEST(Newton, NonlinearProblemConvergesQuadratically) {
   ASSERT_TRUE(r.converged) << r.message;
   const auto& h = r.history;
   std::printf("max |u| = %g\n", u.cwiseAbs().maxCoeff());
-  for (const auto& rec : h) std::printf("  it %d  |r| = %.3e  step %.3g\n", rec.iteration, rec.residual, rec.step_length);
+  for (const auto& rec : h)
+    std::printf("  it %d  |r| = %.3e  step %.3g\n", rec.iteration, rec.residual, rec.step_length);
   ASSERT_GE(r.iterations(), 3) << "the problem should be nonlinear";
   EXPECT_LE(r.iterations(), 8);
   // Quadratic: once the step is full, r_{k+1} <= C r_k^2 / r_0 with a modest C, down to rounding.
@@ -126,12 +131,18 @@ struct ExactApproximation final : pd::NonlinearSystem {
   explicit ExactApproximation(pd::NonlinearSystem& inner) : s(inner) {}
   int size() const override { return s.size(); }
   void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r); }
-  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override { s.tangent(u, l, K, r); }
+  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override {
+    s.tangent(u, l, K, r);
+  }
   bool has_jvp() const override { return true; }
-  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override { s.jvp(u, l, v, Kv); }
+  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override {
+    s.jvp(u, l, v, Kv);
+  }
   void diagonal(const Eigen::VectorXd& u, double l, Eigen::VectorXd& d) override { s.diagonal(u, l, d); }
   bool has_approximate_tangent() const override { return true; }
-  void approximate_tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& P) override { s.tangent(u, l, P, nullptr); }
+  void approximate_tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& P) override {
+    s.tangent(u, l, P, nullptr);
+  }
 };
 }  // namespace
 
@@ -224,7 +235,9 @@ struct NoisyFloor final : pd::NonlinearSystem {
     ++calls;
     for (Eigen::Index i = 0; i < r.size(); ++i) r[i] += floor * std::sin(12.9898 * (i + 1) * calls);
   }
-  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r), add_noise(r); }
+  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override {
+    s.residual(u, l, r), add_noise(r);
+  }
   void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override {
     s.tangent(u, l, K, r);
     if (r) add_noise(*r);
@@ -244,7 +257,8 @@ TEST(Newton, StagnationOnTheRoundingFloorEndsTheIterationAndIsReported) {
   EXPECT_TRUE(r.stagnated);
   EXPECT_LT(r.iterations(), 15);
   bool said = false;
-  for (const auto& line : log) said = said || line.find("stagnated on the rounding floor") != std::string::npos;
+  for (const auto& line : log)
+    said = said || line.find("stagnated on the rounding floor") != std::string::npos;
   EXPECT_TRUE(said);
   // Without the rule the same system cannot reach rtol = 1e-10 and fails clearly.
   st.stagnation_window = 0;
@@ -268,9 +282,13 @@ struct IndefiniteLinear final : pd::NonlinearSystem {
   }
   int size() const override { return static_cast<int>(b.size()); }
   void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { r = l * b - A * u; }
-  void tangent(const Eigen::VectorXd&, double, pd::SparseMatrix& K, Eigen::VectorXd*) override { K = A.sparseView(); }
+  void tangent(const Eigen::VectorXd&, double, pd::SparseMatrix& K, Eigen::VectorXd*) override {
+    K = A.sparseView();
+  }
   bool has_jvp() const override { return true; }
-  void jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override { Kv = A * v; }
+  void jvp(const Eigen::VectorXd&, double, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override {
+    Kv = A * v;
+  }
   void diagonal(const Eigen::VectorXd&, double, Eigen::VectorXd& d) override { d = A.diagonal(); }
 };
 }  // namespace

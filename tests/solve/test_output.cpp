@@ -1,4 +1,5 @@
-// VTU and CSV writers: a well-formed binary VTU with the right counts and exact values, CSV shape, atomic writes.
+// VTU and CSV writers: a well-formed binary VTU with the right counts and exact values, CSV shape, atomic
+// writes.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -106,7 +107,8 @@ BinaryVtu split_binary_vtu(const std::string& doc) {
   if (at == std::string::npos) throw std::runtime_error("no raw <AppendedData>");
   const std::size_t underscore = doc.find('_', at + open.size());
   const std::size_t close = doc.rfind("\n  </AppendedData>");
-  if (underscore == std::string::npos || close == std::string::npos || close < underscore) throw std::runtime_error("bad appended section");
+  if (underscore == std::string::npos || close == std::string::npos || close < underscore)
+    throw std::runtime_error("bad appended section");
   return {Xml(doc.substr(0, at) + "</VTKFile>").parse(), doc.substr(underscore + 1, close - underscore - 1)};
 }
 // One appended block: a UInt64 byte count, then the values.
@@ -116,7 +118,8 @@ std::vector<T> block(const BinaryVtu& v, const Element& array) {
   std::uint64_t bytes = 0;
   if (offset + sizeof bytes > v.data.size()) throw std::runtime_error("offset past the data");
   std::memcpy(&bytes, v.data.data() + offset, sizeof bytes);
-  if (offset + sizeof bytes + bytes > v.data.size() || bytes % sizeof(T) != 0) throw std::runtime_error("bad block size");
+  if (offset + sizeof bytes + bytes > v.data.size() || bytes % sizeof(T) != 0)
+    throw std::runtime_error("bad block size");
   std::vector<T> out(bytes / sizeof(T));
   if (bytes > 0) std::memcpy(out.data(), v.data.data() + offset + sizeof bytes, bytes);
   return out;
@@ -135,13 +138,15 @@ TEST(Output, VtuIsBinaryWithTheRightCountsAndExactValues) {
   const auto path = dir / "sub" / "result.vtu";
   pd::write_vtu_file(path.string(), body.particles, u, fields);
   ASSERT_TRUE(std::filesystem::exists(path));
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(path.parent_path()), {}), 1) << "a temporary was left";
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(path.parent_path()), {}), 1)
+      << "a temporary was left";
   const std::string doc = read(path);
   const BinaryVtu v = split_binary_vtu(doc);
   EXPECT_EQ(v.root.name, "VTKFile");
   EXPECT_EQ(v.root.attributes.at("type"), "UnstructuredGrid");
   EXPECT_EQ(v.root.attributes.at("header_type"), "UInt64");
-  EXPECT_EQ(v.root.attributes.at("byte_order"), std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian");
+  EXPECT_EQ(v.root.attributes.at("byte_order"),
+            std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian");
   const Element& piece = child(child(v.root, "UnstructuredGrid"), "Piece");
   EXPECT_EQ(piece.attributes.at("NumberOfPoints"), std::to_string(n));
   EXPECT_EQ(piece.attributes.at("NumberOfCells"), std::to_string(n));
@@ -192,7 +197,8 @@ TEST(Output, TemporariesAreUniquePerWrite) {
   std::vector<std::thread> writers;
   for (int t = 0; t < 4; ++t)
     writers.emplace_back([&, t] {
-      for (int k = 0; k < 50; ++k) pd::write_file_atomically(path, std::string(10000, static_cast<char>('a' + t)));
+      for (int k = 0; k < 50; ++k)
+        pd::write_file_atomically(path, std::string(10000, static_cast<char>('a' + t)));
     });
   for (auto& w : writers) w.join();
   const std::string text = read(path);
@@ -206,7 +212,8 @@ TEST(Output, CsvHasHeaderAndOneRowPerParticle) {
   const auto body = pd::test::make_grid(3, 3, 2, 2, 1.5);
   const int n = body.particles.size();
   std::vector<double> u(3 * n, 0.5);
-  std::vector<pd::OutputField> fields{{"theta", 1, std::vector<double>(n, 2.0)}, {"f", 3, std::vector<double>(3 * n, 1.0)}};
+  std::vector<pd::OutputField> fields{{"theta", 1, std::vector<double>(n, 2.0)},
+                                      {"f", 3, std::vector<double>(3 * n, 1.0)}};
   const std::string csv = pd::csv_document(body.particles, u, fields);
   std::istringstream in(csv);
   std::string line;

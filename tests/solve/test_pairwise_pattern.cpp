@@ -19,7 +19,8 @@ std::set<std::pair<int, int>> bonded_pairs(const pd::Bonds& B) {
   std::set<std::pair<int, int>> s;
   for (int p = 0; p < B.particle_count(); ++p) {
     s.insert({p, p});
-    for (int e = B.offsets[p]; e < B.offsets[p + 1]; ++e) s.insert({p, B.neighbor[e]}), s.insert({B.neighbor[e], p});
+    for (int e = B.offsets[p]; e < B.offsets[p + 1]; ++e)
+      s.insert({p, B.neighbor[e]}), s.insert({B.neighbor[e], p});
   }
   return s;
 }
@@ -54,7 +55,8 @@ Eigen::VectorXd clamped_solve(const pd::SparseMatrix& K, const pd::Particles& P)
 TEST(PairwisePattern, NonzerosAreThePairsOneHorizonApart) {
   const auto body = pd::test::make_grid(2, 14, 11, 1, 3.5, 0.2);
   const auto pairs = bonded_pairs(body.bonds);
-  const pd::SparsityPattern one(body.bonds, 2, pd::Coupling::pairwise), two(body.bonds, 2, pd::Coupling::family);
+  const pd::SparsityPattern one(body.bonds, 2, pd::Coupling::pairwise),
+      two(body.bonds, 2, pd::Coupling::family);
   EXPECT_EQ(one.nonzeros(), 4 * static_cast<std::int64_t>(pairs.size()));
   // Every stored particle pair is a bonded one.
   for (int b = 0; b < body.particles.size(); ++b)
@@ -87,5 +89,6 @@ TEST(PairwisePattern, BondBasedStiffnessAndSolutionEqualTheTwoHorizonOnes) {
 TEST(PairwisePattern, LawWithStatesRefusesIt) {
   const auto body = pd::test::make_grid(2, 6, 5, 1, 2.0);
   EXPECT_THROW(make_assembler(body, "silling_plane_strain", pd::Coupling::pairwise), std::invalid_argument);
-  EXPECT_EQ(make_assembler(body, "silling_plane_strain", std::nullopt)->pattern().coupling(), pd::Coupling::family);
+  EXPECT_EQ(make_assembler(body, "silling_plane_strain", std::nullopt)->pattern().coupling(),
+            pd::Coupling::family);
 }

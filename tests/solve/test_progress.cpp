@@ -46,7 +46,8 @@ TEST(Progress, ALongKrylovSolveLogsItsIterationAndResidualWhileItRuns) {
     y.tail(n - 1) -= x.head(n - 1);
   };
   const pd::LinearOperator M = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    if (++calls == 3) arrived = out.wait_for_first(std::chrono::seconds(20));  // hold the solve until the watchdog has spoken
+    if (++calls == 3)
+      arrived = out.wait_for_first(std::chrono::seconds(20));  // hold the solve until the watchdog has spoken
     z = r;
   };
   Eigen::VectorXd x, b = Eigen::VectorXd::Ones(n);
@@ -55,12 +56,15 @@ TEST(Progress, ALongKrylovSolveLogsItsIterationAndResidualWhileItRuns) {
   ASSERT_TRUE(arrived) << "no progress line within 20 s";
   std::lock_guard lock(out.m);
   ASSERT_GE(out.lines.size(), 2u);
-  EXPECT_NE(out.lines.front().find("    matrix-free CG of 20 unknowns: "), std::string::npos) << out.lines.front();
+  EXPECT_NE(out.lines.front().find("    matrix-free CG of 20 unknowns: "), std::string::npos)
+      << out.lines.front();
   bool iteration_shown = false;  // the first line may come before the first iteration was counted
   for (const std::string& line : out.lines)
-    iteration_shown = iteration_shown || (line.find(" s so far, iteration ") != std::string::npos && line.find(", |r|/|b| = ") != std::string::npos);
+    iteration_shown = iteration_shown || (line.find(" s so far, iteration ") != std::string::npos &&
+                                          line.find(", |r|/|b| = ") != std::string::npos);
   EXPECT_TRUE(iteration_shown) << out.lines.front();
-  EXPECT_NE(out.lines.back().find("    matrix-free CG of 20 unknowns: done in "), std::string::npos) << out.lines.back();
+  EXPECT_NE(out.lines.back().find("    matrix-free CG of 20 unknowns: done in "), std::string::npos)
+      << out.lines.back();
 }
 
 TEST(Progress, AShortPhaseOrNoSinkWritesNothing) {

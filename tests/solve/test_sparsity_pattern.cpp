@@ -82,7 +82,8 @@ TEST(FamilyColouring, FamiliesOfOneColourShareNoParticle) {
           const int p = col.family(j);
           ++seen_families[p];
           auto claim = [&](int q) {
-            ASSERT_TRUE(owner[q] == -1 || owner[q] == ch) << "particle " << q << " in two chunks of colour " << c;
+            ASSERT_TRUE(owner[q] == -1 || owner[q] == ch)
+                << "particle " << q << " in two chunks of colour " << c;
             owner[q] = ch;
           };
           claim(p);

@@ -101,7 +101,8 @@ void check_law(const pd::abi::LawDescriptor& law, int dim) {
       g.Y = rf.Y.data();
       E[s] = g.V0 * law.damaged.energy(g);
     }
-    EXPECT_NEAR(f0[j], -(E[0] - E[1]) / (2 * eps), 1e-7 * (1 + std::abs(f0[j]))) << law.name << " force " << j;
+    EXPECT_NEAR(f0[j], -(E[0] - E[1]) / (2 * eps), 1e-7 * (1 + std::abs(f0[j])))
+        << law.name << " force " << j;
   }
 }
 }  // namespace

@@ -33,7 +33,8 @@ inline TangentFdCheck tangent_fd_check(const FamilyAssembler& a, const std::vect
     up[j] += eps, um[j] -= eps;
     a.internal_forces(up.data(), fp.data());
     a.internal_forces(um.data(), fm.data());
-    for (int i = 0; i < dofs; ++i) out.worst = std::max(out.worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
+    for (int i = 0; i < dofs; ++i)
+      out.worst = std::max(out.worst, std::abs(-(fp[i] - fm[i]) / (2 * eps) - Kd(i, j)));
   }
   return out;
 }
@@ -49,7 +50,8 @@ inline void expect_product_equals_matrix(const FamilyAssembler& a, const std::ve
   std::vector<double> Kv(dofs);
   a.stiffness_product(u.data(), v.data(), Kv.data());
   const Eigen::VectorXd expected = Kd * Eigen::Map<const Eigen::VectorXd>(v.data(), dofs);
-  for (int i = 0; i < dofs; ++i) EXPECT_NEAR(Kv[i], expected[i], 1e-10 * expected.cwiseAbs().maxCoeff() + 1e-12 * scale);
+  for (int i = 0; i < dofs; ++i)
+    EXPECT_NEAR(Kv[i], expected[i], 1e-10 * expected.cwiseAbs().maxCoeff() + 1e-12 * scale);
 }
 
 }  // namespace pd::test

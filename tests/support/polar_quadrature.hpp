@@ -40,7 +40,7 @@ inline double integrate_numerically(int dim, const pd::BondMonomial& f, double d
                                     const std::function<double(double)>& weight = {}) {
   std::vector<double> gx, gw;
   gauss_legendre(12, gx, gw);  // exact for radial and polar degrees <= 23
-  const int n_phi = 16;  // exact for the azimuthal degree <= 6 used here
+  const int n_phi = 16;        // exact for the azimuthal degree <= 6 used here
   double sum = 0;
   for (size_t a = 0; a < gx.size(); ++a) {
     const double r = 0.5 * delta * (gx[a] + 1), wr = 0.5 * delta * gw[a];

@@ -26,8 +26,8 @@ struct Store {
   std::string target;  // C++ lvalue, may use the bond index k
   Expr value;
   StoreMode mode = StoreMode::Set;
-  std::string guard;   // optional condition, e.g. "forces != nullptr"
-  int sum = -1;        // Accumulate into a horizon sum: its symbol (target is its variable)
+  std::string guard;  // optional condition, e.g. "forces != nullptr"
+  int sum = -1;       // Accumulate into a horizon sum: its symbol (target is its variable)
 };
 
 struct Segment {
@@ -38,7 +38,7 @@ struct Segment {
 };
 
 struct KernelProgram {
-  std::string name;                 // function name
+  std::string name;  // function name
   std::string return_type = "void";
   std::vector<std::string> params;  // "const pd::abi::Family& fam", ...
   std::vector<std::string> param_names;
@@ -52,10 +52,10 @@ struct EmitCounts {
 };
 
 struct EmittedKernel {
-  std::string code;         // the function definition, headed by its op counts
-  std::string declaration;  // the prototype
-  EmitCounts per_bond;      // summed over the kernel's bond loops
-  EmitCounts per_family;    // outside the loops
+  std::string code;          // the function definition, headed by its op counts
+  std::string declaration;   // the prototype
+  EmitCounts per_bond;       // summed over the kernel's bond loops
+  EmitCounts per_family;     // outside the loops
   int scratch_per_bond = 0;  // doubles per bond the kernel keeps in fam.scratch
 };
 

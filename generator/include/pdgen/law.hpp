@@ -21,7 +21,7 @@ struct SumDef {
   Expr symbol;       // the per-particle symbol standing for S
   Expr body;         // per-bond expression
   bool is_state = false;
-  int level = 0;     // 1 + the highest level among the sums its body uses
+  int level = 0;  // 1 + the highest level among the sums its body uses
 };
 
 struct OutputDef {
@@ -101,7 +101,10 @@ class Law {
 
   void force(const Vec& t);
   bool has_force() const { return force_.dim() == dim_; }
-  void energy(Expr W) { energy_ = W; has_energy_ = true; }
+  void energy(Expr W) {
+    energy_ = W;
+    has_energy_ = true;
+  }
   void output(const std::string& name, Expr value) { outputs_.push_back({name, value}); }
   // Claims: checked by the automatic law tests and `pd check-law`.
   // The force state conserves angular momentum: sum_k Y_k x t_k = 0 for every
@@ -175,7 +178,8 @@ struct LawRegistrar {
   }
 };
 struct InfluenceRegistrar {
-  InfluenceRegistrar(const char* file, std::string name, std::string formula, std::function<Expr(Expr, Expr)> w) {
+  InfluenceRegistrar(const char* file, std::string name, std::string formula,
+                     std::function<Expr(Expr, Expr)> w) {
     influence_registry().push_back({file_stem(file), std::move(name), std::move(formula), std::move(w)});
   }
 };
@@ -185,14 +189,14 @@ struct InfluenceRegistrar {
 #define PDGEN_CONCAT2(a, b) a##b
 #define PDGEN_CONCAT(a, b) PDGEN_CONCAT2(a, b)
 // PDGEN_LAW(fn) { Law law(...); ...; return law; } registers a law builder.
-#define PDGEN_LAW(fn)                                                                 \
-  static ::pdgen::Law fn();                                                           \
-  static const ::pdgen::LawRegistrar PDGEN_CONCAT(fn, _registrar){__FILE__, &fn};     \
+#define PDGEN_LAW(fn)                                                             \
+  static ::pdgen::Law fn();                                                       \
+  static const ::pdgen::LawRegistrar PDGEN_CONCAT(fn, _registrar){__FILE__, &fn}; \
   static ::pdgen::Law fn()
 // PDGEN_INFLUENCE(name, "formula") { return expression of r and delta; }
-#define PDGEN_INFLUENCE(name, formula)                                                          \
-  static ::pdgen::Expr PDGEN_CONCAT(influence_, name)(::pdgen::Expr r, ::pdgen::Expr delta);   \
-  static const ::pdgen::InfluenceRegistrar PDGEN_CONCAT(name, _influence_registrar){            \
-      __FILE__, #name, formula, &PDGEN_CONCAT(influence_, name)};                                         \
-  static ::pdgen::Expr PDGEN_CONCAT(influence_, name)([[maybe_unused]] ::pdgen::Expr r,         \
+#define PDGEN_INFLUENCE(name, formula)                                                       \
+  static ::pdgen::Expr PDGEN_CONCAT(influence_, name)(::pdgen::Expr r, ::pdgen::Expr delta); \
+  static const ::pdgen::InfluenceRegistrar PDGEN_CONCAT(name, _influence_registrar){         \
+      __FILE__, #name, formula, &PDGEN_CONCAT(influence_, name)};                            \
+  static ::pdgen::Expr PDGEN_CONCAT(influence_, name)([[maybe_unused]] ::pdgen::Expr r,      \
                                                       [[maybe_unused]] ::pdgen::Expr delta)
