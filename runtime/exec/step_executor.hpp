@@ -33,7 +33,8 @@ class StepExecutor {
   // work of the reactions), at the dofs this process owns (zero elsewhere on a rank).
   virtual void forces(double t, std::vector<double>& f, std::vector<double>& g) = 0;
   // Every effect's after_step at the current u, on the families this process owns; true
-  // when any effect changed the model on any process.
+  // when an effect changed the model on this process (no communication: the dynamic loops
+  // go on either way, and a rank's later gather brings the owners' changes to rank 0).
   virtual bool after_step() = 0;
   // Brings u at the ghosts up to date after this process moved its own dofs.
   virtual void sync() = 0;
