@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assembly/moments.hpp"
+#include "assembly/peridynamic_stress.hpp"
 #include "assembly/scatter.hpp"
 #include "local_matrix.hpp"
 
@@ -48,24 +49,14 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
       variant_(options.intact ? law.intact : law.damaged),
       options_(options),
       colouring_(particles, bonds, options.chunk_size) {
-  if (law.dim != particles.dim || bonds.dim != particles.dim)
+  if (options.gauss_points)
+    throw std::logic_error("assembler: Gauss points have their own operator (make_force_operator)");
+  pair_jump_ = check_law_inputs(particles, law, params, "assembler");
+  if (bonds.dim != particles.dim)
     throw std::invalid_argument(std::string("assembler: law ") + law.name + " is " + std::to_string(law.dim) +
                                 "D, the body is " + std::to_string(particles.dim) + "D");
   if (bonds.particle_count() != particles.size())
     throw std::invalid_argument("assembler: bonds and particles differ in count");
-  int max_material = -1;
-  for (int m : particles.material) max_material = std::max(max_material, m);
-  if (max_material >= static_cast<int>(params.size()))
-    throw std::invalid_argument("assembler: material " + std::to_string(max_material) + " has no parameters");
-  for (const auto& p : params)
-    if (static_cast<int>(p.size()) != law.n_params)
-      throw std::invalid_argument(std::string("assembler: law ") + law.name + " takes " +
-                                  std::to_string(law.n_params) + " parameters, got " +
-                                  std::to_string(p.size()));
-  if (law.uses_pair_params)
-    for (int m : particles.material)
-      pair_jump_ = pair_jump_ || params[static_cast<std::size_t>(m)] !=
-                                     params[static_cast<std::size_t>(particles.material[0])];
   inputs_.particles = &particles;
   inputs_.bonds = &bonds;
   inputs_.params = std::move(params);
@@ -78,27 +69,37 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
     throw std::invalid_argument(std::string("assembler: law ") + law.name +
                                 " has states; its tangent couples every two " +
                                 "particles of a family, not only the pairs of the pairwise pattern");
-  if (options.gauss_points) {
-    gauss_ = std::make_unique<GaussPointAssembler>(particles, *options.gauss_points, law, variant_,
-                                                   inputs_.params, options.matrix, options.threads);
-    return;
-  }
   if (options_.matrix) pattern_ = std::make_unique<SparsityPattern>(bonds, particles.dim, coupling);
 }
 
-void FamilyAssembler::update_moments() {
-  compute_moments(inputs_, law_, variant_);
-  if (gauss_) gauss_->update_moments();
-}
+void FamilyAssembler::update_moments() { compute_moments(inputs_, law_, variant_); }
 
 const SparsityPattern& FamilyAssembler::pattern() const {
-  if (gauss_) return gauss_->pattern();
   if (!pattern_)
     throw std::logic_error("assembler: built without a matrix pattern (AssemblerOptions::matrix = false)");
   return *pattern_;
 }
 
-SparseMatrix FamilyAssembler::make_matrix() const { return pattern().matrix(); }
+std::vector<double> FamilyAssembler::stiffness_row_sums(const double* u) const {
+  std::unique_ptr<FamilyAssembler> with_pattern;
+  if (!pattern_) {
+    AssemblerOptions o = options_;
+    o.matrix = true;
+    with_pattern =
+        std::make_unique<FamilyAssembler>(*inputs_.particles, *inputs_.bonds, law_, inputs_.params, o);
+  }
+  const FamilyAssembler& a = with_pattern ? *with_pattern : *this;
+  SparseMatrix K = a.make_matrix();
+  a.stiffness(u, K);
+  std::vector<double> s(static_cast<std::size_t>(K.rows()), 0.0);
+  // Column-major storage: add |K_rc| of each column to its rows.
+  for (Eigen::Index c = 0; c < K.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(K, c); it; ++it)
+      s[static_cast<std::size_t>(it.row())] += std::fabs(it.value());
+  return s;
+}
+
+std::vector<double> FamilyAssembler::stresses(const double* u) const { return peridynamic_stress(*this, u); }
 
 int FamilyAssembler::thread_count() const {
   // An explicit count is obeyed. Otherwise: one thread on small bodies. Each colour ends
@@ -141,7 +142,6 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
   const std::size_t N = static_cast<std::size_t>(dofs());
   if (forces) std::fill(forces, forces + N, 0.0);
   double* values = nullptr;
-  if (gauss_) return gauss_->assemble(u, forces, K);
   if (K) {
     const SparsityPattern& pat = pattern();
     if (K->rows() != static_cast<Eigen::Index>(N) || K->nonZeros() != pat.nonzeros() || !K->isCompressed())
@@ -200,7 +200,6 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
 }
 
 void FamilyAssembler::stiffness_product(const double* u, const double* v, double* Kv) const {
-  if (gauss_) return gauss_->stiffness_product(u, v, Kv);
   const int d = inputs_.dim();
   std::fill(Kv, Kv + dofs(), 0.0);
   for_each_family("matrix-free product", [&](ThreadScratch& s, int p) -> const char* {
@@ -220,7 +219,6 @@ void FamilyAssembler::stiffness_product(const double* u, const double* v, double
 }
 
 void FamilyAssembler::stiffness_diagonal(const double* u, double* diag) const {
-  if (gauss_) return gauss_->stiffness_diagonal(u, diag);
   const int d = inputs_.dim(), S = law_.n_states, dd = d * d;
   std::fill(diag, diag + dofs(), 0.0);
   for_each_family("stiffness diagonal", [&](ThreadScratch& s, int p) -> const char* {
@@ -294,7 +292,6 @@ double FamilyAssembler::strain_energy(const double* u) const {
     throw std::logic_error(std::string("law ") + law_.name + " has no energy kernel");
   if (!symmetric())
     throw std::logic_error("collocation assembly has no strain energy (its forces are not a gradient)");
-  if (gauss_) return gauss_->strain_energy(u);
   const int n = inputs_.size();
   std::vector<double> e(static_cast<std::size_t>(n), 0.0);
 #pragma omp parallel num_threads(thread_count())

@@ -1,4 +1,4 @@
-// Global assembly of one law over all families: internal forces, stiffness, K v, diag K.
+// The bond-family force operator: one law over all families, each integrated over its bonds.
 #pragma once
 
 #include <memory>
@@ -7,8 +7,9 @@
 
 #include "assembly/family_colouring.hpp"
 #include "assembly/family_gather.hpp"
-#include "assembly/gauss_point_assembler.hpp"
+#include "assembly/force_operator.hpp"
 #include "assembly/sparsity_pattern.hpp"
+#include "discretize/gauss_points.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 
@@ -26,15 +27,11 @@ struct AssemblerOptions {
   // without states). Coupling::family on a pairwise law stores its structural zeros
   // (the two-horizon pattern, for comparison); pairwise on a law with states throws.
   std::optional<Coupling> coupling;
-  // Non-null: the families integrate over these fixed Gauss points (paper 002 §3.3) and
-  // every call goes to GaussPointAssembler (gauss_point_assembler.hpp). Must outlive the assembler.
+  // Non-null: make_force_operator integrates the families over these fixed Gauss points
+  // (paper 002 §3.3, gauss_point_assembler.hpp); FamilyAssembler refuses them. Must outlive the operator.
   const GaussPoints* gauss_points = nullptr;
 };
 
-// Signs (docs/conventions.md): forces are the kernel's nodal forces f, summed over
-// families; the stiffness is the solver's K = -df/du (symmetric for an energy-derived
-// law); the product and diagonal are those of K. All vectors are [n*dim], particle-major.
-//
 // One code path, assemble(), fills forces, K, or both: families are visited colour by
 // colour (FamilyColouring) so no two threads touch the same entry, the local matrix is
 // formed by pd::form_local_matrix and written straight into the family's precomputed
@@ -43,7 +40,7 @@ struct AssemblerOptions {
 // Every kernel output is checked before it is scattered; a NaN or Inf throws
 // std::runtime_error naming the stage, the law and the particle (the lowest one if
 // several families fail).
-class FamilyAssembler {
+class FamilyAssembler final : public ForceOperator {
  public:
   // params: one parameter vector per material (Particles::material indexes it), in the
   // order of law.param_names. particles and bonds must outlive the assembler.
@@ -51,53 +48,44 @@ class FamilyAssembler {
                   std::vector<std::vector<double>> params, AssemblerOptions options = {});
 
   // Recompute the moments (after bond factors alpha changed).
-  void update_moments();
-  void set_threads(int threads) {
-    options_.threads = threads;
-    if (gauss_) gauss_->set_threads(threads);
-  }
+  void update_moments() override;
+  void set_threads(int threads) override { options_.threads = threads; }
 
-  // forces (may be null) += nothing: overwritten with f(u); K (may be null) overwritten
-  // with -df/du in pattern(). u null means zero displacement.
-  void assemble(const double* u, double* forces, SparseMatrix* K) const;
-  void internal_forces(const double* u, double* forces) const { assemble(u, forces, nullptr); }
-  void stiffness(const double* u, SparseMatrix& K, double* forces = nullptr) const {
-    assemble(u, forces, &K);
-  }
-  // Kv = K(u) v from the kernel's tangent-vector product: no matrix, cost linear in the bonds.
-  void stiffness_product(const double* u, const double* v, double* Kv) const;
-  // diag = diagonal of K(u), from the tangent factors in O(bonds): the Jacobi
-  // preconditioner of the matrix-free path.
-  void stiffness_diagonal(const double* u, double* diag) const;
+  void assemble(const double* u, double* forces, SparseMatrix* K) const override;
+  // Cost linear in the bonds.
+  void stiffness_product(const double* u, const double* v, double* Kv) const override;
+  // From the tangent factors in O(bonds).
+  void stiffness_diagonal(const double* u, double* diag) const override;
+  // The row sums of the formed matrix (a temporary operator with a pattern if this one has none).
+  std::vector<double> stiffness_row_sums(const double* u) const override;
   // Strain energy sum_p V_p W_p(u) from the law's energy kernel; has_energy() false
   // (and this throws std::logic_error) when the law has none.
   // Collocation with symmetric pair weights (Collocation::pair_symmetric) is the energy
   // assembly with other weights, so it has both. Also false for a law with pair parameters
   // (LawDescriptor::uses_pair_params) on a body whose particles carry different parameters,
   // and with surface correction factors (Bonds::surface_force): the forces have no potential there.
-  bool has_energy() const { return variant_.energy != nullptr && symmetric(); }
+  bool has_energy() const override { return variant_.energy != nullptr && symmetric(); }
   // False under collocation assembly with unsymmetric pair weights, for pair parameters across
   // a material jump and with surface correction: the solver needs UMFPACK or GMRES then.
-  bool symmetric() const {
+  bool symmetric() const override {
     return (options_.collocation == nullptr || options_.collocation->pair_symmetric) && !pair_jump_ &&
            !surface_corrected();
   }
   bool surface_corrected() const { return !inputs_.bonds->surface_force.empty(); }
-  double strain_energy(const double* u) const;
-  // The law's per-particle outputs [n * law.n_outputs] (empty if the law has none).
-  std::vector<double> particle_outputs(const double* u) const;
+  double strain_energy(const double* u) const override;
+  std::vector<double> particle_outputs(const double* u) const override;
+  std::vector<double> stresses(const double* u) const override;
 
-  // A zero matrix with the assembly pattern; throws if options.matrix was false.
-  SparseMatrix make_matrix() const;
-  const SparsityPattern& pattern() const;
+  // Throws if options.matrix was false.
+  const SparsityPattern& pattern() const override;
   const FamilyColouring& colouring() const { return colouring_; }
   const FamilyInputs& inputs() const { return inputs_; }
-  const abi::LawDescriptor& law() const { return law_; }
-  const abi::KernelVariant& variant() const { return variant_; }
-  bool intact() const { return options_.intact; }
-  // The Gauss-point path, or null (the bonds above are then the quadrature).
-  const GaussPointAssembler* gauss_points() const { return gauss_.get(); }
-  int dofs() const { return inputs_.size() * inputs_.dim(); }
+  const abi::LawDescriptor& law() const override { return law_; }
+  const abi::KernelVariant& variant() const override { return variant_; }
+  const AssemblerOptions& options() const { return options_; }
+  bool intact() const override { return options_.intact; }
+  int dofs() const override { return inputs_.size() * inputs_.dim(); }
+  const FamilyAssembler* bond_families() const override { return this; }
 
  private:
   template <class Body>
@@ -111,7 +99,6 @@ class FamilyAssembler {
   FamilyInputs inputs_;
   FamilyColouring colouring_;
   std::unique_ptr<SparsityPattern> pattern_;
-  std::unique_ptr<GaussPointAssembler> gauss_;
 };
 
 }  // namespace pd

@@ -242,6 +242,7 @@ GaussPointAssembler::GaussPointAssembler(const Particles& particles, const Gauss
       variant_(variant),
       params_(std::move(params)),
       threads_(threads) {
+  pair_jump_ = check_law_inputs(particles, law, params_, "Gauss-point assembler");
   if (gp.dim != particles.dim || gp.particle_count() != particles.size())
     throw std::invalid_argument("Gauss-point assembler: the Gauss points were built for another body");
   // Conflicts for the colouring: family p "holds" the cells of its points (two families
@@ -511,7 +512,7 @@ void GaussPointAssembler::stiffness_diagonal(const double* u, double* diag) cons
   });
 }
 
-std::vector<double> GaussPointAssembler::stiffness_row_sum_bound(const double* u) const {
+std::vector<double> GaussPointAssembler::stiffness_row_sums(const double* u) const {
   const int d = particles_->dim, S = law_.n_states;
   std::vector<double> rows(static_cast<std::size_t>(dofs()), 0.0), ug;
   if (u) {

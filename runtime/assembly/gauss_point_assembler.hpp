@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "assembly/family_colouring.hpp"
+#include "assembly/force_operator.hpp"
 #include "assembly/sparsity_pattern.hpp"
 #include "discretize/gauss_points.hpp"
 #include "kernel_abi.hpp"
@@ -36,7 +37,7 @@
 
 namespace pd {
 
-class GaussPointAssembler {
+class GaussPointAssembler final : public ForceOperator {
  public:
   // gp and particles must outlive the assembler; params: one vector per material.
   GaussPointAssembler(const Particles& particles, const GaussPoints& gp, const abi::LawDescriptor& law,
@@ -44,12 +45,12 @@ class GaussPointAssembler {
                       int threads = 0);
 
   // OpenMP threads of the coloured passes (0: OpenMP's default).
-  void set_threads(int threads) { threads_ = threads; }
+  void set_threads(int threads) override { threads_ = threads; }
 
-  void update_moments();
+  void update_moments() override;
   // Forces overwritten with f(u) (may be null); K (may be null) with -df/du in pattern().
-  void assemble(const double* u, double* forces, SparseMatrix* K) const;
-  void stiffness_product(const double* u, const double* v, double* Kv) const;
+  void assemble(const double* u, double* forces, SparseMatrix* K) const override;
+  void stiffness_product(const double* u, const double* v, double* Kv) const override;
   // The paper's collocation form, eq. (3.15), for a pairwise law (n_states == 0; throws
   // otherwise): node i's force is the sum of the pairwise forces f(u_g - u_i, x_g - x_i)
   // beta_g V_g over its own Gauss bonds, f = 2 t_i<g> (the kernel's force state is half the
@@ -57,29 +58,39 @@ class GaussPointAssembler {
   // not symmetric (docs/paper002.md measures both); for comparison with the variational
   // form above, not reachable from a scene.
   void collocation_forces(const double* u, double* forces) const;
-  void stiffness_diagonal(const double* u, double* diag) const;
-  double strain_energy(const double* u) const;
+  void stiffness_diagonal(const double* u, double* diag) const override;
+  // No collocation or surface correction reaches the Gauss families (the scene refuses them):
+  // only pair parameters across a material jump break the potential.
+  bool symmetric() const override { return !pair_jump_; }
+  bool has_energy() const override { return variant_.energy != nullptr && symmetric(); }
+  double strain_energy(const double* u) const override;
   // An upper bound on the Gershgorin row sums S_r = sum_c |K_rc| of the stiffness at u (null:
   // the reference configuration), without forming K: per family, |P^T M P| <= sum_i |c_i|
   // |B_i|^T |D_i| |B_i| + sum_s |a_s| |b_s|^T entrywise (the factored tangent of
   // nodal_matrix), whose row sums cost O(L n_phi d) per family instead of the matrix's
   // O(L n_phi^2 d^2) and need no pattern. For the stable step of explicit dynamics
   // (effects/time_step.hpp): a larger S_r gives a smaller, still stable, step.
-  std::vector<double> stiffness_row_sum_bound(const double* u) const;
+  std::vector<double> stiffness_row_sums(const double* u) const override;
   // W of particle p's Gauss family alone (the law's energy kernel; throws without one).
   double family_energy_density(int p, const double* u) const;
-  std::vector<double> particle_outputs(const double* u) const;
+  std::vector<double> particle_outputs(const double* u) const override;
   // Pairwise force-state sum sigma_i of eq. (2.13) over the Gauss family (assembly/peridynamic_stress.hpp's
   // family_stress on each family): [n*dim*dim].
   std::vector<double> family_stresses(const double* u) const;
+  // A Gauss point has no family of its own, so t_g<i> is not defined: each family's own half
+  // doubled (family_stresses, t_g<i> = -t_i<g>) is eq. (2.13) for a homogeneous deformation.
+  std::vector<double> stresses(const double* u) const override { return family_stresses(u); }
 
-  const SparsityPattern& pattern() const;
+  const SparsityPattern& pattern() const override;
+  const abi::LawDescriptor& law() const override { return law_; }
+  const abi::KernelVariant& variant() const override { return variant_; }
+  bool intact() const override { return &variant_ == &law_.intact; }
   // The node sets each family's tangent couples, as Bonds (neighbor: the local nodes
   // n_1.. ascending; the other arrays empty): what the pattern is built from.
   // Built on first use (the matrix, the diagonal): a few ints per coupled pair.
   const Bonds& reach_bonds() const;
   const GaussPoints& points() const { return *gp_; }
-  int dofs() const { return particles_->size() * particles_->dim; }
+  int dofs() const override { return particles_->size() * particles_->dim; }
 
  private:
   class Gather;
@@ -107,6 +118,7 @@ class GaussPointAssembler {
   // ascending (the order the serial point loop added them in).
   std::vector<int> node_entry_start_, node_entry_, entry_point_;
   int threads_ = 0;
+  bool pair_jump_ = false;  // the law uses pair parameters and the particles' parameters differ
 };
 
 }  // namespace pd

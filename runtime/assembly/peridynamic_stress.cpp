@@ -12,9 +12,6 @@
 namespace pd {
 
 std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const double* u) {
-  // Gauss points: a point has no family of its own, so t_g<i> is not defined; each family's
-  // own half doubled (family_stress, t_g<i> = -t_i<g>) is eq. (2.13) for a homogeneous deformation.
-  if (const GaussPointAssembler* g = assembler.gauss_points()) return g->family_stresses(u);
   const FamilyInputs& in = assembler.inputs();
   const Particles& p = *in.particles;
   const Bonds& bonds = *in.bonds;

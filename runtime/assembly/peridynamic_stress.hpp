@@ -30,8 +30,8 @@ namespace pd {
 
 // sigma of every particle at displacement u ([n*dim]), row-major per particle:
 // [n * dim * dim], sigma_ab at [i*dim*dim + a*dim + b] (a: force component, b: bond
-// component). Under domain.gauss_points: each Gauss family's sum_g V_g t_i<g> (x) xi_g
-// (family_stress; a Gauss point has no family of its own). One residual kernel call per family; t_q<k> comes
+// component), over the bond families (the Gauss families' is GaussPointAssembler::stresses; both are
+// ForceOperator::stresses). One residual kernel call per family; t_q<k> comes
 // from family q's nodal force on neighbour k (-V_q V_k t_q<k>, kernel_abi.hpp). Throws std::runtime_error
 // when a value is not finite (naming the particle).
 std::vector<double> peridynamic_stress(const FamilyAssembler& assembler, const double* u);

@@ -16,10 +16,10 @@ namespace {
 class DamageEvolution final : public Effect {
  public:
   // suffix: what the log says after the rule (where s0 came from, when bonds break).
-  DamageEvolution(const Particles& p, Bonds& bonds, FamilyAssembler& assembler, double s0, bool tension_only,
+  DamageEvolution(const Particles& p, Bonds& bonds, ForceOperator& assembler, double s0, bool tension_only,
                   std::string suffix)
       : damage_(p, bonds, s0, tension_only), assembler_(assembler), suffix_(std::move(suffix)) {}
-  void also_break(const Particles& p, Bonds& bonds, FamilyAssembler& assembler) {
+  void also_break(const Particles& p, Bonds& bonds, ForceOperator& assembler) {
     short_damage_.emplace(p, bonds, damage_.s0(), damage_.tension_only());
     short_assembler_ = &assembler;
   }
@@ -45,16 +45,16 @@ class DamageEvolution final : public Effect {
 
  private:
   CriticalStretchDamage damage_;
-  FamilyAssembler& assembler_;
+  ForceOperator& assembler_;
   std::optional<CriticalStretchDamage> short_damage_;
-  FamilyAssembler* short_assembler_ = nullptr;
+  ForceOperator* short_assembler_ = nullptr;
   std::string suffix_;
 };
 }  // namespace
 
 DamageEffect make_damage_evolution(const Scene& s, const DamageBody& m, Bonds& bonds,
-                                   FamilyAssembler& assembler, Bonds* short_bonds,
-                                   FamilyAssembler* short_assembler) {
+                                   ForceOperator& assembler, Bonds* short_bonds,
+                                   ForceOperator* short_assembler) {
   if (!s.damage) return {};
   const double s0 =
       critical_stretch(*s.damage, s.materials[0], s.dim, s.delta(), m.law, m.params, m.influence.weight);

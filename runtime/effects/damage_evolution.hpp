@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "assembly/assembler.hpp"
+#include "assembly/force_operator.hpp"
 #include "damage/critical_stretch.hpp"
 #include "effects/effect.hpp"
 #include "input/scene.hpp"
@@ -29,7 +29,7 @@ struct DamageBody {
 // The scene's `damage` on `bonds` (read by `assembler`); `short_bonds` and
 // `short_assembler` (optional): the static matrix-free preconditioner's, broken alike.
 DamageEffect make_damage_evolution(const Scene& scene, const DamageBody& body, Bonds& bonds,
-                                   FamilyAssembler& assembler, Bonds* short_bonds = nullptr,
-                                   FamilyAssembler* short_assembler = nullptr);
+                                   ForceOperator& assembler, Bonds* short_bonds = nullptr,
+                                   ForceOperator* short_assembler = nullptr);
 
 }  // namespace pd

@@ -6,17 +6,6 @@
 
 namespace pd {
 
-std::vector<double> stiffness_row_sums(const FamilyAssembler& assembler, const double* u) {
-  SparseMatrix K = assembler.make_matrix();
-  assembler.stiffness(u, K);
-  std::vector<double> s(static_cast<std::size_t>(K.rows()), 0.0);
-  // Column-major storage: add |K_rc| of each column to its rows.
-  for (Eigen::Index c = 0; c < K.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(K, c); it; ++it)
-      s[static_cast<std::size_t>(it.row())] += std::fabs(it.value());
-  return s;
-}
-
 StableStep stable_time_step(const std::vector<double>& row_sums, const std::vector<double>& mass) {
   StableStep out;
   double worst = 0;

@@ -19,13 +19,9 @@
 
 #include <vector>
 
-#include "assembly/assembler.hpp"
-
 namespace pd {
 
-// S_r = sum_c |K_rc| of the stiffness at u (null: the reference configuration), for
-// every dof. The assembler must have been built with a matrix (AssemblerOptions::matrix).
-std::vector<double> stiffness_row_sums(const FamilyAssembler& assembler, const double* u);
+// The row sums S_r come from ForceOperator::stiffness_row_sums (assembly/force_operator.hpp).
 
 struct StableStep {
   double dt = 0;  // 2 / sqrt(max_r S_r / m_r)

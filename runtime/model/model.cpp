@@ -129,8 +129,7 @@ AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix,
   options.threads = threads;
   options.collocation = model.collocation.get();
   options.gauss_points = model.gauss_points.get();
-  model.assembler =
-      std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+  model.assembler = make_force_operator(model.particles, model.bonds, *model.law, model.params, options);
   model.assembler_options = options;
   return options;
 }

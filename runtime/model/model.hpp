@@ -12,6 +12,7 @@
 
 #include "assembly/assembler.hpp"
 #include "assembly/collocation.hpp"
+#include "assembly/force_operator.hpp"
 #include "constraints/dof_map.hpp"
 #include "discretize/family_quality.hpp"
 #include "discretize/gauss_points.hpp"
@@ -47,12 +48,12 @@ struct Model {
   // domain.gauss_points (paper 002 §3.3): the points, their MLS shape functions and the
   // Gauss families the assembler integrates over instead of the bonds.
   std::unique_ptr<GaussPoints> gauss_points;
-  std::unique_ptr<FamilyAssembler> assembler;  // attach_assembler (declared after what it reads)
-  AssemblerOptions assembler_options;          // the options it was built with
+  std::unique_ptr<ForceOperator> assembler;  // attach_assembler (declared after what it reads)
+  AssemblerOptions assembler_options;        // the options it was built with
   // Static matrix-free runs with the short-horizon preconditioner (attach_short_horizon):
   // the same law on delta = ratio h, whose factorised stiffness preconditions the solve.
   Bonds short_bonds;
-  std::unique_ptr<FamilyAssembler> approximation;
+  std::unique_ptr<ForceOperator> approximation;
   // attach_effects: every effect the scene calls for, in the order the run log lists
   // them (loads, crack pressure, body forces, pre-cracks, damage evolution; a dynamic
   // run's inertia and viscous damping last). Declared last: they read the assemblers and bonds above.

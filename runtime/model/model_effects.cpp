@@ -44,19 +44,10 @@ void add_timed_loads(Model& m, const Scene& s) {
 }
 // A dynamic run's inertia: explicit dynamics' rho V (and its time step) with the viscous
 // damping, or relaxation's fictitious density; both from the row sums of the stiffness at
-// the reference configuration, formed by a temporary assembler with a matrix pattern.
+// the reference configuration (ForceOperator::stiffness_row_sums).
 void add_inertia(Model& m, const Scene& s) {
-  std::vector<double> rows;
-  if (m.gauss_points && m.assembler && m.assembler->gauss_points()) {
-    // Gauss families: a bound on the row sums without the matrix, whose (n_loc d)^2 block
-    // per family (n_loc ~ 1400 nodes in 3D at delta = 3h) made the set-up take hours.
-    rows = m.assembler->gauss_points()->stiffness_row_sum_bound(nullptr);
-  } else {
-    AssemblerOptions with_matrix = m.assembler_options;
-    with_matrix.matrix = true;
-    const FamilyAssembler tangent(m.particles, m.bonds, *m.law, m.params, with_matrix);
-    rows = stiffness_row_sums(tangent, nullptr);
-  }
+  if (!m.assembler) throw std::logic_error("add_inertia: attach the assembler first");
+  const std::vector<double> rows = m.assembler->stiffness_row_sums(nullptr);
   if (s.dynamics->method == DynamicsMethod::explicit_verlet) {
     std::unique_ptr<Inertia> inertia = make_inertia(s, m.particles, rows);
     m.inertia = inertia.get();

@@ -67,7 +67,7 @@ void RankSteps::sync() {
 void RankSteps::forces(double t, std::vector<double>& f, std::vector<double>& g) {
   f.resize(s_.u.size());
   g.assign(s_.u.size(), 0.0);
-  body_.internal_forces(*s_.model.assembler, s_.u, f_local_);
+  body_.internal_forces(bond_families(*s_.model.assembler, "backend petsc"), s_.u, f_local_);
   body_.from_local(f_local_, F_);
   const PetscScalar* a;
   check(VecGetArrayRead(F_, &a), "VecGetArrayRead");

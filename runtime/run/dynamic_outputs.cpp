@@ -4,7 +4,6 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "assembly/peridynamic_stress.hpp"
 #include "damage/critical_stretch.hpp"
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/checkpoint_identity.hpp"
@@ -12,9 +11,9 @@
 #include "dynamics/pvd_writer.hpp"
 #include "effects/inertia.hpp"
 #include "output/atomic_file.hpp"
-#include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
 #include "run/dynamic_run.hpp"
+#include "run/result_fields.hpp"
 #include "run/run_outputs.hpp"
 #include "stopwatch.hpp"
 
@@ -126,20 +125,12 @@ void DynamicRun::save_checkpoint(int step, const std::vector<double>& scalars) {
 }
 
 std::vector<OutputField> DynamicRun::output_fields() const {
-  std::vector<OutputField> fields;
-  if (!v.empty()) fields.push_back({"velocity", model.particles.dim, v});
-  fields.push_back(
-      {"material", 1, std::vector<double>(model.particles.material.begin(), model.particles.material.end())});
-  if (model.damage || !model.assembler->intact())
-    fields.push_back({"damage", 1, particle_damage(model.bonds)});
-  append_law_outputs(*model.assembler, model.particles, u, fields);
-  if (scene.output.stress)
-    fields.push_back({"stress", model.particles.dim * model.particles.dim, stress_field()});
-  return fields;
+  const std::vector<double> none;
+  return result_fields({model, scene, u, v, none, none, /*dynamic=*/true});
 }
 
 std::vector<double> DynamicRun::stress_field() const {
-  return wants_stress(scene) ? peridynamic_stress(*model.assembler, u.data()) : std::vector<double>{};
+  return wants_stress(scene) ? model.assembler->stresses(u.data()) : std::vector<double>{};
 }
 
 void DynamicRun::write_snapshot(int step, double t) {
@@ -172,12 +163,7 @@ void DynamicRun::write_results() {
   write_file_atomically(dir + "/energies.csv", csv);
   summary.files.push_back(dir + "/energies.csv");
   const auto fields = output_fields();
-  if (scene.output.vtu)
-    write_vtu_file(dir + "/result.vtu", model.particles, u, fields),
-        summary.files.push_back(dir + "/result.vtu");
-  if (scene.output.csv)
-    write_csv_file(dir + "/result.csv", model.particles, u, fields),
-        summary.files.push_back(dir + "/result.csv");
+  write_result_files(dir, model.particles, u, fields, scene.output, summary.files);
   if (!snapshots.empty()) summary.files.push_back(dir + "/animation.pvd");
   if (summary.dynamics->checkpoints > 0) summary.files.push_back(dir + "/checkpoint.bin");
   summary.files.push_back(dir + "/summary.json");

@@ -26,7 +26,7 @@ class DynamicSimulation {
   const std::vector<double>& displacement() const { return run_.u; }
   const std::vector<double>& velocity() const { return run_.v; }
   const std::vector<SeriesRow>& series() const { return run_.series; }
-  const FamilyAssembler& assembler() const { return *model_.assembler; }
+  const ForceOperator& assembler() const { return *model_.assembler; }
   const CriticalStretchDamage* damage() const { return model_.damage; }
   bool has_masses() const { return run_.explicit_dynamics(); }
   const Scene& scene() const { return scene_; }

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "assembly/assembler.hpp"
+#include "assembly/force_operator.hpp"
 #include "effects/loads.hpp"
 #include "solve/newton.hpp"
 
@@ -17,8 +17,8 @@ class PeridynamicSystem final : public NonlinearSystem {
  public:
   // approximation (optional): the same law on a shorter horizon, whose stiffness
   // preconditions the matrix-free path (NonlinearSystem::approximate_tangent).
-  PeridynamicSystem(const FamilyAssembler& assembler, std::vector<const Effect*> effects,
-                    const FamilyAssembler* approximation = nullptr)
+  PeridynamicSystem(const ForceOperator& assembler, std::vector<const Effect*> effects,
+                    const ForceOperator* approximation = nullptr)
       : a_(assembler), effects_(std::move(effects)), approximation_(approximation) {}
   int size() const override { return a_.dofs(); }
   void residual(const Eigen::VectorXd& u, double load, Eigen::VectorXd& r) override {
@@ -57,9 +57,9 @@ class PeridynamicSystem final : public NonlinearSystem {
   }
 
  private:
-  const FamilyAssembler& a_;
+  const ForceOperator& a_;
   std::vector<const Effect*> effects_;
-  const FamilyAssembler* approximation_;
+  const ForceOperator* approximation_;
 };
 
 }  // namespace pd

@@ -102,7 +102,7 @@ std::string probe_log_line(const ProbeResult& p) {
              : fmt::format("  probe {}: {:.9g}", p.name, p.value);
 }
 
-void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles,
+void append_law_outputs(const ForceOperator& assembler, const Particles& particles,
                         const std::vector<double>& u, std::vector<OutputField>& fields) {
   const auto& law = assembler.law();
   if (law.n_outputs == 0) return;

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "assembly/assembler.hpp"
+#include "assembly/force_operator.hpp"
 #include "constraints/dof_map.hpp"
 #include "input/scene.hpp"
 #include "output/particle_fields.hpp"
@@ -47,7 +47,7 @@ double rms_error_free(const Scene& scene, const FieldSpec& reference, const Part
 std::string probe_log_line(const ProbeResult& p);
 
 // The law's per-particle outputs (law.output_names) at u, one field each.
-void append_law_outputs(const FamilyAssembler& assembler, const Particles& particles,
+void append_law_outputs(const ForceOperator& assembler, const Particles& particles,
                         const std::vector<double>& u, std::vector<OutputField>& fields);
 
 }  // namespace pd

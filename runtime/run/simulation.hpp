@@ -35,7 +35,7 @@ class Simulation {
   const std::vector<double>& smoothed_displacement() const { return run_.u_smooth; }
   const Scene& scene() const { return scene_; }
   const SolverPlan& solver_plan() const { return run_.plan; }
-  const FamilyAssembler& assembler() const { return *model_.assembler; }
+  const ForceOperator& assembler() const { return *model_.assembler; }
   const CriticalStretchDamage* damage() const { return model_.damage; }
   // Paper 000 eq. (48) of a displacement field (one value per particle and component)
   // against the scene's `reference`; throws std::logic_error when the scene has none.

@@ -8,7 +8,6 @@
 #include <span>
 #include <stdexcept>
 
-#include "assembly/peridynamic_stress.hpp"
 #include "constraints/constraints.hpp"
 #include "damage/critical_stretch.hpp"
 #include "effects/loads.hpp"
@@ -117,7 +116,7 @@ void smooth(StaticRun& run, const Model& model, const Scene& scene, const RunLog
 void report(StaticRun& run, const Model& model, const Scene& scene, const RunLog& log) {
   RunSummary& summary = run.summary;
   const std::vector<double>& u = run.u;
-  if (wants_stress(scene)) run.stress = peridynamic_stress(*model.assembler, u.data());
+  if (wants_stress(scene)) run.stress = model.assembler->stresses(u.data());
   summary.probes =
       evaluate_probes(scene, model.particles, probe_particles(scene, model.particles), u, &run.stress);
   log_zero_energy_content(model.particles, model.bonds, u, summary.law, log);
@@ -136,7 +135,8 @@ void report(StaticRun& run, const Model& model, const Scene& scene, const RunLog
   for (const auto& e : model.effects)
     if (!external.empty()) e->add_forces(u.data(), 1.0, external.data());
   for (const JContour& c : scene.output.j_integral) {
-    summary.j_integrals.push_back(j_integral(*model.assembler, u.data(), scene.h, c, external.data()));
+    summary.j_integrals.push_back(
+        j_integral(bond_families(*model.assembler, "the J-integral"), u.data(), scene.h, c, external.data()));
     log(j_integral_line(summary.j_integrals.back()));
   }
   for (const auto& p : summary.probes) log(probe_log_line(p));
@@ -166,9 +166,11 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
         throw SceneError(scene.file +
                          ": solver.backend: the PETSc backend does not take fictitious layers "
                          "(multipoint constraints); use the serial backend");
-      const FamilyAssembler* pc = model.approximation ? model.approximation.get() : model.assembler.get();
-      summary.newton = solve_distributed(
-          {model.assembler.get(), pc, effects, &dofs, system.symmetric(), settings}, u, log);
+      const FamilyAssembler& tangent = bond_families(*model.assembler, "backend petsc");
+      const FamilyAssembler& pc =
+          model.approximation ? bond_families(*model.approximation, "backend petsc") : tangent;
+      summary.newton =
+          solve_distributed({&tangent, &pc, effects, &dofs, system.symmetric(), settings}, u, log);
     } else {
       summary.newton = NewtonSolver(settings, log).solve(system, dofs, u);
     }

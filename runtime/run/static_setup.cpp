@@ -49,8 +49,19 @@ StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
   attach_effects(model, scene);
   if (model.collocation) summary.effects.push_back(model.collocation_description);
   if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
-  const StrainModeReport modes =
-      check_strain_modes(*model.assembler, influence->name, scene.delta() / scene.h);
+  // The check reads the law on the bond families; a Gauss-point model has its bonds too,
+  // and the check is of the law on that horizon.
+  std::unique_ptr<FamilyAssembler> on_bonds;
+  const FamilyAssembler* families = model.assembler->bond_families();
+  if (!families) {
+    AssemblerOptions bond_options = options;
+    bond_options.gauss_points = nullptr;
+    bond_options.matrix = false;
+    on_bonds =
+        std::make_unique<FamilyAssembler>(model.particles, model.bonds, *law, model.params, bond_options);
+    families = on_bonds.get();
+  }
+  const StrainModeReport modes = check_strain_modes(*families, influence->name, scene.delta() / scene.h);
   summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name,
                                         summary.variant, influence->name));

@@ -98,7 +98,7 @@ void check_against_serial(const char* yaml) {
   const Scene scene = parse_scene(yaml, "distributed.yaml");
   Model model = build_model(scene);
   attach_assembler(model, scene, true, 1);
-  const FamilyAssembler& a = *model.assembler;
+  const FamilyAssembler& a = bond_families(*model.assembler, "the distributed assembly test");
   const int N = a.dofs(), d = scene.dim;
   const std::vector<double> u = deformation(N), v = deformation(N + 3);  // two different vectors
   std::vector<double> f(N), Kv(N);

@@ -221,7 +221,7 @@ TEST_P(GaussPointTangent, StiffnessProductAndDiagonalAreTheDerivativeOfTheForces
   // The matrix-free bound on the Gershgorin row sums (the explicit step) is at least the
   // row sums of the assembled K, and not loose by more than the triangle inequality's
   // factor the splitting of B_i allows (the ratios printed).
-  const std::vector<double> bound = a.stiffness_row_sum_bound(u.data());
+  const std::vector<double> bound = a.stiffness_row_sums(u.data());
   double loosest = 0, loosest_max = 0, exact_max = 0;
   for (std::size_t i = 0; i < N; ++i) {
     const double exact = Kd.row(static_cast<Eigen::Index>(i)).cwiseAbs().sum();
