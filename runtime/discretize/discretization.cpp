@@ -16,7 +16,7 @@ Particles discretize(const Scene& s) {
   if (s.point_cloud) return *s.point_cloud;  // domain.particles
   Particles p;
   p.dim = s.dim;
-  const bool node = s.placement == "node";
+  const bool node = s.placement == Placement::node;
   std::array<int, 3> n{1, 1, 1};
   for (int i = 0; i < s.dim; ++i) {
     const double cells = (s.hi[i] - s.lo[i]) / s.h;
@@ -56,13 +56,13 @@ std::vector<int> region_particles(const Region& region, const Particles& p, cons
   // and no unperturbed row sits on the boundary where rounding would decide.
   Region r = region;
   if (r.kind == Region::Kind::Side && r.thickness <= 0)
-    r.thickness = scene.placement == "node" ? 0.5 * scene.h : scene.h;
+    r.thickness = scene.placement == Placement::node ? 0.5 * scene.h : scene.h;
   // A collar particle at depth d lacks the lattice site beyond the face, at distance d + s
   // (s = h/2 for cell centres, h for nodes), when d + s <= k delta. The tolerance puts a
   // site exactly k delta away (half-integer delta/h) inside the family, as find_bonds does.
   if (r.kind == Region::Kind::Collar)
-    r.thickness =
-        r.horizons * scene.delta() - (scene.placement == "node" ? scene.h : 0.5 * scene.h) + 1e-6 * scene.h;
+    r.thickness = r.horizons * scene.delta() -
+                  (scene.placement == Placement::node ? scene.h : 0.5 * scene.h) + 1e-6 * scene.h;
   std::vector<int> out;
   for (int i = 0; i < p.size(); ++i)
     if (r.contains(p.position(i), p.dim, scene.lo, scene.hi, scene.h)) out.push_back(i);

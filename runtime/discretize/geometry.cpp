@@ -40,9 +40,11 @@ bool Region::contains(const double* x, int dim, const Point& lo, const Point& hi
       return true;
     case Kind::Side: {
       const double t = thickness > 0 ? thickness : 0.5 * h;  // default: the outermost row
-      const int axis = (side == "left" || side == "right") ? 0 : (side == "bottom" || side == "top") ? 1 : 2;
+      const int axis = (side == Side::left || side == Side::right)   ? 0
+                       : (side == Side::bottom || side == Side::top) ? 1
+                                                                     : 2;
       if (axis >= dim) return false;
-      const bool low = side == "left" || side == "bottom" || side == "back";
+      const bool low = side == Side::left || side == Side::bottom || side == Side::back;
       return low ? x[axis] <= lo[axis] + t : x[axis] >= hi[axis] - t;
     }
     case Kind::Box:

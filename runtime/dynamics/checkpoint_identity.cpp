@@ -49,7 +49,7 @@ CheckpointIdentity checkpoint_identity(const Scene& scene, const Particles& part
                                 hash_of(particles.x), hash_of(particles.volume), hash_of(particles.material));
   // The quadrature sets each bond's volume (the bonds' hash above does not see the factors).
   id["quadrature"] =
-      std::string(quadrature_name(scene.quadrature)) + (scene.compensation ? ", compensation" : "") +
+      std::string(name_of(scene.quadrature)) + (scene.compensation ? ", compensation" : "") +
       (scene.surface_correction ? (scene.surface_match_responses ? ", surface correction (responses)"
                                                                  : ", surface correction (terms)")
                                 : "") +

@@ -33,8 +33,10 @@ class NodalForces final : public Effect {
 };
 
 // The measure (length in 2D, area in 3D) of the domain face a side region lies on.
-double face_measure(const Scene& s, const std::string& side) {
-  const int axis = (side == "left" || side == "right") ? 0 : (side == "bottom" || side == "top") ? 1 : 2;
+double face_measure(const Scene& s, Region::Side side) {
+  const int axis = (side == Region::Side::left || side == Region::Side::right)   ? 0
+                   : (side == Region::Side::bottom || side == Region::Side::top) ? 1
+                                                                                 : 2;
   double m = 1;
   for (int c = 0; c < s.dim; ++c)
     if (c != axis) m *= s.hi[c] - s.lo[c];

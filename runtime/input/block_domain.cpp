@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "input/enum_choice.hpp"
 #include "input/lattice_block_cloud.hpp"
 
 namespace pd {
@@ -15,11 +16,12 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
        {"box", "count", "spacing", "placement", "perturbation", "holes", "inclusions", "particles"})
     if (d.has(key))
       d.get(key).fail(std::string(key) + " does not apply to a body of blocks (give it per block)");
-  if (d.has("quadrature") && d.text("quadrature") != "volume" && d.text("quadrature") != "partial_linear")
-    d.get("quadrature")
-        .fail("a body of blocks supports quadrature: volume or partial_linear (paper 003 eq. 17)");
-  s.quadrature = d.has("quadrature") && d.text("quadrature") == "partial_linear" ? Quadrature::PartialLinear
-                                                                                 : Quadrature::Volume;
+  const std::vector<Quadrature> supported{Quadrature::Volume, Quadrature::PartialLinear};
+  if (d.has("quadrature"))
+    s.quadrature = read_word(d.get("quadrature"), supported, [&](const std::string&) {
+      return "a body of blocks supports quadrature: " + name_list<Quadrature>(supported, " or ") +
+             " (paper 003 eq. 17)";
+    });
   const YamlAt list = d.get("blocks");
   require_list(list);
   if (list.node.size() == 0) list.fail("give at least one block");
@@ -57,7 +59,7 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
       s.lo[c] = std::min(s.lo[c], b.lo[c]), s.hi[c] = std::max(s.hi[c], b.hi[c]);
     s.h = std::max(s.h, b.spacing);
   }
-  s.placement = "cell";
+  s.placement = Placement::cell;
   s.point_cloud = std::move(p);
 }
 

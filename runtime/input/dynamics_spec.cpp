@@ -4,19 +4,13 @@
 #include <algorithm>
 
 #include "input/enum_choice.hpp"
-#include "input/scene.hpp"
+#include "input/scene_sections.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace pd {
 
 namespace {
-Point read_vector(const YamlAt& at, int dim) {
-  const auto v = as_numbers(at);
-  if (static_cast<int>(v.size()) != dim) at.fail("expected " + std::to_string(dim) + " components");
-  Point p{};
-  for (int i = 0; i < dim; ++i) p[i] = v[i];
-  return p;
-}
+Point read_vector(const YamlAt& at, int dim) { return to_point(at, dim, "components"); }
 
 InitialCondition read_initial(const YamlAt& at, int dim) {
   MapReader m(at);
@@ -43,9 +37,8 @@ InitialCondition read_initial(const YamlAt& at, int dim) {
     MapReader g(m.get("gaussian"));
     const YamlAt axis = g.get("axis");
     const std::string a = as_text(axis);
-    ic.axis = a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1;
-    if (ic.axis < 0 || ic.axis >= dim)
-      axis.fail("'" + a + "' is not an axis of a " + std::to_string(dim) + "D scene");
+    ic.axis = axis_index(a, dim);
+    if (ic.axis < 0) axis.fail("'" + a + "' is not an axis of a " + std::to_string(dim) + "D scene");
     ic.center = g.number("center");
     ic.width = g.number("width");
     if (!(ic.width > 0)) g.get("width").fail("width must be positive");

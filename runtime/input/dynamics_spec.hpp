@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "input/enum_names.hpp"
 #include "input/region.hpp"
-#include "input/solver_spec.hpp"  // all_values
 
 namespace pd {
 
@@ -31,18 +31,10 @@ struct InitialCondition {
 
 // explicit (velocity Verlet) | relaxation (adaptive dynamic relaxation)
 enum class DynamicsMethod { explicit_verlet, relaxation };
-constexpr std::string_view name_of(DynamicsMethod m) {
-  switch (m) {
-    case DynamicsMethod::explicit_verlet:
-      return "explicit";
-    case DynamicsMethod::relaxation:
-      return "relaxation";
-  }
-  return "?";
-}
 template <>
-struct all_values<DynamicsMethod> {
-  static constexpr std::array values{DynamicsMethod::explicit_verlet, DynamicsMethod::relaxation};
+struct enum_names<DynamicsMethod> {
+  static constexpr std::array<EnumName<DynamicsMethod>, 2> table{
+      {{DynamicsMethod::explicit_verlet, "explicit"}, {DynamicsMethod::relaxation, "relaxation"}}};
 };
 
 struct DynamicsSpec {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "input/enum_choice.hpp"
+
 namespace pd {
 
 ParticleFile read_particle_domain(const YamlAt& domain, Scene& s) {
@@ -26,18 +28,17 @@ ParticleFile read_particle_domain(const YamlAt& domain, Scene& s) {
     s.h = d.number("spacing");
     if (!(s.h > 0)) d.get("spacing").fail("spacing must be positive");
   }
-  if (d.has("quadrature")) {
-    const std::optional<Quadrature> choice = parse_quadrature(d.text("quadrature"));
-    if (!choice) d.get("quadrature").fail("unknown quadrature (volume)");
-    s.quadrature = *choice;
-  }
+  if (d.has("quadrature"))
+    s.quadrature = read_word(d.get("quadrature"), every_value<Quadrature>(), [](const std::string&) {
+      return "unknown quadrature (" + name_list<Quadrature>() + ")";
+    });
   for (int c = 0; c < s.dim; ++c) s.lo[c] = s.hi[c] = f.x[static_cast<std::size_t>(c)];
   for (int i = 0; i < f.size(); ++i)
     for (int c = 0; c < s.dim; ++c) {
       const double x = f.x[static_cast<std::size_t>(i) * s.dim + c];
       s.lo[c] = std::min(s.lo[c], x), s.hi[c] = std::max(s.hi[c], x);
     }
-  s.placement = "node";
+  s.placement = Placement::node;
   d.finish();
   return f;
 }

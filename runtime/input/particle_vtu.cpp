@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <bit>
@@ -19,21 +18,20 @@
 #include <set>
 #include <sstream>
 
+#include "input/vtu_blocks.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace pd {
 
 namespace {
 
-struct Doc {
+// The file, with how it encodes its blocks.
+struct Doc : vtu::BlockFormat {
   std::string path;
   std::string bytes;             // the whole file
   std::size_t appended = 0;      // where the appended data starts (after '_'), or npos
   std::size_t appended_end = 0;  // where it ends (the last </AppendedData>)
   std::string appended_encoding;
-  bool swap = false;     // the file's byte order is not the machine's
-  int header_bytes = 4;  // UInt32 or UInt64 block headers
-  bool zlib = false;
 };
 
 [[noreturn]] void fail_at(const Doc& d, const xmlNode* node, const std::string& message) {
@@ -73,107 +71,17 @@ long long whole_number(const Doc& d, const xmlNode* node, const char* key) {
   return v;
 }
 
-// RFC 4648 base64 (VTK's "binary"), whitespace skipped. Decodes the first `chars`
-// characters of `text` from `from`; throws std::runtime_error on a bad character.
-std::string base64_decode(const std::string& text, std::size_t from, std::size_t chars) {
-  std::string clean;
-  for (std::size_t k = from; k < text.size() && clean.size() < chars; ++k)
-    if (!std::isspace(static_cast<unsigned char>(text[k]))) clean += text[k];
-  if (clean.size() < chars) throw std::runtime_error("the base64 data ends early");
-  auto value = [](char c) -> int {
-    if (c >= 'A' && c <= 'Z') return c - 'A';
-    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-    if (c >= '0' && c <= '9') return c - '0' + 52;
-    if (c == '+') return 62;
-    if (c == '/') return 63;
-    if (c == '=') return -1;
-    throw std::runtime_error(fmt::format("'{}' is not a base64 character", c));
-  };
-  std::string out;
-  for (std::size_t k = 0; k + 3 < clean.size(); k += 4) {
-    int v[4];
-    for (int j = 0; j < 4; ++j) v[j] = value(clean[k + j]);
-    if (v[0] < 0 || v[1] < 0) throw std::runtime_error("misplaced base64 padding");
-    out += static_cast<char>(v[0] << 2 | v[1] >> 4);
-    if (v[2] >= 0) out += static_cast<char>((v[1] & 15) << 4 | v[2] >> 2);
-    if (v[2] >= 0 && v[3] >= 0) out += static_cast<char>((v[2] & 3) << 6 | v[3]);
-  }
-  return out;
-}
-std::size_t base64_chars(std::size_t bytes) { return 4 * ((bytes + 2) / 3); }
-
-// Where the encoded bytes of one array come from: raw appended bytes, or base64 text.
-struct Source {
-  const std::string* text;
-  std::size_t start;
-  bool base64;
-  std::size_t end = std::string::npos;  // raw data: where the appended section ends
-  // `n` bytes at byte `at` of this block's decoded stream (base64 decodes from the start).
-  std::string bytes(std::size_t at, std::size_t n) const {
-    if (!base64) {
-      if (start + at + n > std::min(end, text->size()))
-        throw std::runtime_error("the data ends before the array does");
-      return text->substr(start + at, n);
-    }
-    const std::string all = base64_decode(*text, start, base64_chars(at + n));
-    if (all.size() < at + n) throw std::runtime_error("the base64 data ends before the array does");
-    return all.substr(at, n);
-  }
-  // A separately encoded base64 segment starting `chars` characters in (VTK encodes a
-  // compressed block's header apart from its data).
-  Source after_chars(std::size_t chars) const {
-    std::size_t k = start, seen = 0;
-    while (k < text->size() && seen < chars)
-      seen += std::isspace(static_cast<unsigned char>((*text)[k++])) ? 0 : 1;
-    return Source{text, k, true};
-  }
-};
-
-std::uint64_t header_value(const Doc& d, const std::string& bytes, std::size_t k) {
-  std::string b = bytes.substr(k * d.header_bytes, d.header_bytes);
-  if (d.swap) std::reverse(b.begin(), b.end());
-  if (d.header_bytes == 8) {
-    std::uint64_t v;
-    std::memcpy(&v, b.data(), 8);
-    return v;
-  }
-  std::uint32_t v;
-  std::memcpy(&v, b.data(), 4);
-  return v;
-}
-
-// The bytes of a binary or appended array, after the block header and decompression.
-std::string block_data(const Doc& d, const Source& s) {
-  const std::size_t hb = static_cast<std::size_t>(d.header_bytes);
-  if (!d.zlib) {
-    const std::uint64_t n = header_value(d, s.bytes(0, hb), 0);
-    if (n > (1ull << 40)) throw std::runtime_error(fmt::format("a block of {} bytes", n));
-    return s.bytes(hb, n);
-  }
-  // [#blocks][block size][last block size][compressed size of each block], then the
-  // zlib streams one after the other (in base64 the header is encoded on its own).
-  const std::uint64_t blocks = header_value(d, s.bytes(0, hb), 0);
-  if (blocks > (1ull << 30)) throw std::runtime_error(fmt::format("{} compressed blocks", blocks));
-  const std::size_t header_size = hb * (3 + blocks);
-  const std::string header = s.bytes(0, header_size);
-  const std::uint64_t block_size = header_value(d, header, 1), last = header_value(d, header, 2);
-  const Source data = s.base64 ? s.after_chars(base64_chars(header_size))
-                               : Source{s.text, s.start + header_size, false, s.end};
-  std::uint64_t total = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b) total += header_value(d, header, 3 + b);
-  const std::string packed = data.bytes(0, total);
-  std::string out;
-  std::size_t at = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b) {
-    const std::uint64_t csize = header_value(d, header, 3 + b);
-    uLongf size = (b + 1 == blocks && last != 0) ? last : block_size;
-    std::string chunk(size, '\0');
-    if (uncompress(reinterpret_cast<Bytef*>(chunk.data()), &size,
-                   reinterpret_cast<const Bytef*>(packed.data() + at), csize) != Z_OK)
-      throw std::runtime_error(fmt::format("zlib block {} does not decompress", b));
-    chunk.resize(size);
-    out += chunk;
-    at += csize;
+// An ascii DataArray's numbers.
+std::vector<double> ascii_values(const Doc& d, const xmlNode* a, const std::string& what) {
+  std::vector<double> out;
+  std::istringstream in(own_text(a));
+  std::string word;
+  while (in >> word) {
+    double v = 0;
+    const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
+    if (r.ec != std::errc() || r.ptr != word.data() + word.size())
+      fail_at(d, a, fmt::format("{}: value {}: '{}' is not a number", what, out.size(), word));
+    out.push_back(v);
   }
   return out;
 }
@@ -187,72 +95,34 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
   if (!sizes.count(type)) fail_at(d, a, fmt::format("{}: type=\"{}\" is not a numeric VTK type", what, type));
   std::vector<double> out;
   if (format == "ascii") {
-    std::istringstream in(own_text(a));
-    std::string word;
-    while (in >> word) {
-      double v = 0;
-      const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
-      if (r.ec != std::errc() || r.ptr != word.data() + word.size())
-        fail_at(d, a, fmt::format("{}: value {}: '{}' is not a number", what, out.size(), word));
-      out.push_back(v);
-    }
+    out = ascii_values(d, a, what);
   } else if (format == "binary" || format == "appended") {
     std::string text;
-    Source s{nullptr, 0, true};
+    vtu::Source s{nullptr, 0, true};
     if (format == "binary") {
       text = own_text(a);
-      s = Source{&text, 0, true};
+      s = vtu::Source{&text, 0, true};
     } else {
       if (d.appended == std::string::npos)
         fail_at(d, a, what + ": format=\"appended\" but the file has no AppendedData");
       const std::size_t offset = static_cast<std::size_t>(whole_number(d, a, "offset"));
       if (d.appended_encoding == "raw") {
-        s = Source{&d.bytes, d.appended + offset, false, d.appended_end};
+        s = vtu::Source{&d.bytes, d.appended + offset, false, d.appended_end};
       } else {
         // base64 appended data: the offset counts characters of the encoded text
-        s = Source{&d.bytes, d.appended + offset, true};
+        s = vtu::Source{&d.bytes, d.appended + offset, true};
       }
     }
     std::string bytes;
     try {
-      bytes = block_data(d, s);
+      bytes = vtu::block_data(d, s);
     } catch (const std::exception& e) {
       fail_at(d, a, fmt::format("{}: cannot decode the {} data: {}", what, format, e.what()));
     }
     const std::size_t size = static_cast<std::size_t>(sizes.at(type));
     if (bytes.size() % size != 0)
       fail_at(d, a, fmt::format("{}: {} bytes is not a whole number of {}", what, bytes.size(), type));
-    out.resize(bytes.size() / size);
-    for (std::size_t k = 0; k < out.size(); ++k) {
-      char b[8];
-      std::memcpy(b, bytes.data() + k * size, size);
-      if (d.swap) std::reverse(b, b + size);
-      auto get = [&]<class T>(T) {
-        T v;
-        std::memcpy(&v, b, sizeof v);
-        return static_cast<double>(v);
-      };
-      if (type == "Float32")
-        out[k] = get(float{});
-      else if (type == "Float64")
-        out[k] = get(double{});
-      else if (type == "Int8")
-        out[k] = get(std::int8_t{});
-      else if (type == "UInt8")
-        out[k] = get(std::uint8_t{});
-      else if (type == "Int16")
-        out[k] = get(std::int16_t{});
-      else if (type == "UInt16")
-        out[k] = get(std::uint16_t{});
-      else if (type == "Int32")
-        out[k] = get(std::int32_t{});
-      else if (type == "UInt32")
-        out[k] = get(std::uint32_t{});
-      else if (type == "Int64")
-        out[k] = get(std::int64_t{});
-      else
-        out[k] = get(std::uint64_t{});
-    }
+    out = vtu::values(bytes, type, size, d.swap);
   } else {
     fail_at(d, a, fmt::format("{}: format=\"{}\" (VTK writes ascii, binary or appended)", what, format));
   }
@@ -274,6 +144,80 @@ const xmlNode* find_array(const Doc& d, const xmlNode* parent, const char* name)
     found = a;
   }
   return found;
+}
+
+// The VTKFile's byte order, header type and compressor, and the appended data's encoding.
+void read_encoding(Doc& d, const xmlNode* root) {
+  const std::string order = attribute(root, "byte_order"), header = attribute(root, "header_type"),
+                    compressor = attribute(root, "compressor");
+  if (order != "LittleEndian" && order != "BigEndian" && !order.empty())
+    fail_at(d, root, fmt::format("byte_order=\"{}\" (LittleEndian or BigEndian)", order));
+  d.swap = (order == "BigEndian") != (std::endian::native == std::endian::big) && !order.empty();
+  if (header == "UInt64")
+    d.header_bytes = 8;
+  else if (!header.empty() && header != "UInt32")
+    fail_at(d, root, fmt::format("header_type=\"{}\" (UInt32 or UInt64)", header));
+  if (compressor == "vtkZLibDataCompressor")
+    d.zlib = true;
+  else if (!compressor.empty())
+    fail_at(d, root,
+            fmt::format("compressor=\"{}\": only vtkZLibDataCompressor (or none) is read; write with "
+                        "SetCompressorTypeToZLib() or SetCompressorTypeToNone()",
+                        compressor));
+  for (const xmlNode* a : children(root, "AppendedData")) {
+    d.appended_encoding = attribute(a, "encoding");
+    if (d.appended_encoding != "raw" && d.appended_encoding != "base64")
+      fail_at(d, a, fmt::format("AppendedData encoding=\"{}\" (raw or base64)", d.appended_encoding));
+  }
+}
+
+// The arrays' elements, for messages: Points, PointData volume, PointData material (or null).
+struct Arrays {
+  const xmlNode *x, *volume, *material;
+};
+
+// The particles of the arrays read, checked as read_particle_file checks a CSV's rows.
+ParticleFile to_particles(const Doc& d, int dim, Arrays a, const std::vector<double>& x3,
+                          const std::vector<double>& volume, const std::vector<double>& material) {
+  const xmlNode *xa = a.x, *va = a.volume, *ma = a.material;
+  const std::string& path = d.path;
+  const std::size_t count = volume.size();
+  ParticleFile f;
+  f.path = path;
+  f.dim = dim;
+  f.point_ids = true;
+  std::set<std::vector<double>> seen;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::vector<double> x(x3.begin() + static_cast<std::ptrdiff_t>(3 * i),
+                          x3.begin() + static_cast<std::ptrdiff_t>(3 * i + dim));
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(x3[3 * i + c]))
+        fail_at(d, xa, fmt::format("Points: point id {}: coordinate {} is not finite", i, c));
+    if (dim == 2 && x3[3 * i + 2] != 0)
+      fail_at(
+          d, xa,
+          fmt::format("Points: point id {}: z = {} in a 2D scene (2D points have z = 0)", i, x3[3 * i + 2]));
+    if (!(volume[i] > 0) || !std::isfinite(volume[i]))
+      fail_at(d, va,
+              fmt::format("PointData 'volume': point id {}: volume must be positive and finite (got {})", i,
+                          volume[i]));
+    if (!seen.insert(x).second)
+      fail_at(d, xa, fmt::format("Points: point id {}: a second particle at the same position", i));
+    std::string m;
+    if (ma) {
+      const double v = material[i];
+      if (!(v >= 0) || v != std::floor(v) || v > 1e9)
+        fail_at(
+            d, ma,
+            fmt::format("PointData 'material': point id {}: {} is not a material index (0, 1, ...)", i, v));
+      m = std::to_string(static_cast<long long>(v));
+    }
+    f.x.insert(f.x.end(), x.begin(), x.end());
+    f.volume.push_back(volume[i]);
+    f.material.push_back(m);
+    f.line.push_back(static_cast<int>(xmlGetLineNo(ma ? ma : va)));
+  }
+  return f;
 }
 
 }  // namespace
@@ -312,27 +256,7 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   const xmlNode* root = xmlDocGetRootElement(doc.get());
   if (!root || !named(root, "VTKFile") || attribute(root, "type") != "UnstructuredGrid")
     fail_at(d, root, "not a VTK unstructured grid (<VTKFile type=\"UnstructuredGrid\">)");
-  const std::string order = attribute(root, "byte_order"), header = attribute(root, "header_type"),
-                    compressor = attribute(root, "compressor");
-  if (order != "LittleEndian" && order != "BigEndian" && !order.empty())
-    fail_at(d, root, fmt::format("byte_order=\"{}\" (LittleEndian or BigEndian)", order));
-  d.swap = (order == "BigEndian") != (std::endian::native == std::endian::big) && !order.empty();
-  if (header == "UInt64")
-    d.header_bytes = 8;
-  else if (!header.empty() && header != "UInt32")
-    fail_at(d, root, fmt::format("header_type=\"{}\" (UInt32 or UInt64)", header));
-  if (compressor == "vtkZLibDataCompressor")
-    d.zlib = true;
-  else if (!compressor.empty())
-    fail_at(d, root,
-            fmt::format("compressor=\"{}\": only vtkZLibDataCompressor (or none) is read; write with "
-                        "SetCompressorTypeToZLib() or SetCompressorTypeToNone()",
-                        compressor));
-  for (const xmlNode* a : children(root, "AppendedData")) {
-    d.appended_encoding = attribute(a, "encoding");
-    if (d.appended_encoding != "raw" && d.appended_encoding != "base64")
-      fail_at(d, a, fmt::format("AppendedData encoding=\"{}\" (raw or base64)", d.appended_encoding));
-  }
+  read_encoding(d, root);
   const std::vector<const xmlNode*> grids = children(root, "UnstructuredGrid");
   if (grids.size() != 1) fail_at(d, root, "no UnstructuredGrid element");
   const std::vector<const xmlNode*> pieces = children(grids[0], "Piece");
@@ -365,42 +289,7 @@ ParticleFile read_particle_vtu(const std::string& path, int dim) {
   const std::vector<double> material =
       ma ? read_array(d, ma, count, "PointData 'material'") : std::vector<double>();
 
-  ParticleFile f;
-  f.path = path;
-  f.dim = dim;
-  f.point_ids = true;
-  std::set<std::vector<double>> seen;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::vector<double> x(x3.begin() + static_cast<std::ptrdiff_t>(3 * i),
-                          x3.begin() + static_cast<std::ptrdiff_t>(3 * i + dim));
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(x3[3 * i + c]))
-        fail_at(d, xa, fmt::format("Points: point id {}: coordinate {} is not finite", i, c));
-    if (dim == 2 && x3[3 * i + 2] != 0)
-      fail_at(
-          d, xa,
-          fmt::format("Points: point id {}: z = {} in a 2D scene (2D points have z = 0)", i, x3[3 * i + 2]));
-    if (!(volume[i] > 0) || !std::isfinite(volume[i]))
-      fail_at(d, va,
-              fmt::format("PointData 'volume': point id {}: volume must be positive and finite (got {})", i,
-                          volume[i]));
-    if (!seen.insert(x).second)
-      fail_at(d, xa, fmt::format("Points: point id {}: a second particle at the same position", i));
-    std::string m;
-    if (ma) {
-      const double v = material[i];
-      if (!(v >= 0) || v != std::floor(v) || v > 1e9)
-        fail_at(
-            d, ma,
-            fmt::format("PointData 'material': point id {}: {} is not a material index (0, 1, ...)", i, v));
-      m = std::to_string(static_cast<long long>(v));
-    }
-    f.x.insert(f.x.end(), x.begin(), x.end());
-    f.volume.push_back(volume[i]);
-    f.material.push_back(m);
-    f.line.push_back(static_cast<int>(xmlGetLineNo(ma ? ma : va)));
-  }
-  return f;
+  return to_particles(d, dim, {xa, va, ma}, x3, volume, material);
 }
 
 }  // namespace pd

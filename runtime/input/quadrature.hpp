@@ -4,9 +4,9 @@
 // not symmetric, through the assembly of eq. 2.13 of paper 001).
 #pragma once
 
-#include <optional>
-#include <string>
-#include <string_view>
+#include <array>
+
+#include "input/enum_names.hpp"
 
 namespace pd {
 
@@ -22,7 +22,13 @@ enum class Quadrature {
 inline bool is_obq(Quadrature q) { return q == Quadrature::Obq || q == Quadrature::ObqCut; }
 
 // The scene spelling of each choice, in the order of the enum.
-std::string_view quadrature_name(Quadrature q);
-std::optional<Quadrature> parse_quadrature(std::string_view name);
+template <>
+struct enum_names<Quadrature> {
+  static constexpr std::array<EnumName<Quadrature>, 5> table{{{Quadrature::Volume, "volume"},
+                                                              {Quadrature::PartialLinear, "partial_linear"},
+                                                              {Quadrature::PartialExact, "partial_exact"},
+                                                              {Quadrature::Obq, "obq"},
+                                                              {Quadrature::ObqCut, "obq_cut"}}};
+};
 
 }  // namespace pd

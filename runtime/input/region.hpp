@@ -2,7 +2,8 @@
 #pragma once
 
 #include <array>
-#include <string>
+
+#include "input/enum_names.hpp"
 
 namespace pd {
 
@@ -14,7 +15,7 @@ struct Region {
   // particles with a missing neighbour within delta) -- a Dirichlet collar that keeps one
   // horizon thick when a study refines h or changes delta/h.
   enum class Kind { All, Side, Box, Outside, Collar } kind = Kind::All;
-  std::string side;      // left right bottom top back front
+  enum class Side { left, right, bottom, top, back, front } side = Side::left;  // back, front: 3D
   double thickness = 0;  // Side: depth into the body; 0 = half a spacing (the outermost row).
                          // Collar: depth from the box faces, set from `horizons` by region_particles
   double horizons = 0;   // Collar: depth in horizons
@@ -25,6 +26,15 @@ struct Region {
   Point within_min{}, within_max{};
   // True when a particle at x belongs (domain bounds lo/hi, spacing h).
   bool contains(const double* x, int dim, const Point& lo, const Point& hi, double h) const;
+};
+template <>
+struct enum_names<Region::Side> {
+  static constexpr std::array<EnumName<Region::Side>, 6> table{{{Region::Side::left, "left"},
+                                                                {Region::Side::right, "right"},
+                                                                {Region::Side::bottom, "bottom"},
+                                                                {Region::Side::top, "top"},
+                                                                {Region::Side::back, "back"},
+                                                                {Region::Side::front, "front"}}};
 };
 
 }  // namespace pd

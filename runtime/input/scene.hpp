@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "input/dynamics_spec.hpp"
+#include "input/enum_names.hpp"
 #include "input/quadrature.hpp"
 #include "input/region.hpp"
 #include "input/solver_spec.hpp"
@@ -74,6 +75,27 @@ struct BodyForceField {
 
 // What a bond passing exactly through a 2D crack tip does (docs/scene_format.md).
 enum class CrackTips { cut, kept };
+template <>
+struct enum_names<CrackTips> {
+  static constexpr std::array<EnumName<CrackTips>, 2> table{
+      {{CrackTips::cut, "cut"}, {CrackTips::kept, "kept"}}};
+};
+
+// domain.placement: cell: points at cell centres; node: on a lattice including the faces.
+enum class Placement { cell, node };
+template <>
+struct enum_names<Placement> {
+  static constexpr std::array<EnumName<Placement>, 2> table{
+      {{Placement::cell, "cell"}, {Placement::node, "node"}}};
+};
+
+// domain.obq_space: the reproducing space of the OBQ weights (discretize/obq_weights.hpp).
+enum class ObqSpace { paper001, paper001_odd, law };
+template <>
+struct enum_names<ObqSpace> {
+  static constexpr std::array<EnumName<ObqSpace>, 3> table{
+      {{ObqSpace::paper001, "paper001"}, {ObqSpace::paper001_odd, "paper001_odd"}, {ObqSpace::law, "law"}}};
+};
 
 struct Crack {
   std::vector<Point> points;  // 2D: a segment (2 points); 3D: a planar polygon
@@ -121,13 +143,13 @@ struct Probe {
 struct Scene {
   std::string file;
   int dim = 2;
-  Point lo{}, hi{};                // domain box
-  double h = 0;                    // spacing
-  std::string placement = "cell";  // cell: points at cell centers; node: on a lattice including the faces
-  double perturbation = 0;         // fraction of h
+  Point lo{}, hi{};  // domain box
+  double h = 0;      // spacing
+  Placement placement = Placement::cell;
+  double perturbation = 0;  // fraction of h
   unsigned seed = 1;
   Quadrature quadrature = Quadrature::Volume;  // domain.quadrature
-  std::string obq_space = "paper001";          // domain.obq_space: paper001, paper001_odd, law
+  ObqSpace obq_space = ObqSpace::paper001;     // domain.obq_space
   bool obq_symmetric = false;                  // domain.obq_symmetric
   bool compensation = false;  // domain.compensation (paper 002 eq. 3.61, assembly/compensation.hpp)
   bool surface_correction =
@@ -173,8 +195,9 @@ struct Scene {
 };
 
 struct YamlAt;
-// A point of the scene: exactly dim numbers (SceneError naming the key otherwise).
-Point to_point(const YamlAt& at, int dim);
+// A point of the scene: exactly dim numbers (SceneError naming the key otherwise: "expected 2
+// coordinates", or `what` instead of coordinates).
+Point to_point(const YamlAt& at, int dim, const char* what = "coordinates");
 // A region map (side / box / outside / collar / all); used by the section readers.
 Region read_region(const YamlAt& at, int dim);
 

@@ -1,11 +1,13 @@
 // The scene's `solver` section as typed choices. The scene reader turns the words into
-// these enums (input/enum_choice.hpp); everything after reading switches on them, so
-// -Wswitch-enum finds every place a new method must be handled.
+// these enums (input/enum_choice.hpp, the words in input/enum_names.hpp tables); everything after reading
+// switches on them, so -Wswitch-enum finds every place a new method must be handled.
 #pragma once
 
 #include <array>
 #include <string>
 #include <string_view>
+
+#include "input/enum_names.hpp"
 
 namespace pd {
 
@@ -19,62 +21,34 @@ enum class Preconditioner { automatic, ic, diagonal, ilut, short_horizon };
 // was started on (`mpirun -n N pd run`), solve/distributed_backend.hpp.
 enum class Backend { serial, petsc };
 
-// The scene's words for each value (and the ones the log and summary.json print).
-constexpr std::string_view name_of(NonlinearMethod) { return "newton"; }
-constexpr std::string_view name_of(LinearMethod m) {
-  switch (m) {
-    case LinearMethod::automatic:
-      return "auto";
-    case LinearMethod::cholmod:
-      return "cholmod";
-    case LinearMethod::umfpack:
-      return "umfpack";
-    case LinearMethod::cg:
-      return "cg";
-    case LinearMethod::bicgstab:
-      return "bicgstab";
-    case LinearMethod::matrix_free:
-      return "matrix_free";
-  }
-  return "?";
-}
-constexpr std::string_view name_of(Preconditioner p) {
-  switch (p) {
-    case Preconditioner::automatic:
-      return "auto";
-    case Preconditioner::ic:
-      return "ic";
-    case Preconditioner::diagonal:
-      return "diagonal";
-    case Preconditioner::ilut:
-      return "ilut";
-    case Preconditioner::short_horizon:
-      return "short_horizon";
-  }
-  return "?";
-}
-constexpr std::string_view name_of(Backend b) { return b == Backend::petsc ? "petsc" : "serial"; }
-// Every value, in the order the scene reader lists them in its error messages.
-template <class E>
-struct all_values;
+// The scene's words for each value (and the ones the log and summary.json print), in the
+// order the scene reader lists them in its error messages.
 template <>
-struct all_values<NonlinearMethod> {
-  static constexpr std::array values{NonlinearMethod::newton};
+struct enum_names<NonlinearMethod> {
+  static constexpr std::array<EnumName<NonlinearMethod>, 1> table{{{NonlinearMethod::newton, "newton"}}};
 };
 template <>
-struct all_values<LinearMethod> {
-  static constexpr std::array values{LinearMethod::automatic, LinearMethod::cholmod,
-                                     LinearMethod::umfpack,   LinearMethod::cg,
-                                     LinearMethod::bicgstab,  LinearMethod::matrix_free};
+struct enum_names<LinearMethod> {
+  static constexpr std::array<EnumName<LinearMethod>, 6> table{{{LinearMethod::automatic, "auto"},
+                                                                {LinearMethod::cholmod, "cholmod"},
+                                                                {LinearMethod::umfpack, "umfpack"},
+                                                                {LinearMethod::cg, "cg"},
+                                                                {LinearMethod::bicgstab, "bicgstab"},
+                                                                {LinearMethod::matrix_free, "matrix_free"}}};
 };
 template <>
-struct all_values<Backend> {
-  static constexpr std::array values{Backend::serial, Backend::petsc};
+struct enum_names<Preconditioner> {
+  static constexpr std::array<EnumName<Preconditioner>, 5> table{
+      {{Preconditioner::automatic, "auto"},
+       {Preconditioner::ic, "ic"},
+       {Preconditioner::diagonal, "diagonal"},
+       {Preconditioner::ilut, "ilut"},
+       {Preconditioner::short_horizon, "short_horizon"}}};
 };
 template <>
-struct all_values<Preconditioner> {
-  static constexpr std::array values{Preconditioner::automatic, Preconditioner::ic, Preconditioner::diagonal,
-                                     Preconditioner::ilut, Preconditioner::short_horizon};
+struct enum_names<Backend> {
+  static constexpr std::array<EnumName<Backend>, 2> table{
+      {{Backend::serial, "serial"}, {Backend::petsc, "petsc"}}};
 };
 
 struct SolverSpec {

@@ -32,7 +32,7 @@ std::optional<Box2> obq_cut_body(const Scene& scene) {
     throw std::invalid_argument(scene.file +
                                 ": domain.quadrature: obq_cut needs a 2D box body without holes "
                                 "(use obq)");
-  const double grow = scene.placement == "node" ? 0.5 * scene.h : 0.0;
+  const double grow = scene.placement == Placement::node ? 0.5 * scene.h : 0.0;
   Box2 body;
   for (int a = 0; a < 2; ++a) body.lo[a] = scene.lo[a] - grow, body.hi[a] = scene.hi[a] + grow;
   return body;
@@ -92,8 +92,8 @@ Model build_model(const Scene& scene) {
   if (is_obq(scene.quadrature)) {
     const std::optional<Box2> body = obq_cut_body(scene);
     ReproducingSpace space =
-        scene.obq_space == "paper001_odd" ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
-    if (scene.obq_space == "law") try {
+        scene.obq_space == ObqSpace::paper001_odd ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
+    if (scene.obq_space == ObqSpace::law) try {
         space = law_reproducing_space(m.law->name, scene.dim, m.influence->weight, m.influence->name);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());

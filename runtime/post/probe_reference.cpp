@@ -25,18 +25,18 @@ Point probe_region_point(const Probe& probe, const Scene& s) {
     for (int c = 0; c < 3; ++c)
       x[c] = r.has_within ? 0.5 * (std::max(s.lo[c], r.within_min[c]) + std::min(s.hi[c], r.within_max[c]))
                           : 0.5 * (s.lo[c] + s.hi[c]);
-    const std::string& side = r.side;
-    if (side == "left")
+    const Region::Side side = r.side;
+    if (side == Region::Side::left)
       x[0] = s.lo[0];
-    else if (side == "right")
+    else if (side == Region::Side::right)
       x[0] = s.hi[0];
-    else if (side == "bottom")
+    else if (side == Region::Side::bottom)
       x[1] = s.lo[1];
-    else if (side == "top")
+    else if (side == Region::Side::top)
       x[1] = s.hi[1];
-    else if (side == "back")
+    else if (side == Region::Side::back)
       x[2] = s.lo[2];
-    else if (side == "front")
+    else if (side == Region::Side::front)
       x[2] = s.hi[2];
     return x;
   }

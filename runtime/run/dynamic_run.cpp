@@ -23,7 +23,7 @@ void check_dynamic_scene(const Scene& scene) {
   if (!scene.dynamics) throw std::invalid_argument("dynamic run: the scene has no dynamics section");
   if (is_obq(scene.quadrature))
     throw std::invalid_argument(scene.file +
-                                ": domain.quadrature: " + std::string(quadrature_name(scene.quadrature)) +
+                                ": domain.quadrature: " + std::string(name_of(scene.quadrature)) +
                                 " is implemented for static solves only");
 }
 

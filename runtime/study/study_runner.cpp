@@ -121,7 +121,7 @@ StudyPoint run_point(const Scene& base, const StudySpec& spec, const StudyPoint&
   s.horizon_ratio = id.ratio;
   s.horizon_length = 0;
   s.h = pt.h;
-  if (!id.placement.empty()) s.placement = id.placement;
+  if (!id.placement.empty()) s.placement = parse_name<Placement>(id.placement).value_or(Placement::cell);
   // Estimated bonds: particles (from the box, before holes) x the lattice sites in a disc of radius delta/h.
   double particles = 1;
   for (int c = 0; c < s.dim; ++c) particles *= (s.hi[c] - s.lo[c]) / s.h;

@@ -36,8 +36,8 @@ TEST(Paper001Scene, ObqReproducesALinearFieldOnAPerturbedCloud) {
 }
 
 TEST(Paper001Scene, QuadratureKeyAcceptsObq) {
-  EXPECT_EQ(pd::parse_quadrature("obq"), pd::Quadrature::Obq);
-  EXPECT_EQ(pd::quadrature_name(pd::Quadrature::Obq), "obq");
+  EXPECT_EQ(pd::parse_name<pd::Quadrature>("obq"), pd::Quadrature::Obq);
+  EXPECT_EQ(pd::name_of(pd::Quadrature::Obq), "obq");
 }
 
 namespace {

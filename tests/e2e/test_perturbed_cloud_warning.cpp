@@ -31,7 +31,7 @@ Outcome confined_tension(const std::string& law, double perturbation, int count)
   pd::Probe& probe = s.probes.at(0);
   probe.region = pd::Region{};
   probe.region.kind = pd::Region::Kind::Side;
-  probe.region.side = "top";
+  probe.region.side = pd::Region::Side::top;
   probe.reference->parameters["traction"] = 0.001;
   Outcome o;
   pd::Simulation sim(s, [&](const std::string& line) {

@@ -16,7 +16,7 @@ constexpr double kSlope = -0.001 / 1000;
 
 pd::ProbeResult top_probe(const std::string& placement, const std::string& reference_at) {
   pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/scenes/uniaxial.yaml");
-  s.placement = placement;
+  s.placement = *pd::parse_name<pd::Placement>(placement);
   s.h = 10.0 / 20;
   s.law = "correspondence_plane_strain";
   s.horizon_ratio = 1.5;

@@ -28,7 +28,7 @@ Band lattice_band(double half, int count, const std::string& placement, double c
   s.lo = {-half, -half, 0};
   s.hi = {half, half, 0};
   s.h = 2 * half / count;
-  s.placement = placement;
+  s.placement = *pd::parse_name<pd::Placement>(placement);
   s.materials.resize(1);
   const pd::Particles all = pd::discretize(s);
   Band band;

@@ -65,7 +65,7 @@ TEST(Lattice, BoxCountsAndVolumes) {
 
 TEST(Lattice, NodePlacementIncludesTheFaces) {
   pd::Scene s = box_scene(2, 0.25);
-  s.placement = "node";
+  s.placement = pd::Placement::node;
   const pd::Particles p = pd::discretize(s);
   EXPECT_EQ(p.size(), 9 * 7);
   int on_corner = 0;
@@ -167,7 +167,7 @@ TEST(Regions, SidesHoldTheOutermostRowEvenWhenPerturbed) {
   for (const char* placement : {"cell", "node"}) {
     for (int dim : {2, 3}) {
       pd::Scene s = box_scene(dim, 0.125);
-      s.placement = placement;
+      s.placement = *pd::parse_name<pd::Placement>(placement);
       s.perturbation = 0.45;
       s.seed = 5;
       const pd::Particles p = pd::discretize(s);
@@ -178,14 +178,14 @@ TEST(Regions, SidesHoldTheOutermostRowEvenWhenPerturbed) {
       for (const auto& [side, n] : sides) {
         pd::Region r;
         r.kind = pd::Region::Kind::Side;
-        r.side = side;
+        r.side = *pd::parse_name<pd::Region::Side>(side);
         EXPECT_EQ(static_cast<int>(pd::region_particles(r, p, s).size()), n)
             << placement << " " << dim << "D " << side;
       }
       if (dim == 3) {
         pd::Region r;
         r.kind = pd::Region::Kind::Side;
-        r.side = "front";
+        r.side = pd::Region::Side::front;
         EXPECT_EQ(static_cast<int>(pd::region_particles(r, p, s).size()), nx * ny) << placement;
       }
     }
@@ -197,7 +197,7 @@ TEST(Regions, ThicknessBoxOutsideAndAll) {
   const pd::Particles p = pd::discretize(s);
   pd::Region r;
   r.kind = pd::Region::Kind::Side;
-  r.side = "left";
+  r.side = pd::Region::Side::left;
   r.thickness = 0.3;  // three columns of cell centres 0.05, 0.15, 0.25
   EXPECT_EQ(pd::region_particles(r, p, s).size(), 3u * 15);
   r.kind = pd::Region::Kind::Box;
@@ -217,7 +217,7 @@ TEST(Regions, CollarIsThePartiallyTruncatedFamilies) {
   for (const char* placement : {"cell", "node"})
     for (double ratio : {1.5, 2.5, 3.0, 3.5}) {
       pd::Scene s = box_scene(2, 0.1);
-      s.placement = placement;
+      s.placement = *pd::parse_name<pd::Placement>(placement);
       s.horizon_ratio = ratio;
       const pd::Particles p = pd::discretize(s);
       const pd::Bonds b = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });
@@ -240,7 +240,7 @@ TEST(Neighbours, LatticeFamiliesAtIntegerRatiosAreComplete) {
   for (const char* placement : {"cell", "node"})
     for (double ratio : {2.0, 3.0}) {
       pd::Scene s = box_scene(2, 0.1);
-      s.placement = placement;
+      s.placement = *pd::parse_name<pd::Placement>(placement);
       s.horizon_ratio = ratio;
       const pd::Particles p = pd::discretize(s);
       const pd::Bonds b = pd::find_bonds(p, s.delta(), [](double, double) { return 1.0; });

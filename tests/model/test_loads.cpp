@@ -30,7 +30,7 @@ pd::BoundaryCondition load(pd::BoundaryCondition::Kind kind, const std::string& 
   pd::BoundaryCondition bc;
   bc.kind = kind;
   bc.region.kind = side.empty() ? pd::Region::Kind::All : pd::Region::Kind::Side;
-  bc.region.side = side;
+  if (!side.empty()) bc.region.side = *pd::parse_name<pd::Region::Side>(side);
   bc.values = values;
   bc.where = "test.yaml:1: boundary[0]";
   return bc;

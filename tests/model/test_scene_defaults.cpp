@@ -18,7 +18,7 @@ TEST(SceneDefaults, MinimalSceneGetsTheDocumentedDefaults) {
   const pd::Scene s = pd::parse_scene(kMinimal, "m.yaml");
   EXPECT_EQ(s.file, "m.yaml");
   EXPECT_EQ(s.dim, 2);
-  EXPECT_EQ(s.placement, "cell");
+  EXPECT_EQ(s.placement, pd::Placement::cell);
   EXPECT_EQ(s.perturbation, 0.0);
   EXPECT_EQ(s.seed, 1u);
   EXPECT_TRUE(s.holes.empty() && s.inclusions.empty());

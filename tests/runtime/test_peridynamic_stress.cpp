@@ -209,7 +209,7 @@ TEST_P(PeridynamicStressOfEnergyLaws, IsHookesLawWithinTheQuadratureError) {
   const double W = body.assembler->variant().energy(gather.gather(body.centre, u.data()));
   const double w_error = std::abs(W / (0.5 * (expected.array() * e.array()).sum()) - 1);
   std::printf("%s delta/h=%g %s: |sigma - C:eps| / |C:eps| = %.4f, energy error %.4f\n", law.name, delta,
-              std::string(pd::quadrature_name(q)).c_str(), error, w_error);
+              std::string(pd::name_of(q)).c_str(), error, w_error);
   EXPECT_LT(error, w_error + 0.01) << law.name << "\nsigma\n" << sigma << "\nC:eps\n" << expected;
 }
 

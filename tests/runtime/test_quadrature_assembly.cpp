@@ -27,7 +27,7 @@ std::vector<Case> cases() {
   return v;
 }
 std::string name(const testing::TestParamInfo<Case>& info) {
-  return std::string(info.param.law->name) + "_" + std::string(pd::quadrature_name(info.param.quadrature));
+  return std::string(info.param.law->name) + "_" + std::string(pd::name_of(info.param.quadrature));
 }
 class QuadratureAssembly : public testing::TestWithParam<Case> {};
 }  // namespace

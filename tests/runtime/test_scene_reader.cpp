@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <set>
 
 #include "input/scene.hpp"
+#include "input/scene_rules.hpp"
 #include "input/yaml_keys.hpp"
 
 namespace {
@@ -116,4 +118,36 @@ TEST(SceneReader, MissingRequiredKeysAndSyntaxErrors) {
   EXPECT_TRUE(
       std::regex_search(error_of("- 1\n- 2\n"), std::regex(R"(^s\.yaml:1: \(top level\): expected a map)")));
   EXPECT_THROW(pd::read_scene("/nonexistent/scene.yaml"), pd::SceneError);
+}
+
+// Each names table spells every value once, and reads back what it prints.
+template <class E>
+void expect_names_round_trip() {
+  std::set<std::string_view> words;
+  for (const auto& n : pd::enum_names<E>::table) {
+    EXPECT_TRUE(words.insert(n.name).second) << n.name;
+    EXPECT_EQ(pd::parse_name<E>(pd::name_of(n.value)), n.value) << n.name;
+  }
+  EXPECT_EQ(pd::parse_name<E>("no such word"), std::nullopt);
+}
+
+TEST(SceneVocabulary, NamesTablesRoundTrip) {
+  expect_names_round_trip<pd::Quadrature>();
+  expect_names_round_trip<pd::LinearMethod>();
+  expect_names_round_trip<pd::Preconditioner>();
+  expect_names_round_trip<pd::Backend>();
+  expect_names_round_trip<pd::NonlinearMethod>();
+  expect_names_round_trip<pd::DynamicsMethod>();
+  expect_names_round_trip<pd::Placement>();
+  expect_names_round_trip<pd::ObqSpace>();
+  expect_names_round_trip<pd::CrackTips>();
+  expect_names_round_trip<pd::Region::Side>();
+  EXPECT_EQ(pd::name_list<pd::Placement>(), "cell, node");
+}
+
+TEST(SceneRules, EachRuleHasItsOwnName) {
+  std::set<std::string_view> names;
+  for (const pd::SceneRule& rule : pd::scene_rules())
+    EXPECT_TRUE(names.insert(rule.name).second) << rule.name;
+  EXPECT_GE(names.size(), 10u);
 }

@@ -1,0 +1,198 @@
+// The scene's cross-section rules, in one table (scene_rules.hpp).
+#include "input/scene_rules.hpp"
+
+#include <stdexcept>
+
+namespace pd {
+
+namespace {
+
+using Findings = std::vector<Finding>;
+
+Findings one(const YamlAt& at, const std::string& message) { return {{at.location(), message}}; }
+
+// A parameter the law does not take is most likely a misspelt one (`stabb` for `stab`):
+// the law then ran with its default, or refused, so say which names it takes.
+Findings unused_law_parameters(const SceneReading& r) {
+  Findings out;
+  const abi::LawDescriptor& law = *r.law;
+  std::string taken;
+  for (int i = 0; i < law.n_params; ++i) taken += (i ? ", " : "") + std::string(law.param_names[i]);
+  const YamlAt mats = r.section("materials");
+  for (std::size_t i = 0; i < r.s.materials.size(); ++i) {
+    const YamlAt material = mats.element(mats.node[i], i);
+    for (const std::string& name : unused_parameters(law, r.s.materials[i].parameters)) {
+      const YamlAt at = material.child(material.node["parameters"], "parameters")
+                            .child(material.node["parameters"][name], name);
+      out.push_back({at.location(), "law " + std::string(law.name) + " takes no parameter '" + name +
+                                        "', it is ignored (the law's parameters: " +
+                                        (taken.empty() ? "none" : taken) + ")"});
+    }
+  }
+  return out;
+}
+
+// Static scenes (no dynamics section) and relaxation have no time: each boundary condition
+// in turn (its time function, then a velocity), then each crack, with the message for each.
+Findings time_dependence(const SceneReading& r, const std::string& time, const std::string& velocity,
+                         const std::string& crack_time) {
+  Findings out;
+  for (const BoundaryCondition& bc : r.s.boundary) {
+    if (bc.time) out.push_back({bc.time_where, time});
+    if (bc.kind == BoundaryCondition::Kind::Velocity) out.push_back({bc.where, velocity});
+  }
+  for (const Crack& c : r.s.cracks)
+    if (c.time) out.push_back({c.time_where, crack_time});
+  return out;
+}
+
+bool relaxation(const Scene& s) { return s.dynamics && s.dynamics->method == DynamicsMethod::relaxation; }
+
+const std::vector<SceneRule> kRules{
+    {"the horizon is at least one spacing", Section::horizon, false,
+     [](const SceneReading& r) {
+       return r.s.delta() < r.s.h * 0.999
+                  ? one(r.section("horizon"), "the horizon must be at least one spacing h")
+                  : Findings{};
+     }},
+    {"compensation needs a law with an energy kernel", Section::law, false,
+     [](const SceneReading& r) {
+       return r.s.compensation && r.law->intact.energy == nullptr
+                  ? one(r.section("domain"), "compensation: law " + r.s.law +
+                                                 " has no energy kernel, and the compensation factor is a "
+                                                 "ratio of energy densities "
+                                                 "(paper 002 eq. 3.61)")
+                  : Findings{};
+     }},
+    {"a law that ignores the influence function is given const", Section::influence, true,
+     [](const SceneReading& r) {
+       // The generator found no path from w to the force.
+       return r.law->ignores_influence && r.s.influence != "const"
+                  ? one(r.section("influence"),
+                        "law " + r.s.law +
+                            " does not read the influence function (its micromodulus or kernel "
+                            "is built in): '" +
+                            r.s.influence +
+                            "' leaves its forces unchanged and only weights the family checks and the bonds "
+                            "a "
+                            "short-horizon preconditioner keeps")
+                  : Findings{};
+     }},
+    {"every material gives the law its parameters", Section::materials, false,
+     [](const SceneReading& r) {
+       const YamlAt mats = r.section("materials");
+       for (std::size_t i = 0; i < r.s.materials.size(); ++i) try {
+           const MaterialSpec& m = r.s.materials[i];
+           law_parameters(*r.law, m.elastic, m.plane, m.parameters);
+         } catch (const std::invalid_argument& e) {
+           return one(mats.element(mats.node[i], i), e.what());
+         }
+       return Findings{};
+     }},
+    {"a material parameter is one the law takes", Section::materials, true, unused_law_parameters},
+    {"the particle file's materials are the scene's", Section::materials, false,
+     [](const SceneReading& r) {
+       if (!r.cloud) return Findings{};
+       std::vector<std::string> names;
+       for (const MaterialSpec& m : r.s.materials) names.push_back(m.name);
+       try {
+         particle_materials(*r.cloud, names);
+       } catch (const SceneError& e) {
+         const YamlAt domain = r.section("domain");
+         return one(domain.child(domain.node["particles"], "particles"), e.what());
+       }
+       return Findings{};
+     }},
+    {"an inclusion's material is the scene's", Section::materials, false,
+     [](const SceneReading& r) {
+       for (std::size_t i = 0; i < r.s.inclusions.size(); ++i)
+         if (r.s.material_index(r.s.inclusions[i].material) < 0)
+           return one(
+               r.top.child(r.root["domain"]["inclusions"][i], "domain.inclusions[" + std::to_string(i) + "]"),
+               "unknown material '" + r.s.inclusions[i].material + "'");
+       return Findings{};
+     }},
+    {"the body force of u1 and u2 is plane strain", Section::body_force, false,
+     [](const SceneReading& r) {
+       return r.s.body_force && r.s.materials[0].plane == PlaneAssumption::Stress
+                  ? one(r.section("body_force"),
+                        "u1 and u2's body force is the plane-strain one; the body's material is plane stress")
+                  : Findings{};
+     }},
+    {"backend petsc runs no Gauss points", Section::solver, false,
+     [](const SceneReading& r) {
+       // The distributed families run the bond kernels; the Gauss families' assembler is serial.
+       const YamlAt solver = r.section("solver");
+       return r.s.solver.backend == Backend::petsc && r.s.gauss_points > 0
+                  ? one(solver.child(solver.node["backend"], "backend"),
+                        "backend petsc does not integrate over Gauss points (domain.gauss_points): its ranks "
+                        "run "
+                        "the bond families only; use the serial backend")
+                  : Findings{};
+     }},
+    {"damage.max_resolves belongs to static runs", Section::damage, false,
+     [](const SceneReading& r) {
+       return r.s.dynamics && r.s.damage && !r.s.damage->max_resolves_where.empty()
+                  ? Findings{{r.s.damage->max_resolves_where,
+                              "max_resolves belongs to implicit (Newton) runs: a dynamic run checks bonds "
+                              "every "
+                              "step"}}
+                  : Findings{};
+     }},
+    {"the J-integral is static", Section::damage, false,
+     [](const SceneReading& r) {
+       return r.s.dynamics && !r.s.output.j_integral.empty()
+                  ? one(r.section("output"),
+                        "j_integral post-processes the static solution; dynamic scenes do not support it")
+                  : Findings{};
+     }},
+    {"the smoothing is static", Section::damage, false,
+     [](const SceneReading& r) {
+       return r.s.dynamics && !r.s.output.smoothing_influence.empty()
+                  ? one(r.section("output"),
+                        "smoothing post-processes the static solution; dynamic scenes do not support it yet")
+                  : Findings{};
+     }},
+    {"time functions and velocities need dynamics", Section::damage, false,
+     [](const SceneReading& r) {
+       return r.s.dynamics
+                  ? Findings{}
+                  : time_dependence(r, "time functions need a dynamics section",
+                                    "velocity conditions need a dynamics section",
+                                    "time functions need a dynamics section (a static crack pressure "
+                                    "follows the load factor)");
+     }},
+    {"relaxation has no time functions or velocities", Section::damage, false,
+     [](const SceneReading& r) {
+       return relaxation(r.s)
+                  ? time_dependence(r, "relaxation solves the static problem: no time functions",
+                                    "relaxation solves the static problem: no velocity conditions",
+                                    "relaxation solves the static problem: no time functions")
+                  : Findings{};
+     }},
+    {"relaxation starts at rest", Section::damage, false,
+     [](const SceneReading& r) {
+       Findings out;
+       if (relaxation(r.s))
+         for (const InitialCondition& ic : r.s.dynamics->initial)
+           if (ic.velocity != Point{})
+             out.push_back({ic.where, "relaxation starts at rest: give an initial displacement only"});
+       return out;
+     }},
+};
+
+}  // namespace
+
+const std::vector<SceneRule>& scene_rules() { return kRules; }
+
+void apply_scene_rules(Section section, SceneReading& r) {
+  for (const SceneRule& rule : kRules) {
+    if (rule.after != section) continue;
+    for (const Finding& f : rule.check(r)) {
+      if (!rule.warning) throw SceneError(f.where + ": " + f.message);
+      r.s.warnings.push_back(f.where + ": " + f.message);
+    }
+  }
+}
+
+}  // namespace pd
