@@ -26,7 +26,7 @@ void check_agree(const Scene& scene, const Particles& particles, const Prescribe
   const BoundaryCondition& a = scene.boundary[static_cast<std::size_t>(first.condition)];
   const BoundaryCondition& b = scene.boundary[static_cast<std::size_t>(second.condition)];
   const auto what = [](const PrescribedDof& q) {
-    return q.kind == K::Velocity ? "velocity" : "displacement";
+    return q.kind == K::Velocity ? "velocity" : q.kind == K::Fixed ? "fixed displacement" : "displacement";
   };
   const auto time = [](const BoundaryCondition& bc) { return bc.time ? bc.time->describe() : std::string(); };
   const bool same = first.value == second.value &&
