@@ -4,10 +4,20 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace pd::cli {
 
 using Command = std::function<int()>;
+
+// A path option's value must not be empty: `--out ""` is bad usage (exit 2), not "the
+// default directory" nor the current one.
+inline const CLI::Validator kNonEmptyPath(
+    [](const std::string& value) {
+      return value.empty() ? std::string("an empty path is not a directory; give one or leave the option out")
+                           : std::string();
+    },
+    "PATH");
 
 Command add_laws_command(CLI::App& pd);       // pd laws: the generated laws and influence functions
 Command add_check_law_command(CLI::App& pd);  // pd check-law NAME: tangent vs finite differences

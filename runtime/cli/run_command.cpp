@@ -199,8 +199,10 @@ Command add_run_command(CLI::App& pd) {
   auto options = std::make_shared<RunOptions>();
   cmd->add_option("SCENE", options->scene_path, "the scene file (YAML)")->required();
   cmd->add_option("--out", options->out_dir,
-                  "the output directory DIR (default: the scene's output.directory)");
-  cmd->add_option("--restart", options->restart, "resume a dynamic run from this checkpoint file");
+                  "the output directory DIR (default: the scene's output.directory)")
+      ->check(kNonEmptyPath);
+  cmd->add_option("--restart", options->restart, "resume a dynamic run from this checkpoint file")
+      ->check(kNonEmptyPath);
   cmd->add_option(
       "--petsc-options", options->petsc_options,
       "PETSc options for solver.backend: petsc, after the scene's (--petsc-options='-ksp_monitor')");

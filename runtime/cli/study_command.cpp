@@ -53,7 +53,9 @@ Command add_study_command(CLI::App& pd) {
       "Exit codes: 0 done, 1 a run failed, 2 bad usage or a bad study file.\n");
   auto options = std::make_shared<StudyOptions>();
   cmd->add_option("STUDY", options->path, "the study file (YAML)")->required();
-  cmd->add_option("--out", options->out, "the output directory DIR")->capture_default_str();
+  cmd->add_option("--out", options->out, "the output directory DIR")
+      ->capture_default_str()
+      ->check(kNonEmptyPath);
   cmd->add_option("--placement", options->placement,
                   "replace every problem's domain.placement (node or cell)")
       ->check(CLI::IsMember({"node", "cell"}));

@@ -16,6 +16,38 @@
 
 namespace pd {
 
+namespace {
+// Two conditions may constrain the same component of a particle only when they agree: the
+// same value at full load, both velocities or both displacements, and the same time
+// function. Anything else is a contradiction the solver would settle silently by order.
+void check_agree(const Scene& scene, const Particles& particles, const PrescribedDof& first,
+                 const PrescribedDof& second) {
+  using K = BoundaryCondition::Kind;
+  const BoundaryCondition& a = scene.boundary[static_cast<std::size_t>(first.condition)];
+  const BoundaryCondition& b = scene.boundary[static_cast<std::size_t>(second.condition)];
+  const auto what = [](const PrescribedDof& q) {
+    return q.kind == K::Velocity ? "velocity" : q.kind == K::Fixed ? "fixed displacement" : "displacement";
+  };
+  const auto time = [](const BoundaryCondition& bc) { return bc.time ? bc.time->describe() : std::string(); };
+  const bool same = first.value == second.value &&
+                    (first.kind == K::Velocity) == (second.kind == K::Velocity) && time(a) == time(b);
+  if (same) return;
+  const int d = particles.dim, p = second.dof / d;
+  const double* x = particles.position(p);
+  const std::string at = d == 2 ? fmt::format("({:.6g}, {:.6g})", x[0], x[1])
+                                : fmt::format("({:.6g}, {:.6g}, {:.6g})", x[0], x[1], x[2]);
+  const std::string timing =
+      time(a) == time(b) ? std::string()
+                         : fmt::format(", in time {} against {}", time(b).empty() ? "constant" : time(b),
+                                       time(a).empty() ? "constant" : time(a));
+  throw SceneError(fmt::format(
+      "{}: prescribes the {} {} {:.6g} on particle {} at {}, which {} already prescribes as the {} {:.6g}{}: "
+      "two conditions may constrain the same component only with the same value",
+      b.where, "xyz"[second.dof % d], what(second), second.value, p, at, a.where, what(first), first.value,
+      timing));
+}
+}  // namespace
+
 std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& particles) {
   using K = BoundaryCondition::Kind;
   const int d = particles.dim;
@@ -37,10 +69,12 @@ std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& 
                              : field             ? field->displacement(particles.position(p))[c]
                                                  : bc.values[c];
         const PrescribedDof q{dof, bc.kind, value, static_cast<int>(ci)};
-        if (entry[dof] < 0)
+        if (entry[dof] < 0) {
           entry[dof] = static_cast<int>(out.size()), out.push_back(q);
-        else
+        } else {
+          check_agree(scene, particles, out[entry[dof]], q);
           out[entry[dof]] = q;
+        }
       }
   }
   return out;

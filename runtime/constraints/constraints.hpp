@@ -20,8 +20,10 @@ struct PrescribedDof {
 };
 
 // Every dof a fixed, displacement, field or velocity condition constrains, in the order
-// the conditions first reach them; a later condition on the same component overrides
-// an earlier one. Throws SceneError naming the condition whose region is empty.
+// the conditions first reach them. Two conditions may constrain the same component only
+// when they agree (same value, both velocities or both displacements, same time
+// function); otherwise SceneError names both (file:line: boundary[i]), the particle and
+// the values. Throws SceneError naming the condition whose region is empty.
 std::vector<PrescribedDof> prescribed_dofs(const Scene& scene, const Particles& particles);
 
 // The constrained dofs (fixed, prescribed and analytic-field conditions) with their

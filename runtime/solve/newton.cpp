@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -35,6 +37,30 @@ bool NewtonSolver::stagnated(const std::vector<NewtonRecord>& history, int it) c
   for (int k = 0; k < w; ++k)
     if (history[last - k].increment > s_.stagnation_increment) return false;
   return history[last].residual > 0.5 * history[last - w].residual;
+}
+
+// The rounding floor of |r_f| at u: how far r_f moves when u moves by as much as its own
+// rounding, e_i = s_i eps (|u_i| + rounding_length) on the free dofs, with fixed
+// pseudo-random signs s_i (a run stays deterministic). That is the floor of r = f_int(u)
+// + f_ext as evaluated: the positions' rounding through the true stiffness (|K| eps |y|,
+// the conditioning: |K||y| is far above |r_0| on a nearly incompressible or stiff-
+// inclusion body) plus the two evaluations' own rounding (or noise) of the summed force
+// terms; measured on r itself, so a tangent that does not match r cannot raise it. At
+// least eps * reference: the applied loads are rounded too.
+double NewtonSolver::rounding_floor(NonlinearSystem& sys, const DofMap& dofs, const Eigen::VectorXd& u,
+                                    double load, const Eigen::VectorXd& r, double reference) const {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const double length = sys.rounding_length();
+  const Eigen::VectorXd uf = dofs.restrict_free(u);
+  Eigen::VectorXd ef(uf.size());
+  for (Eigen::Index k = 0; k < uf.size(); ++k) {
+    const std::uint64_t h = (static_cast<std::uint64_t>(k) + 1) * 0x9E3779B97F4A7C15ull;
+    ef[k] = ((h >> 40) & 1 ? eps : -eps) * (std::abs(uf[k]) + length);
+  }
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(u.size()), moved(u.size());
+  dofs.expand_free(ef, e);
+  sys.residual(u + e, load, moved);
+  return std::max((dofs.restrict_free(moved) - dofs.restrict_free(r)).norm(), eps * reference);
 }
 
 NewtonSolver::NewtonSolver(NewtonSettings settings, std::function<void(const std::string&)> log)
@@ -77,6 +103,8 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
     reference = std::max(reference, norm);
     NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
     bool done = false;
+    std::string above_floor;   // why the increment or stagnation rule did not end the step
+    int negligible_steps = 0;  // consecutive full steps below the increment tolerance, above the ceiling
     for (int it = 0;; ++it) {
       if (interrupt_signal() != 0)
         throw_if_interrupted(
@@ -98,20 +126,41 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
             fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
         return false;
       }
-      if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance ||
-          (it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance)) {
+      if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance) {
         done = true;
         break;
       }
-      if (stagnated(res.history, it)) {
-        res.stagnated = done = true;
-        say(fmt::format(
-            "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
-            "|du|/|u| <= {:.0e}; the relative tolerance {:.0e} is below what this system's conditioning "
-            "allows",
-            norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
-            s_.relative_tolerance));
-        break;
+      // The increment and stagnation rules end the step only on the rounding floor: below
+      // floor_factor times the floor measured here (NewtonSettings::floor_factor).
+      const bool small_step = it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance;
+      const bool stagnant = !small_step && stagnated(res.history, it);
+      if (small_step || stagnant) {
+        res.rounding_floor = rounding_floor(sys, dofs, u, load, r, reference);
+        const double ceiling = s_.floor_factor * res.rounding_floor;
+        if (norm <= ceiling) {
+          if (stagnant)
+            say(fmt::format(
+                "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
+                "|du|/|u| <= {:.0e}, within {:.0f} times the floor {:.2e}; the relative tolerance {:.0e} is "
+                "below what this system's conditioning allows",
+                norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
+                s_.floor_factor, res.rounding_floor, s_.relative_tolerance));
+          res.stagnated = stagnant;
+          done = true;
+          break;
+        }
+        above_floor = fmt::format(
+            "the {} (|du|/|u| = {:.1e}) with |r| = {:.3e} above the rounding-floor ceiling {:.3e} ({:.0f} "
+            "times the floor {:.2e}): the tangent does not match the residual, or the system is singular or "
+            "badly scaled",
+            small_step ? "steps became negligible" : "iteration stagnated", rec.increment, norm, ceiling,
+            s_.floor_factor, res.rounding_floor);
+        say("  " + above_floor + "; not converged, iterating on");
+        // A full step that no longer moves u leaves it where it is: iterating on repeats it.
+        if (small_step && ++negligible_steps == 3) break;
+      } else {
+        negligible_steps = 0;
+        above_floor.clear();
       }
       if (it == s_.max_iterations) break;
       rec = NewtonRecord{step, it + 1, round, load, 0.0, 0.0, 0.0, 0, 0.0};
@@ -154,11 +203,20 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       norm = trial_norm;
     }
     if (!done) {
-      res.message = fmt::format(
-          "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, {:.2e} of the "
-          "reference {:.3e} (tolerance {:.1e}); try more load steps or more iterations",
-          load, step, s_.load_steps, s_.max_iterations, norm, reference > 0 ? norm / reference : 0.0,
-          reference, s_.relative_tolerance);
+      const int its = res.history.back().iteration;
+      res.message =
+          above_floor.empty()
+              ? fmt::format(
+                    "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
+                    "{:.2e} of the reference {:.3e} (tolerance {:.1e}); try more load steps or more "
+                    "iterations",
+                    load, step, s_.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
+                    s_.relative_tolerance)
+              : fmt::format(
+                    "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
+                    "{:.2e} of the reference {:.3e} (tolerance {:.1e}); {}",
+                    load, step, s_.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
+                    s_.relative_tolerance, above_floor);
       say(res.message);
       return false;
     }

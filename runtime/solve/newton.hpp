@@ -34,6 +34,12 @@ class NonlinearSystem {
   // factorisation preconditions the matrix-free path; fixed pattern between calls.
   virtual bool has_approximate_tangent() const { return false; }
   virtual void approximate_tangent(const Eigen::VectorXd& u, double load, SparseMatrix& P);
+  // The length each unknown is rounded against inside r: a peridynamic bond's deformed
+  // vector Y = xi + (u_q - u_p) is held to eps |xi|, not eps |u|, so a small-strain
+  // residual's rounding floor is set by the bond lengths (PeridynamicSystem: the largest
+  // horizon). 0: the unknowns are rounded only against themselves. Newton's rounding
+  // floor (NewtonSettings::floor_factor) perturbs u by eps (|u_i| + this).
+  virtual double rounding_length() const { return 0.0; }
 };
 
 // The matrix-free path's preconditioner: Jacobi (from NonlinearSystem::diagonal) or a
@@ -54,6 +60,14 @@ struct NewtonSettings {
   // residual floor far above rtol; this ends the iteration there and says so. 0 turns it off.
   int stagnation_window = 3;
   double stagnation_increment = 1e-7;
+  // The ceiling on both rules above: they end a load step only when |r_f| <= floor_factor
+  // * the rounding floor, measured at u as |r_f(u + e) - r_f(u)| with e_i = +-eps (|u_i| +
+  // rounding_length) on the free dofs (what one evaluation of r cannot resolve: the
+  // rounding of the positions through the true stiffness, |K| eps |y|, plus the
+  // evaluation's own rounding or noise), and at least eps * reference. Small steps above
+  // the ceiling mean the step came from a tangent that does not match r or a singular
+  // system, not from the floor: Newton iterates on and fails, naming |r| and the ceiling.
+  double floor_factor = 100;
   int max_backtracks = 12;            // halvings of the step
   double sufficient_decrease = 1e-4;  // Armijo constant on |r_f|
   LinearSolverOptions linear;
@@ -91,7 +105,8 @@ struct NewtonRecord {
 
 struct NewtonResult {
   bool converged = false;
-  bool stagnated = false;  // converged by the stagnation rule (the residual floor), not by rtol
+  bool stagnated = false;     // converged by the stagnation rule (the residual floor), not by rtol
+  double rounding_floor = 0;  // the last measured rounding floor of |r_f| (0: never needed)
   std::vector<NewtonRecord> history;
   std::string linear_solver;    // the method that solved the last system
   std::string linear_choice;    // why (and any fallback)
@@ -114,6 +129,8 @@ class NewtonSolver {
 
  private:
   bool stagnated(const std::vector<NewtonRecord>& history, int it) const;
+  double rounding_floor(NonlinearSystem& system, const DofMap& dofs, const Eigen::VectorXd& u, double load,
+                        const Eigen::VectorXd& r, double reference) const;
   NewtonSettings s_;
   std::function<void(const std::string&)> log_;
 };

@@ -56,6 +56,13 @@ TEST(Cli, AMissingOrMalformedValueIsBadUsage) {
   const auto no_out = run_pd({"run", "a.yaml", "--out"});
   EXPECT_EQ(no_out.status, 2);
   EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
+  // An empty directory is no directory: refused before the scene is read (a.yaml does not exist).
+  for (const char* command : {"run", "study"}) {
+    const auto empty_out = run_pd({command, "a.yaml", "--out", ""});
+    EXPECT_EQ(empty_out.status, 2) << command << ": " << empty_out.err;
+    EXPECT_NE(empty_out.err.find("--out"), std::string::npos) << empty_out.err;
+    EXPECT_NE(empty_out.err.find("an empty path is not a directory"), std::string::npos) << empty_out.err;
+  }
   const auto seed = run_pd({"check-law", "silling_plane_strain", "--seed", "many"});
   EXPECT_EQ(seed.status, 2);
   EXPECT_NE(seed.err.find("--seed"), std::string::npos) << seed.err;

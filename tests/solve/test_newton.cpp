@@ -268,6 +268,110 @@ TEST(Newton, StagnationOnTheRoundingFloorEndsTheIterationAndIsReported) {
 }
 
 namespace {
+// The spring grid with a tangent `scale` times too stiff (a badly scaled system: the
+// steps come out `scale` times too short while r stays where it is).
+struct TooStiffTangent final : pd::NonlinearSystem {
+  pd::NonlinearSystem& s;
+  double scale;
+  TooStiffTangent(pd::NonlinearSystem& inner, double k) : s(inner), scale(k) {}
+  int size() const override { return s.size(); }
+  void residual(const Eigen::VectorXd& u, double l, Eigen::VectorXd& r) override { s.residual(u, l, r); }
+  void tangent(const Eigen::VectorXd& u, double l, pd::SparseMatrix& K, Eigen::VectorXd* r) override {
+    s.tangent(u, l, K, r);
+    K *= scale;
+  }
+  bool has_jvp() const override { return true; }
+  void jvp(const Eigen::VectorXd& u, double l, const Eigen::VectorXd& v, Eigen::VectorXd& Kv) override {
+    s.jvp(u, l, v, Kv);
+    Kv *= scale;
+  }
+  void diagonal(const Eigen::VectorXd& u, double l, Eigen::VectorXd& d) override {
+    s.diagonal(u, l, d);
+    d *= scale;
+  }
+  double rounding_length() const override { return s.rounding_length(); }
+};
+
+// Pulled by a prescribed displacement, so |u| is set from the first iterate on.
+pd::test::GridProblem pulled_problem(double pull) {
+  return {pd::test::state_law_2d(), {5.0e2, 3.0e2}, 8, 6, pull, 0.0};
+}
+}  // namespace
+
+// The true rounding floor: a pull of 1e-7 spacings leaves the bond extensions |Y| - |xi|
+// with about 9 digits, so rtol = 1e-16 is out of reach and the increment rule must end
+// the step, within the ceiling, at a residual no better solve could lower.
+TEST(Newton, AResidualOnItsRoundingFloorConvergesByTheIncrementRule) {
+  auto pb = pulled_problem(1e-7);
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  pd::NewtonSettings st;
+  st.relative_tolerance = 1e-16;
+  st.increment_tolerance = 1e-9;  // the scenes' default
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_FALSE(r.stagnated);
+  const double last = r.history.back().residual, first = r.history.front().residual;
+  EXPECT_GT(last, 1e-16 * first) << "rtol was reached: this is not the floor";
+  EXPECT_GT(r.rounding_floor, 0.0);
+  EXPECT_LE(last, st.floor_factor * r.rounding_floor);
+  // The floor is the rounding of the bond vectors (|xi| ~ 2, eps |xi| against a stretch
+  // of 1e-7): about 1e-9 of the reference, far above eps.
+  EXPECT_GT(r.rounding_floor, 1e-11 * first);
+  EXPECT_LT(r.rounding_floor, 1e-7 * first);
+}
+
+// A tangent 1e14 times too stiff: every full step moves u by about 1e-14 |u|, below the
+// increment tolerance. The old rule (step 1 and |du| <= increment_tolerance |u|, no
+// ceiling) reported convergence after one iteration with |r| still at its initial value;
+// the residual is far above its rounding floor, so this must not converge, and the
+// message names |r| and the ceiling. Assembled and matrix-free.
+TEST(Newton, NegligibleStepsFarAboveTheRoundingFloorDoNotConverge) {
+  auto pb = pulled_problem(1e-2);
+  auto inner = pb.system();
+  TooStiffTangent sys(inner, 1e14);
+  for (const bool matrix_free : {false, true}) {
+    pd::NewtonSettings st;
+    st.increment_tolerance = 1e-9;
+    st.matrix_free = matrix_free;
+    Eigen::VectorXd u;
+    std::vector<std::string> log;
+    const pd::NewtonResult r = run(sys, pb.dofs, u, st, &log);
+    EXPECT_FALSE(r.converged) << (matrix_free ? "matrix-free" : "assembled");
+    ASSERT_GE(r.history.size(), 2u);
+    EXPECT_LT(r.history[1].increment, st.increment_tolerance) << "the steps should be negligible";
+    EXPECT_GT(r.history.back().residual, 0.5 * r.history.front().residual);
+    EXPECT_NE(r.message.find("did not converge"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("|r| = "), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("rounding-floor ceiling"), std::string::npos) << r.message;
+    EXPECT_LE(r.iterations(), 3) << "a step that does not move u is not repeated to max_iterations";
+  }
+}
+
+// A tangent 1e9 times too stiff: steps of about 1e-9 |u|, above the increment tolerance
+// but below the stagnation increment, each lowering |r| by a part in 1e9. The old
+// stagnation rule ("stagnated on the rounding floor", no ceiling) reported convergence
+// after three such steps at the initial residual; now the iteration goes on to
+// max_iterations and fails.
+TEST(Newton, StagnationFarAboveTheRoundingFloorDoesNotConverge) {
+  auto pb = pulled_problem(1e-2);
+  auto inner = pb.system();
+  TooStiffTangent sys(inner, 1e9);
+  pd::NewtonSettings st;
+  st.max_iterations = 8;
+  Eigen::VectorXd u;
+  std::vector<std::string> log;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st, &log);
+  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.stagnated);
+  EXPECT_EQ(r.iterations(), st.max_iterations);
+  EXPECT_GT(r.history.back().residual, 0.5 * r.history.front().residual);
+  EXPECT_NE(r.message.find("iteration stagnated"), std::string::npos) << r.message;
+  for (const auto& line : log)
+    EXPECT_EQ(line.find("stagnated on the rounding floor"), std::string::npos) << line;
+}
+
+namespace {
 // r(u) = load b - A u with A symmetric but indefinite (a softening region): declared
 // symmetric, so the matrix-free path starts with CG and must hand over to GMRES.
 struct IndefiniteLinear final : pd::NonlinearSystem {

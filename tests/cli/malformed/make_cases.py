@@ -96,6 +96,15 @@ cases = [
  ("memory_count_99999", "count: 6", "count: 99999", None, None,
   r"domain: the scene needs at least [0-9.e+]+ GiB of memory for its particles and bonds alone \(1e\+10 particles.*this machine has [0-9.e+]+ GiB available"),
  ("horizon_beyond_the_body", "ratio: 3.0", "length: 5", None, None, "the horizon delta = 5 exceeds the body"),
+ # two conditions prescribing different values on one component of a particle (the top-right corner)
+ ("conflicting_displacements", "traction: [0, 0.01]", "displacement: {y: 0.01}\n  - region: {side: right, within: {min: [0.5, 0.5], max: [1, 1]}}\n    displacement: {y: 0.02}",
+  "region: {side: right", r"boundary\[2\]",
+  r"prescribes the y displacement 0\.02 on particle \d+ at \([0-9.]+, [0-9.]+\), which .*:13: boundary\[1\] already prescribes as the "
+  r"displacement 0\.01: two conditions may constrain the same component only with the same value"),
+ ("conflicting_fixed_and_displacement", "region: {side: top}\n    traction: [0, 0.01]", "region: {side: left}\n    displacement: {x: 0.01}",
+  "region: {side: left}", r"boundary\[1\]",
+  r"prescribes the x displacement 0\.01 on particle \d+ at \([0-9.]+, [0-9.]+\), which .*:11: boundary\[0\] already prescribes as the "
+  r"fixed displacement 0:"),
 ]
 warn_cases = [
  ("warn_crack_outside", "output:", "cracks:\n  - segment: [[3, 3], [4, 3]]\noutput:", "  - segment", r"cracks\[0\]", "the crack crosses no bond"),
@@ -123,5 +132,8 @@ def make(name, frm, to, marker, path, msg, kind):
 if __name__ == "__main__":
     if len(sys.argv) < 2: sys.argv.append(os.path.dirname(os.path.abspath(__file__)))
 make("valid_base", "dimension: 2", "dimension: 2", None, None, "", "accepted")  # the runner's control
+# two conditions agreeing on the components they share (the top-right corner's y): accepted
+make("agreeing_displacements", "traction: [0, 0.01]", "displacement: {y: 0.01}\n  - region: {side: right, within: {min: [0.5, 0.5], max: [1, 1]}}\n    displacement: {y: 0.01}",
+     None, None, "", "accepted")
 for c in cases: make(*c, "rejected")
 for c in warn_cases: make(*c, "warned")
