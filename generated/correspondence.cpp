@@ -1085,6 +1085,9 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
@@ -3227,6 +3230,9 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;
@@ -4539,6 +4545,9 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 6;
   d.n_states = 4;
@@ -6921,6 +6930,9 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 11;
   d.n_states = 9;
@@ -8194,6 +8206,9 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 3;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 4;
   d.n_states = 4;
@@ -10575,6 +10590,9 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.param_test_values = test_values;
   d.n_outputs = 6;
   d.output_names = outputs;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 0;
   d.n_moments = 9;
   d.n_states = 9;

@@ -892,6 +892,9 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, {1, 2, 1}, };
+  d.n_reproducing_groups = 2;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
@@ -2035,6 +2038,9 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, {1, 2, 1}, };
+  d.n_reproducing_groups = 2;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 2;
   d.n_moments = 3;
   d.n_states = 1;
@@ -2926,6 +2932,9 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, {1, 2, 1}, };
+  d.n_reproducing_groups = 2;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 2;
   d.n_moments = 2;
   d.n_states = 1;

@@ -900,6 +900,9 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;
@@ -2055,6 +2058,9 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, };
+  d.n_reproducing_groups = 1;
+  d.reproducing_groups = reproducing_groups;
   d.scratch_per_bond = 2;
   d.n_moments = 1;
   d.n_states = 1;

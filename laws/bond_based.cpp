@@ -30,6 +30,12 @@ Law bond_based(const std::string& name, int dim, bool conical, const std::string
   law.energy(law.sum("bond_energy", law.alpha() * c * s * s * r * law.V() / 4));
   law.claim_angular_momentum_balance();  // t is parallel to Y
   law.fixed_poisson_ratio(0.25);
+  // Linearised: t ~ c(r) xi^3 / |xi|^3 : eps (s = xi . eps xi / |xi|^2), stress c(r) xi^4 / |xi|^3.
+  law.reproducing_terms(3, 4, 3);
+  if (conical)
+    law.built_in_kernel("micromodulus 1 - r/delta", {{1.0, 0}, {-1.0, 1}});
+  else
+    law.built_in_kernel("constant micromodulus", {{1.0, 0}});
   return law;
 }
 }  // namespace

@@ -73,6 +73,10 @@ Law lps(const std::string& name, int dim, Volume volume, Dilatation dilatation, 
   const Expr lambda_ij = law.pair_param("lambda", PairMean::harmonic),
              mu_ij = law.pair_param("mu", PairMean::harmonic);
   law.force(wa / m * (Ca * (lambda_ij - mu_ij) * theta * force_dir + Cb / 2 * mu_ij * stretch * law.xi()));
+  // Linearised: the shear term w xi^3 / |xi|^2 : eps, its stress w xi^4 / |xi|^2; m, theta
+  // and M are traces of those (law_space.hpp). The paper's kernel replaces w there.
+  law.reproducing_terms(3, 4, 2);
+  if (paper) law.built_in_kernel("its built-in kernel K = 1/r", {{1.0, -1}});  // (r/delta)^-1 up to 1/delta
   if (dilatation != Dilatation::corrected_dilatation_only) {
     const Expr shear = law.sum("bond_energy", mu_ij * wa * pow(dot(law.xi(), eta), 2) / (r * r) * law.V());
     law.energy(Ca * (lambda - mu) / (2 * dim) * theta * theta + Cb / (4 * m) * shear);

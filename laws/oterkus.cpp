@@ -44,6 +44,10 @@ Law oterkus(const std::string& name, const std::string& summary, bool d_from_m, 
   const Expr theta = law.dilatation_sum("theta", d * wa * e * cosine * law.V());
   law.force(2 * wa * (a * d * cosine * theta + b * e) * law.Y() / l);
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
+  // Linearised: the stress w xi^4 / |xi|^2 and force w xi^3 / |xi|^2 of the b e term, and
+  // theta's w xi (x) xi / |xi| with its force sum w xi / |xi| (law_space.hpp).
+  law.reproducing_terms(3, 4, 2);
+  law.reproducing_terms(1, 2, 1);
   return law;
 }
 }  // namespace

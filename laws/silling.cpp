@@ -28,6 +28,9 @@ Law silling(const std::string& name, int dim, const std::string& summary) {
   const double shear = dim == 2 ? 8.0 : 15.0;
   law.force(wa / m * (n * bulk * theta * r + shear * G * ed) * law.Y() / l);
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
+  // Linearised (u = eps x): e = xi . eps xi / |xi|, so t ~ w xi^3 / |xi|^2 : eps and its
+  // stress w xi^4 / |xi|^2; m and theta are traces of those (law_space.hpp).
+  law.reproducing_terms(3, 4, 2);
   const Expr dev = law.sum("deviatoric_energy", wa * ed * ed * law.V());
   law.energy(bulk / 2 * theta * theta + shear / 2 * G / m * dev);
   return law;

@@ -96,6 +96,21 @@ struct KernelVariant {
   OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
 };
 
+// The bond monomials xi^b / |xi|^inverse_r_power with lowest_degree <= |b| <= highest_degree
+// (pd::monomials, runtime/discretize/reproducing_space.hpp): one group of a law's
+// reproducing space, LawDescriptor::reproducing_groups.
+struct MonomialGroup {
+  int lowest_degree = 0;
+  int highest_degree = 0;
+  int inverse_r_power = 0;
+};
+
+// One term c (r/delta)^k of a radial profile (LawDescriptor::kernel_terms).
+struct RadialTerm {
+  double coefficient = 1.0;
+  int power = 0;
+};
+
 struct LawDescriptor {
   const char* name = "";
   const char* summary = "";
@@ -126,6 +141,21 @@ struct LawDescriptor {
   // The force never reads Family::w (bond-based laws, a kernel built into the law): the
   // scene's influence function does not change the law's forces.
   bool ignores_influence = false;
+  // The law's reproducing space (domain.obq_space: law; runtime/discretize/law_space.hpp):
+  // the groups of bond monomials that its horizon sums integrate under a homogeneous
+  // deformation, each times the radial weight the sums carry. Declared in the law's source
+  // (pdgen Law::reproducing_terms, docs/laws.md) and copied here in declaration order;
+  // 0 groups: the law declares none, and obq_space: law refuses it.
+  int n_reproducing_groups = 0;
+  const MonomialGroup* reproducing_groups = nullptr;
+  // The radial weight of those sums when the law ignores the influence (a kernel built into
+  // the law: bond-based micromoduli, paper 001's K = 1/r): sum c (r/delta)^k over
+  // kernel_terms, up to a constant factor, and a phrase for it. Declared by pdgen
+  // Law::built_in_kernel; null kernel_description: none declared. A law that reads the
+  // influence (ignores_influence false) has none: its sums carry the scene's w.
+  int n_kernel_terms = 0;
+  const RadialTerm* kernel_terms = nullptr;
+  const char* kernel_description = nullptr;
   KernelVariant damaged;  // reads alpha per bond
   KernelVariant intact;   // alpha folded to 1: use when no bond of the body is broken
 };

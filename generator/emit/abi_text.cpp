@@ -79,6 +79,8 @@ std::string output(int i) { return "outputs[" + str(i) + "]"; }
 
 std::string abi_include() { return "#include \"kernel_abi.hpp\"\n"; }
 std::string law_descriptor_type() { return "pd::abi::LawDescriptor"; }
+std::string monomial_group_type() { return "pd::abi::MonomialGroup"; }
+std::string radial_term_type() { return "pd::abi::RadialTerm"; }
 
 std::string law_table(const std::vector<std::string>& descriptors,
                       const std::vector<std::string>& influences) {

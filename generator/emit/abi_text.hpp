@@ -51,6 +51,8 @@ std::string output(int i);
 // Generated files: the header every generated file includes, and descriptor types.
 std::string abi_include();
 std::string law_descriptor_type();
+std::string monomial_group_type();
+std::string radial_term_type();
 // The definitions of all_laws, all_influences, find_law and find_influence over the
 // given descriptor calls ("pd::generated::silling_3d_descriptor()") and influence entries.
 std::string law_table(const std::vector<std::string>& descriptors,

@@ -28,6 +28,37 @@ std::string counts_init(const EmitCounts& c) {
          std::to_string(c.calls) + "}";
 }
 
+// The facts obq_space: law reads (LawDescriptor::reproducing_groups, kernel_*): the groups
+// as declared; the radial weight is the influence exactly when the force reads w (derived),
+// so a built-in kernel on a law that reads w, or none on one that does not, is a mistake.
+std::string reproducing_space_facts(const Law& law) {
+  const std::string& n = law.name();
+  if (law.has_built_in_kernel() && law.reads_influence())
+    throw std::invalid_argument("law " + n +
+                                ": built_in_kernel declared, but the force reads the influence w: its "
+                                "sums carry the scene's w, not a built-in kernel");
+  if (law.reproducing_groups().empty()) return "";
+  if (!law.reads_influence() && !law.has_built_in_kernel())
+    throw std::invalid_argument("law " + n +
+                                ": reproducing_terms declared, but the force never reads the influence w: "
+                                "declare the radial weight its sums carry (law.built_in_kernel)");
+  std::ostringstream desc;
+  desc << "  static const " << abi_text::monomial_group_type() << " reproducing_groups[] = {";
+  for (const MonomialGroupDef& g : law.reproducing_groups())
+    desc << "{" << g.lowest_degree << ", " << g.highest_degree << ", " << g.inverse_r_power << "}, ";
+  desc << "};\n  d.n_reproducing_groups = " << law.reproducing_groups().size()
+       << ";\n  d.reproducing_groups = reproducing_groups;\n";
+  if (law.has_built_in_kernel()) {
+    desc << "  static const " << abi_text::radial_term_type() << " kernel_terms[] = {";
+    for (const RadialTermDef& t : law.kernel_profile())
+      desc << "{" << cpp_double(t.coefficient) << ", " << t.power << "}, ";
+    desc << "};\n  d.n_kernel_terms = " << law.kernel_profile().size()
+         << ";\n  d.kernel_terms = kernel_terms;\n  d.kernel_description = "
+         << quoted(law.kernel_description()) << ";\n";
+  }
+  return desc.str();
+}
+
 std::string descriptor_head(const Law& law) {
   const std::string& n = law.name();
   std::ostringstream desc;
@@ -55,6 +86,7 @@ std::string descriptor_head(const Law& law) {
   if (law.has_fixed_poisson_ratio())
     desc << "  d.has_fixed_poisson_ratio = true;\n  d.poisson_ratio = " << cpp_double(law.poisson_ratio())
          << ";\n";
+  desc << reproducing_space_facts(law);
   return desc.str();
 }
 }  // namespace

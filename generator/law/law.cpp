@@ -87,6 +87,24 @@ void Law::fixed_poisson_ratio(double nu) {
   poisson_ratio_ = nu;
 }
 
+void Law::reproducing_terms(int lowest_degree, int highest_degree, int inverse_r_power) {
+  if (lowest_degree < 0 || highest_degree < lowest_degree)
+    throw std::invalid_argument("law " + name_ + ": reproducing_terms needs 0 <= lowest <= highest degree");
+  reproducing_groups_.push_back({lowest_degree, highest_degree, inverse_r_power});
+}
+
+void Law::built_in_kernel(std::string description, std::vector<RadialTermDef> profile) {
+  if (has_built_in_kernel_) throw std::invalid_argument("law " + name_ + ": built_in_kernel declared twice");
+  if (description.empty() || profile.empty())
+    throw std::invalid_argument("law " + name_ + ": built_in_kernel needs a description and a profile");
+  for (const RadialTermDef& t : profile)
+    if (!std::isfinite(t.coefficient))
+      throw std::invalid_argument("law " + name_ + ": built_in_kernel coefficients must be finite");
+  has_built_in_kernel_ = true;
+  kernel_description_ = std::move(description);
+  kernel_profile_ = std::move(profile);
+}
+
 Expr Law::deformed_length() const { return sqrt(dot(Y_, Y_) + 1e-16 * dot(xi_, xi_)); }
 
 Expr Law::sum(const std::string& name, Expr body) {

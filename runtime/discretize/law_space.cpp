@@ -12,8 +12,6 @@ namespace pd {
 namespace {
 constexpr int kLowest = -2, kHighest = 6;  // the powers of rho a fit may use
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
-
 // Least-squares coefficients of rho^k, k in `powers`, through samples of g on `rho`.
 Eigen::VectorXd fit(const std::vector<int>& powers, const Eigen::VectorXd& rho, const Eigen::VectorXd& g) {
   Eigen::MatrixXd A(rho.size(), static_cast<int>(powers.size()));
@@ -69,41 +67,38 @@ std::vector<RadialPower> influence_power_series(double (*weight)(double r, doubl
   return series;
 }
 
-ReproducingSpace law_reproducing_space(std::string_view law, int dim,
+ReproducingSpace law_reproducing_space(const abi::LawDescriptor& law, int dim,
                                        double (*weight)(double r, double delta), std::string_view influence) {
+  if (law.n_reproducing_groups <= 0)
+    throw std::invalid_argument(fmt::format(
+        "law '{}': it declares no reproducing space (no law.reproducing_terms in its laws/*.cpp source, so "
+        "its descriptor has no reproducing_groups; docs/laws.md); use obq_space: paper001",
+        law.name));
   ReproducingSpace space;
   space.dim = dim;
-  auto add = [&](int lo, int hi, int inverse_r) {
-    const std::vector<BondMonomial> t = monomials(dim, lo, hi, inverse_r);
+  for (int i = 0; i < law.n_reproducing_groups; ++i) {
+    const abi::MonomialGroup& g = law.reproducing_groups[i];
+    const std::vector<BondMonomial> t = monomials(dim, g.lowest_degree, g.highest_degree, g.inverse_r_power);
     space.terms.insert(space.terms.end(), t.begin(), t.end());
-  };
+  }
   std::string radial = std::string(influence);
-  if (starts_with(law, "lps_paper_")) {
-    // Paper 001's LPS as written has its kernel K = 1/r built in (laws/lps.cpp): the
-    // scene's influence does not enter its sums. K = (r/delta)^-1 up to a constant.
-    add(3, 4, 2);
-    space.weight = {{1.0, -1}};
-    radial = "its built-in kernel K = 1/r";
-  } else if (starts_with(law, "silling_") || starts_with(law, "lps_")) {
-    add(3, 4, 2);
-    space.weight = influence_power_series(weight, influence);
-  } else if (starts_with(law, "oterkus_")) {
-    add(3, 4, 2);
-    add(1, 2, 1);
-    space.weight = influence_power_series(weight, influence);
-  } else if (starts_with(law, "correspondence_")) {
-    add(1, 2, 0);
-    space.weight = influence_power_series(weight, influence);
-  } else if (starts_with(law, "bond_based_")) {
-    add(3, 4, 3);
-    const bool conical = law.find("conical") != std::string_view::npos;
-    if (conical) space.weight = {{1.0, 0}, {-1.0, 1}};  // c(r) / c(0) = 1 - r/delta
-    radial = conical ? "micromodulus 1 - r/delta" : "constant micromodulus";
+  if (law.ignores_influence) {
+    // The sums carry the kernel built into the law, whatever the scene's influence.
+    if (law.kernel_description == nullptr)
+      throw std::invalid_argument(fmt::format(
+          "law '{}': its force ignores the influence, and it declares no built-in kernel "
+          "(law.built_in_kernel "
+          "in its laws/*.cpp source; descriptor kernel_terms) for its reproducing space; use obq_space: "
+          "paper001",
+          law.name));
+    for (int i = 0; i < law.n_kernel_terms; ++i)
+      space.weight.push_back({law.kernel_terms[i].coefficient, law.kernel_terms[i].power});
+    // The constant 1 is the space's empty weight (reproducing_space.hpp).
+    if (space.weight.size() == 1 && space.weight[0].coefficient == 1.0 && space.weight[0].power == 0)
+      space.weight.clear();
+    radial = law.kernel_description;
   } else {
-    throw std::invalid_argument(fmt::format(
-        "law '{}': no reproducing space is derived for it (law_space.hpp covers silling_*, lps_*, oterkus_*, "
-        "correspondence_*, bond_based_*); use obq_space: paper001",
-        law));
+    space.weight = influence_power_series(weight, influence);
   }
   for (const BondMonomial& f : space.terms)
     for (const auto& [c, g] : weighted_term(space, f))
@@ -112,9 +107,18 @@ ReproducingSpace law_reproducing_space(std::string_view law, int dim,
             fmt::format("law '{}' with influence '{}': its horizon sum of xi^b/|xi|^{} (|b| = {}) is not "
                         "integrable at r = 0 "
                         "in {}D (the continuum law diverges); choose another influence",
-                        law, influence, g.inverse_r_power, g.degree(), dim));
-  space.name = fmt::format("{} with {}", law, radial);
+                        law.name, influence, g.inverse_r_power, g.degree(), dim));
+  space.name = fmt::format("{} with {}", law.name, radial);
   return space;
+}
+
+ReproducingSpace law_reproducing_space(std::string_view law, int dim,
+                                       double (*weight)(double r, double delta), std::string_view influence) {
+  const abi::LawDescriptor* d = abi::find_law(law);
+  if (d == nullptr)
+    throw std::invalid_argument(
+        fmt::format("law '{}': not in the law table (pd laws lists them); no reproducing space", law));
+  return law_reproducing_space(*d, dim, weight, influence);
 }
 
 }  // namespace pd

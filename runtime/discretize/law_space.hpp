@@ -22,6 +22,11 @@
 //  - bond_based_*: the kernel ignores w; its micromodulus c(r) (constant, or conical
 //    1 - r/delta) plays its part. Space: c(r)/c(0) xi^b / r^3, |b| = 3, 4.
 //
+// Each law declares its groups in its source (law.reproducing_terms, the rows above) and
+// a law that ignores w its built-in kernel (law.built_in_kernel); pdgen copies them into
+// the LawDescriptor, and whether the weight is the influence or that kernel is the
+// generator's derived ignores_influence. Nothing here reads a law's name.
+//
 // Counts in 2D / 3D: Silling and LPS 9 / 25, Oterkus 14 / 34, correspondence 5 / 9,
 // bond-based 9 / 25 (paper 001's space: 15 / 35). The stabilised correspondence laws'
 // extra sums (S w alpha V, S alpha V) scale a term that vanishes under a homogeneous
@@ -38,6 +43,7 @@
 #include <vector>
 
 #include "discretize/reproducing_space.hpp"
+#include "kernel_abi.hpp"
 
 namespace pd {
 
@@ -47,11 +53,17 @@ namespace pd {
 std::vector<RadialPower> influence_power_series(double (*weight)(double r, double delta),
                                                 std::string_view name);
 
-// The space of the table above for the law named `law` (its dimension from the name's
-// family: *_plane_strain, *_2d -> 2, *_3d -> 3 is the caller's `dim`) and influence
-// `weight`. Throws std::invalid_argument naming the law when no space is derived for it,
-// or when a sum is not integrable at r = 0 for this influence (the continuum law itself
-// diverges there).
+// The space of the table above for the law `law` from its descriptor alone: the groups
+// LawDescriptor::reproducing_groups (the law declares them, pdgen Law::reproducing_terms)
+// in dimension `dim`, times the influence `weight` when the law reads it, or the kernel
+// the law declares built in when it ignores the influence (LawDescriptor::kernel_terms;
+// the constant 1 is the empty weight). Throws std::invalid_argument naming the law when
+// it declares no groups, or ignores the influence and declares no kernel, or when a sum is
+// not integrable at r = 0 for this influence (the continuum law itself diverges there).
+ReproducingSpace law_reproducing_space(const abi::LawDescriptor& law, int dim,
+                                       double (*weight)(double r, double delta), std::string_view influence);
+// The same for the law named `law` in the generated law table (abi::find_law); throws
+// std::invalid_argument naming it when the table has no such law.
 ReproducingSpace law_reproducing_space(std::string_view law, int dim,
                                        double (*weight)(double r, double delta), std::string_view influence);
 

@@ -94,7 +94,7 @@ Model build_model(const Scene& scene) {
     ReproducingSpace space =
         scene.obq_space == ObqSpace::paper001_odd ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
     if (scene.obq_space == ObqSpace::law) try {
-        space = law_reproducing_space(m.law->name, scene.dim, m.influence->weight, m.influence->name);
+        space = law_reproducing_space(*m.law, scene.dim, m.influence->weight, m.influence->name);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());
       }

@@ -44,6 +44,18 @@ struct PairParamDef {
   PairMean mean = PairMean::harmonic;
 };
 
+// Bond monomials xi^b / |xi|^inverse_r_power, lowest_degree <= |b| <= highest_degree: a
+// group of a law's reproducing space (Law::reproducing_terms).
+struct MonomialGroupDef {
+  int lowest_degree = 0, highest_degree = 0, inverse_r_power = 0;
+};
+
+// One term c (r/delta)^k of a built-in radial kernel (Law::built_in_kernel).
+struct RadialTermDef {
+  double coefficient = 1.0;
+  int power = 0;
+};
+
 class Law {
  public:
   Law(std::string name, int dim, std::string summary);
@@ -115,6 +127,20 @@ class Law {
   // laws: 1/4 in 3D and plane strain; plane stress maps to 1/3 through the equivalent
   // material). The runtime warns when a scene's material differs.
   void fixed_poisson_ratio(double nu);
+  // The law's reproducing space for OBQ weights (domain.obq_space: law, runtime/discretize/
+  // law_space.hpp): its horizon sums, linearised for a homogeneous deformation u = eps x,
+  // and the sums of its force state t and of t (x) xi (force and stress of the family),
+  // integrate the radial weight times xi^b / |xi|^inverse_r_power with lowest_degree <= |b|
+  // <= highest_degree. Called once per group; the order is the space's. Declared, not
+  // derived: the space rests on the linearisation and on cancellations the expression graph
+  // does not show (docs/laws.md). The radial weight is derived: the scene's influence when
+  // the force reads w, else the built_in_kernel the law declares.
+  void reproducing_terms(int lowest_degree, int highest_degree, int inverse_r_power);
+  // The radial weight a law that never reads w has built in (bond-based micromodulus c(r),
+  // paper 001's K = 1/r): c(r) proportional to sum c_k (r/delta)^k, described in a phrase
+  // ("micromodulus 1 - r/delta"). Only for a law whose force does not read w (pdgen refuses
+  // it otherwise) and needed by one that declares reproducing_terms.
+  void built_in_kernel(std::string description, std::vector<RadialTermDef> profile);
 
   // Read by the kernel builders.
   const std::vector<std::string>& param_names() const { return param_names_; }
@@ -124,6 +150,10 @@ class Law {
   bool balances_angular_momentum() const { return balances_angular_momentum_; }
   bool has_fixed_poisson_ratio() const { return has_fixed_poisson_ratio_; }
   double poisson_ratio() const { return poisson_ratio_; }
+  const std::vector<MonomialGroupDef>& reproducing_groups() const { return reproducing_groups_; }
+  bool has_built_in_kernel() const { return has_built_in_kernel_; }
+  const std::string& kernel_description() const { return kernel_description_; }
+  const std::vector<RadialTermDef>& kernel_profile() const { return kernel_profile_; }
   const std::vector<SumDef>& sums() const { return sums_; }
   const Vec& force_state() const { return force_; }
   bool has_energy() const { return has_energy_; }
@@ -145,6 +175,10 @@ class Law {
   bool balances_angular_momentum_ = false;
   bool has_fixed_poisson_ratio_ = false;
   double poisson_ratio_ = 0.0;
+  std::vector<MonomialGroupDef> reproducing_groups_;
+  bool has_built_in_kernel_ = false;
+  std::string kernel_description_;
+  std::vector<RadialTermDef> kernel_profile_;
   std::vector<SumDef> sums_;
   Vec force_;
   Expr energy_;
