@@ -101,6 +101,11 @@ std::vector<double> FamilyAssembler::stiffness_row_sums(const double* u) const {
 
 std::vector<double> FamilyAssembler::stresses(const double* u) const { return peridynamic_stress(*this, u); }
 
+double FamilyAssembler::longest_bond() const {
+  const std::vector<double>& length = inputs_.bonds->length;
+  return length.empty() ? 0.0 : *std::max_element(length.begin(), length.end());
+}
+
 int FamilyAssembler::thread_count() const {
   // An explicit count is obeyed. Otherwise: one thread on small bodies. Each colour ends
   // with a barrier; on a small body the colours hold too little work to pay for it, and

@@ -85,6 +85,7 @@ class FamilyAssembler final : public ForceOperator {
   const AssemblerOptions& options() const { return options_; }
   bool intact() const override { return options_.intact; }
   int dofs() const override { return inputs_.size() * inputs_.dim(); }
+  double longest_bond() const override;
   const FamilyAssembler* bond_families() const override { return this; }
 
  private:

@@ -70,6 +70,9 @@ class ForceOperator {
   // True for the variant with alpha folded to 1 (no bond is broken).
   virtual bool intact() const = 0;
   virtual int dofs() const = 0;
+  // The longest reference bond |xi| its kernels see: Y = xi + (u_q - u_p) is rounded
+  // against it, so it sets the residual's rounding floor (solve/newton.hpp).
+  virtual double longest_bond() const = 0;
 
   // The bond-family operator, or null: for what only bond families can do (break bonds,
   // the J-integral, the strain-mode check, the PETSc ranks' family loops). A caller that

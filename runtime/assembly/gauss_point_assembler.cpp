@@ -305,6 +305,11 @@ void GaussPointAssembler::for_each_family(const char* stage, Body&& body) const 
                                " (Gauss-point quadrature)");
 }
 
+double GaussPointAssembler::longest_bond() const {
+  const std::vector<double>& delta = gp_->delta;
+  return delta.empty() ? 0.0 : *std::max_element(delta.begin(), delta.end());
+}
+
 int GaussPointAssembler::thread_count() const { return threads_ > 0 ? threads_ : omp_get_max_threads(); }
 
 template <class Body>

@@ -91,6 +91,8 @@ class GaussPointAssembler final : public ForceOperator {
   const Bonds& reach_bonds() const;
   const GaussPoints& points() const { return *gp_; }
   int dofs() const override { return particles_->size() * particles_->dim; }
+  // Every Gauss bond lies within its particle's horizon: the largest horizon bounds them.
+  double longest_bond() const override;
 
  private:
   class Gather;

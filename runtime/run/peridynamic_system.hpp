@@ -2,7 +2,6 @@
 // assembler plus the forces of the effects the scene calls for.
 #pragma once
 
-#include <algorithm>
 #include <vector>
 
 #include "assembly/force_operator.hpp"
@@ -57,10 +56,7 @@ class PeridynamicSystem final : public NonlinearSystem {
     for (const Effect* e : effects_) e->add_stiffness(u.data(), load, approximation_->pattern(), P);
   }
   // Y = xi + (u_q - u_p) is rounded against |xi| (family_gather.cpp): the longest bond.
-  double rounding_length() const override {
-    const std::vector<double>& length = a_.inputs().bonds->length;
-    return length.empty() ? 0.0 : *std::max_element(length.begin(), length.end());
-  }
+  double rounding_length() const override { return a_.longest_bond(); }
 
  private:
   const ForceOperator& a_;
