@@ -2,7 +2,7 @@
 // snapshot write into result.vtu / result.csv, in which order, and when.
 //
 // Adding an output field is one row in result_fields.cpp (its name, components, the runs
-// it belongs to and how it is computed) and a line in docs/scenes.md's output section.
+// it belongs to and how it is computed) and a line in docs/scene_format.md's output section.
 #pragma once
 
 #include <string>

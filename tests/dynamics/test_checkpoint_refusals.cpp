@@ -13,6 +13,7 @@
 #include "dynamics/checkpoint.hpp"
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
+#include "temp_files.hpp"
 
 namespace {
 void quiet(const std::string&) {}
@@ -34,8 +35,7 @@ dynamics:
   initial: [{region: {all: true}, displacement: [1.0e-3, 0], gaussian: {axis: x, center: 0.5, width: 0.1}}]
 )",
                                 "bar.yaml");
-  const auto dir = std::filesystem::temp_directory_path() / ("pd_checkpoint_refusals_" + name);
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path("pd_checkpoint_refusals_" + name);
   s.output.directory = dir.string();
   return s;
 }

@@ -11,12 +11,12 @@
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
+#include "temp_files.hpp"
 
 namespace {
 std::string scene_path(const char* name) { return std::string(PD_SOURCE_DIR) + "/scenes/" + name; }
 std::string temp_dir(const char* name) {
-  const auto d = std::filesystem::temp_directory_path() / (std::string("pd_dynamics_") + name);
-  std::filesystem::remove_all(d);
+  const auto d = pd::test::scratch_path(std::string("pd_dynamics_") + name);
   return d.string();
 }
 // The damage of every particle right after the notch is cut (no step taken).

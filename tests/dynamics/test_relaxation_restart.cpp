@@ -9,6 +9,7 @@
 
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
+#include "temp_files.hpp"
 
 namespace {
 void quiet(const std::string&) {}
@@ -22,8 +23,7 @@ pd::Scene relaxation_scene(const char* name) {
   d.progress_seconds = 0;
   d.threads = 1;
   s.dynamics = d;
-  const auto dir = std::filesystem::temp_directory_path() / (std::string("pd_relaxation_") + name);
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path(std::string("pd_relaxation_") + name);
   s.output.directory = dir.string();
   return s;
 }

@@ -13,6 +13,7 @@
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
+#include "temp_files.hpp"
 
 namespace {
 std::string scene_path(const char* name) { return std::string(PD_SOURCE_DIR) + "/scenes/" + name; }
@@ -72,8 +73,7 @@ TEST(RunSummary, DynamicSceneLogListsOnlyItsEffects) {
 
 TEST(RunSummary, RelaxationTimeSeriesCarriesTheProbe) {
   pd::Scene s = pd::read_scene(scene_path("relaxation_uniaxial.yaml"));
-  const auto dir = std::filesystem::temp_directory_path() / "pd_probe_series";
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path("pd_probe_series");
   s.output.directory = dir.string();
   s.dynamics->progress_seconds = 0;
   pd::DynamicSimulation sim(s, [](const std::string&) {});

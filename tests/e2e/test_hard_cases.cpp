@@ -47,18 +47,33 @@ TEST(HardCases, FiftyPercentStretchConvergesQuadratically) {
   }
 }
 
-TEST(HardCases, NearIncompressiblePlaneStrainSolves) {
+// Near-incompressible plane strain against the analytic biaxial solution. The probe's
+// error is the free surface's (the traction edges lose part of their families), first
+// order in the horizon delta = 3h, and grows with the bulk-to-shear ratio; so the test
+// asks that halving h cuts the error like a first-order method does (ratio <= 0.65; a
+// pure first-order error gives 0.5, the boundary layer's higher-order terms add the rest:
+// 0.52-0.58 measured for these laws and ratios). A solve that converges to something
+// other than the elastic solution fails it. Measured (docs/stability.md): correspondence
+// at nu = 0.499 and h = 1 has the wrong sign (7x the reference), still first order.
+TEST(HardCases, NearIncompressiblePlaneStrainConvergesToTheElasticSolution) {
   for (double nu : {0.45, 0.49, 0.499})
     for (const char* law : {"silling_plane_strain", "lps_plane_strain", "correspondence_plane_strain"}) {
-      pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/scenes/biaxial.yaml");
-      s.law = law;
-      s.h = 1.0;
-      s.materials[0].elastic = pd::IsotropicElastic::from_E_nu(1000, nu);
-      pd::Simulation sim(s, [](const std::string&) {});
-      const pd::RunSummary r = sim.run(false);
-      ASSERT_TRUE(r.newton.converged) << law << " nu " << nu;
-      ASSERT_FALSE(r.probes.empty());
-      EXPECT_TRUE(std::isfinite(r.probes[0].value)) << law << " nu " << nu;
-      EXPECT_NE(r.probes[0].value, 0.0);
+      double error[2] = {0, 0};
+      for (int level = 0; level < 2; ++level) {
+        pd::Scene s = pd::read_scene(std::string(PD_SOURCE_DIR) + "/scenes/biaxial.yaml");
+        s.law = law;
+        s.h = level == 0 ? 1.0 : 0.5;
+        s.materials[0].elastic = pd::IsotropicElastic::from_E_nu(1000, nu);
+        pd::Simulation sim(s, [](const std::string&) {});
+        const pd::RunSummary r = sim.run(false);
+        ASSERT_TRUE(r.newton.converged) << law << " nu " << nu << " h " << s.h;
+        ASSERT_FALSE(r.probes.empty());
+        const pd::ProbeResult& p = r.probes[0];
+        ASSERT_TRUE(p.has_reference);
+        ASSERT_TRUE(std::isfinite(p.value)) << law << " nu " << nu << " h " << s.h;
+        error[level] = std::fabs(p.value - p.reference) / std::fabs(p.reference);
+      }
+      EXPECT_LE(error[1], 0.65 * error[0]) << law << " nu " << nu << ": relative errors " << error[0]
+                                           << " at h = 1, " << error[1] << " at h = 0.5";
     }
 }

@@ -1,7 +1,8 @@
 // Every generated law: the factored tangent against central finite differences of the
 // generated residual, block kind by block kind, on interior, truncated and damaged
 // families; the tangent-vector product; momentum balance; translation invariance;
-// energy consistency; the intact variant against the damaged one.
+// energy consistency; the intact variant's moments, forces, tangent factors, dense tangent
+// and JVP against the damaged variant's with every bond intact, and against differences.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,6 +51,16 @@ class LawTangent : public testing::TestWithParam<Case> {
   }
 };
 
+// Every block kind of the tangent M within 1e-6 of the differences Mfd.
+void expect_blocks_match(const TestFamily& f, const std::vector<double>& M, const std::vector<double>& Mfd,
+                         unsigned seed) {
+  const pd::verify::BlockErrors e = pd::verify::block_errors(f, M, Mfd);
+  EXPECT_LE(e.center, 1e-6) << "seed " << seed;
+  EXPECT_LE(e.on_diagonal, 1e-6) << "seed " << seed;
+  EXPECT_LE(e.off_diagonal, 1e-6) << "seed " << seed;
+  EXPECT_LE(e.center_coupling, 1e-6) << "seed " << seed;
+}
+
 }  // namespace
 
 TEST_P(LawTangent, EveryBlockKindMatchesCentralDifferences) {
@@ -58,11 +69,7 @@ TEST_P(LawTangent, EveryBlockKindMatchesCentralDifferences) {
     ASSERT_GT(f.bonds(), 3);
     const auto M = f.tangent_matrix(f.law->damaged);
     const auto Mfd = f.fd_matrix(f.law->damaged, 1e-6 * f.delta);
-    const pd::verify::BlockErrors e = pd::verify::block_errors(f, M, Mfd);
-    EXPECT_LE(e.center, 1e-6) << "seed " << seed;
-    EXPECT_LE(e.on_diagonal, 1e-6) << "seed " << seed;
-    EXPECT_LE(e.off_diagonal, 1e-6) << "seed " << seed;
-    EXPECT_LE(e.center_coupling, 1e-6) << "seed " << seed;
+    expect_blocks_match(f, M, Mfd, seed);
   }
 }
 
@@ -122,6 +129,71 @@ TEST_P(LawTangent, IntactVariantEqualsDamagedWithAllBondsIntact) {
     EXPECT_NEAR(m_intact[i], f.moments[i], 1e-13 * std::fabs(f.moments[i]));
   const auto intact = f.forces(f.law->intact);
   for (int i = 0; i < f.dofs(); ++i) EXPECT_NEAR(intact[i], damaged[i], 1e-13 * (1 + std::fabs(damaged[i])));
+}
+
+// Every scene without a broken bond runs on the intact variant, so its tangent is checked
+// as the damaged variant's is: factors, dense form (the law's own form kernel and the
+// generic forming) and JVP against the damaged variant at alpha = 1, and the dense
+// form against central differences of the intact residual.
+namespace {
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+
+void expect_close(const std::vector<double>& got, const std::vector<double>& want, double rel,
+                  const char* what) {
+  ASSERT_EQ(got.size(), want.size()) << what;
+  const double scale = 1 + max_abs(want);
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_NEAR(got[i], want[i], rel * scale) << what << " entry " << i;
+}
+}  // namespace
+
+TEST_P(LawTangent, IntactTangentFactorsEqualTheDamagedOnesWithAllBondsIntact) {
+  TestFamily f = family(12);
+  std::fill(f.alpha.begin(), f.alpha.end(), 1.0);
+  f.update_moments(f.law->damaged);
+  pd::TangentScratch intact, damaged;
+  std::vector<double> forces(static_cast<std::size_t>(f.dofs()), -7.0);
+  f.law->intact.tangent(f.view(), forces.data(), intact.view(f.dim, f.law->n_states, f.bonds()));
+  f.law->damaged.tangent(f.view(), nullptr, damaged.view(f.dim, f.law->n_states, f.bonds()));
+  expect_close(intact.direct, damaged.direct, 1e-13, "direct factor");
+  expect_close(intact.left, damaged.left, 1e-13, "left factor");
+  expect_close(intact.right, damaged.right, 1e-13, "right factor");
+  expect_close(forces, f.forces(f.law->damaged), 1e-13, "forces written by the intact tangent kernel");
+}
+
+TEST_P(LawTangent, IntactDenseTangentMatchesDamagedAndCentralDifferences) {
+  for (unsigned seed : {13u, 14u}) {
+    TestFamily f = family(seed);
+    std::fill(f.alpha.begin(), f.alpha.end(), 1.0);
+    f.update_moments(f.law->damaged);
+    const auto M = f.tangent_matrix(f.law->intact);
+    expect_close(M, f.tangent_matrix(f.law->damaged), 1e-12, "intact vs damaged dense tangent");
+    expect_close(M, f.tangent_matrix(f.law->intact, /*generic=*/true), 1e-12,
+                 "intact form kernel vs generic forming");
+    const auto Mfd = f.fd_matrix(f.law->intact, 1e-6 * f.delta);
+    expect_blocks_match(f, M, Mfd, seed);
+  }
+}
+
+TEST_P(LawTangent, IntactTangentVectorProductEqualsTangentTimesVector) {
+  TestFamily f = family(15);
+  std::fill(f.alpha.begin(), f.alpha.end(), 1.0);
+  f.update_moments(f.law->damaged);
+  const int n = f.dofs();
+  std::vector<double> dy(static_cast<std::size_t>(n)), intact(dy.size()), damaged(dy.size());
+  for (int i = 0; i < n; ++i) dy[i] = std::cos(0.7 * i + 0.2);
+  f.law->intact.jvp(f.view(), dy.data(), intact.data());
+  f.law->damaged.jvp(f.view(), dy.data(), damaged.data());
+  expect_close(intact, damaged, 1e-12, "intact vs damaged JVP");
+  const auto M = f.tangent_matrix(f.law->intact);
+  std::vector<double> Mdy(dy.size(), 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) Mdy[i] += M[i * n + j] * dy[j];
+  expect_close(intact, Mdy, 1e-10, "intact JVP vs intact tangent times vector");
 }
 
 // The assembler skips a family whose bonds are all broken (has_intact_bond): sound only

@@ -8,6 +8,7 @@
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "study/study.hpp"
+#include "temp_files.hpp"
 
 namespace {
 template <class Read>
@@ -24,7 +25,7 @@ const auto study = [](const std::string& p) { pd::read_study(p); };
 }  // namespace
 
 TEST(InputFiles, ADirectoryAsTheSceneIsNamedAsADirectory) {
-  const auto dir = std::filesystem::temp_directory_path() / "pd_input_files_cases";
+  const auto dir = pd::test::scratch_path("pd_input_files_cases");
   std::filesystem::create_directories(dir);
   EXPECT_EQ(error_of(scene, dir.string()),
             dir.string() + ": is a directory, not a scene file (give the .yaml file itself)");
@@ -39,7 +40,7 @@ TEST(InputFiles, AMissingFileAndADevice) {
 }
 
 TEST(InputFiles, AStudyWhoseTopLevelIsNotAMap) {
-  const auto path = std::filesystem::temp_directory_path() / "pd_input_files_list.yaml";
+  const auto path = pd::test::scratch_path("pd_input_files_list.yaml");
   {
     std::FILE* f = std::fopen(path.c_str(), "w");
     std::fputs("- a\n- b\n", f);

@@ -92,6 +92,11 @@ TEST(Compensation, EveryLawWithAnEnergyHasAFactorOfOneInside) {
     const Plate plate(law.name, pd::Quadrature::Volume, 16, 3.0);
     const std::vector<double> beta = pd::compensation_factors(plate.p, plate.b, plate.in);
     EXPECT_NEAR(beta[plate.at(8.5, 8.5)], 1.0, 1e-10) << law.name;
+    for (std::size_t i = 0; i < beta.size(); ++i) {
+      // A factor is the ratio of two positive trial energies: finite and positive.
+      EXPECT_TRUE(std::isfinite(beta[i])) << law.name << " particle " << i;
+      EXPECT_GT(beta[i], 0.0) << law.name << " particle " << i;
+    }
     std::printf("%s: beta face %.4f corner %.4f\n", law.name, beta[plate.at(8.5, 0.5)],
                 beta[plate.at(0.5, 0.5)]);
   }

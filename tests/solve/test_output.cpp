@@ -15,6 +15,7 @@
 #include "output/csv_writer.hpp"
 #include "output/vtu_writer.hpp"
 #include "support_grid.hpp"
+#include "temp_files.hpp"
 
 namespace {
 struct Element {
@@ -133,8 +134,7 @@ TEST(Output, VtuIsBinaryWithTheRightCountsAndExactValues) {
   for (int i = 0; i < 2 * n; ++i) u[i] = 1e-3 * i + 1.0 / 3.0;
   std::vector<pd::OutputField> fields{{"damage", 1, std::vector<double>(n, 0.25)},
                                       {"force", 2, std::vector<double>(2 * n, -1.5)}};
-  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_output";
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path("pd_solve_test_output");
   const auto path = dir / "sub" / "result.vtu";
   pd::write_vtu_file(path.string(), body.particles, u, fields);
   ASSERT_TRUE(std::filesystem::exists(path));
@@ -191,8 +191,7 @@ TEST(Output, XmlCheckerRejectsMalformedDocuments) {
 TEST(Output, TemporariesAreUniquePerWrite) {
   // Two writers of one path (two runs, or two threads) must not share a temporary: each
   // write's temporary is new, so interleaved writes publish one whole file or the other.
-  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_tmp_names";
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path("pd_solve_test_tmp_names");
   const std::string path = (dir / "f.txt").string();
   std::vector<std::thread> writers;
   for (int t = 0; t < 4; ++t)
@@ -230,8 +229,7 @@ TEST(Output, CsvHasHeaderAndOneRowPerParticle) {
 TEST(Output, BadFieldsAndUnwritablePathsFailWithoutAFile) {
   const auto body = pd::test::make_grid(2, 3, 3, 1, 1.5);
   std::vector<pd::OutputField> bad{{"short", 1, std::vector<double>(2, 0.0)}};
-  const auto dir = std::filesystem::temp_directory_path() / "pd_solve_test_bad";
-  std::filesystem::remove_all(dir);
+  const auto dir = pd::test::scratch_path("pd_solve_test_bad");
   const auto path = dir / "r.vtu";
   EXPECT_THROW(pd::write_vtu_file(path.string(), body.particles, {}, bad), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(path));
