@@ -71,11 +71,8 @@ void add_term(TiedDof& t, int dof, double coefficient) {
   t.coefficients.push_back(coefficient);
 }
 
-}  // namespace
-
-std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span<const int> layer,
-                                           std::span<const char> target, const LayerCondition& c) {
-  const int d = particles.dim;
+// Rejects a face normal that is not a unit vector and a traction condition the (2D) variant cannot take.
+void check_layer_condition(int d, const LayerCondition& c) {
   const auto& n = c.face.normal;
   double nn = 0;
   for (int k = 0; k < d; ++k) nn += n[k] * n[k];
@@ -86,8 +83,102 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
         "fictitious layer: the traction variant (paper 003 eqs. 32-35) is two-dimensional");
   if (c.kind == LayerCondition::Kind::traction && !(c.M > 0 && c.mu > 0))
     throw std::invalid_argument("fictitious layer: the traction variant needs positive elastic constants");
+}
+
+// What the ties of every particle of one layer share.
+struct LayerContext {
+  const Particles& particles;
+  const PointLocator& locate;
+  std::span<const char> target;
+  const LayerCondition& c;
+  std::array<double, 3> t;  // 2D tangent of the face
+};
+
+// The target particle at the mirror image xm of layer particle f; throws naming f when there is none.
+int mirror_particle(const LayerContext& L, int f, const std::array<double, 3>& xm) {
+  const int d = L.particles.dim;
+  const int m = L.locate.find(xm.data());
+  if (m < 0 || !L.target[m])
+    throw std::invalid_argument(
+        fmt::format("fictitious layer: the particle at {} has no particle outside its layer at its mirror "
+                    "image {}: the lattice must be "
+                    "symmetric about the face and the body at least as deep as the layer",
+                    where(L.particles, f),
+                    d == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", xm[0], xm[1], xm[2])
+                           : fmt::format("({:.6g}, {:.6g})", xm[0], xm[1])));
+  return m;
+}
+
+// Displacement ties of layer particle f on mirror m (eqs. 29-31): odd mirror about U*(xs) where
+// prescribed, even mirror elsewhere.
+void add_displacement_ties(std::vector<TiedDof>& ties, const LayerContext& L, int f, int m,
+                           const std::array<double, 3>& xs) {
+  const int d = L.particles.dim;
+  const LayerCondition& c = L.c;
+  const std::array<double, 3> U = c.value ? c.value(xs.data()) : std::array<double, 3>{};
+  for (int k = 0; k < d; ++k) {
+    TiedDof tie{f * d + k, {}, {}, 0.0};
+    if (c.prescribed[k]) {
+      add_term(tie, m * d + k, -1.0);
+      tie.offset = 2 * U[k];
+    } else {
+      add_term(tie, m * d + k, 1.0);
+    }
+    ties.push_back(std::move(tie));
+  }
+}
+
+// Traction ties of layer particle f at distance s from the face, on mirror m at xm (eqs. 32-35).
+void add_traction_ties(std::vector<TiedDof>& ties, const LayerContext& L, int f, int m, double s,
+                       const std::array<double, 3>& xm) {
+  const Particles& particles = L.particles;
+  const LayerCondition& c = L.c;
+  const int d = particles.dim;
+  const auto& n = c.face.normal;
+  const std::array<double, 3>& t = L.t;
+  // Traction: tangential neighbours of the mirror image, one-sided where one is missing.
+  const double h = std::sqrt(particles.volume[m]);
+  std::array<double, 3> xp{}, xq{};
+  for (int k = 0; k < 2; ++k) {
+    xp[k] = xm[k] + h * t[k];
+    xq[k] = xm[k] - h * t[k];
+  }
+  int plus = L.locate.find(xp.data()), minus = L.locate.find(xq.data());
+  if (plus >= 0 && !L.target[plus]) plus = -1;
+  if (minus >= 0 && !L.target[minus]) minus = -1;
+  double span = 2 * h;
+  if (plus < 0 && minus < 0)
+    throw std::invalid_argument(
+        fmt::format("fictitious layer: the mirror image {} of the particle at {} has no body "
+                    "neighbour along the face (spacing {:.3g}) to take the tangential derivative from",
+                    where(particles, m), where(particles, f), h));
+  if (plus < 0) plus = m, span = h;
+  if (minus < 0) minus = m, span = h;
+  const double dist = 2 * s;  // (x_f - x) . n
+  const double sn = c.traction[0] * n[0] + c.traction[1] * n[1];
+  const double st = c.traction[0] * t[0] + c.traction[1] * t[1];
+  for (int k = 0; k < 2; ++k) {
+    TiedDof tie{f * d + k, {}, {}, dist * (n[k] * sn / c.M + t[k] * st / c.mu)};
+    add_term(tie, m * d + k, 1.0);
+    // eps_nn = sigma_nn / M - (lambda / M) du_t/dt; du_t/dn = 2 eps_nt - du_n/dt.
+    for (int j = 0; j < 2; ++j) {
+      const double dt_coefficient = -dist * (n[k] * (c.lambda / c.M) * t[j] + t[k] * n[j]) / span;
+      add_term(tie, plus * d + j, dt_coefficient);
+      add_term(tie, minus * d + j, -dt_coefficient);
+    }
+    ties.push_back(std::move(tie));
+  }
+}
+
+}  // namespace
+
+std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span<const int> layer,
+                                           std::span<const char> target, const LayerCondition& c) {
+  const int d = particles.dim;
+  const auto& n = c.face.normal;
+  check_layer_condition(d, c);
   const PointLocator locate(particles);
-  const std::array<double, 3> t{-n[1], n[0], 0.0};  // 2D tangent
+  const LayerContext L{particles, locate, target, c, {-n[1], n[0], 0.0}};
   std::vector<TiedDof> ties;
   for (int f : layer) {
     const double* xf = particles.position(f);
@@ -103,61 +194,11 @@ std::vector<TiedDof> fictitious_layer_ties(const Particles& particles, std::span
       xm[k] = xf[k] - 2 * s * n[k];
       xs[k] = xf[k] - s * n[k];
     }
-    const int m = locate.find(xm.data());
-    if (m < 0 || !target[m])
-      throw std::invalid_argument(
-          fmt::format("fictitious layer: the particle at {} has no particle outside its layer at its mirror "
-                      "image {}: the lattice must be "
-                      "symmetric about the face and the body at least as deep as the layer",
-                      where(particles, f),
-                      d == 3 ? fmt::format("({:.6g}, {:.6g}, {:.6g})", xm[0], xm[1], xm[2])
-                             : fmt::format("({:.6g}, {:.6g})", xm[0], xm[1])));
-    if (c.kind == LayerCondition::Kind::displacement) {
-      const std::array<double, 3> U = c.value ? c.value(xs.data()) : std::array<double, 3>{};
-      for (int k = 0; k < d; ++k) {
-        TiedDof tie{f * d + k, {}, {}, 0.0};
-        if (c.prescribed[k]) {
-          add_term(tie, m * d + k, -1.0);
-          tie.offset = 2 * U[k];
-        } else {
-          add_term(tie, m * d + k, 1.0);
-        }
-        ties.push_back(std::move(tie));
-      }
-      continue;
-    }
-    // Traction: tangential neighbours of the mirror image, one-sided where one is missing.
-    const double h = std::sqrt(particles.volume[m]);
-    std::array<double, 3> xp{}, xq{};
-    for (int k = 0; k < 2; ++k) {
-      xp[k] = xm[k] + h * t[k];
-      xq[k] = xm[k] - h * t[k];
-    }
-    int plus = locate.find(xp.data()), minus = locate.find(xq.data());
-    if (plus >= 0 && !target[plus]) plus = -1;
-    if (minus >= 0 && !target[minus]) minus = -1;
-    double span = 2 * h;
-    if (plus < 0 && minus < 0)
-      throw std::invalid_argument(
-          fmt::format("fictitious layer: the mirror image {} of the particle at {} has no body "
-                      "neighbour along the face (spacing {:.3g}) to take the tangential derivative from",
-                      where(particles, m), where(particles, f), h));
-    if (plus < 0) plus = m, span = h;
-    if (minus < 0) minus = m, span = h;
-    const double dist = 2 * s;  // (x_f - x) . n
-    const double sn = c.traction[0] * n[0] + c.traction[1] * n[1];
-    const double st = c.traction[0] * t[0] + c.traction[1] * t[1];
-    for (int k = 0; k < 2; ++k) {
-      TiedDof tie{f * d + k, {}, {}, dist * (n[k] * sn / c.M + t[k] * st / c.mu)};
-      add_term(tie, m * d + k, 1.0);
-      // eps_nn = sigma_nn / M - (lambda / M) du_t/dt; du_t/dn = 2 eps_nt - du_n/dt.
-      for (int j = 0; j < 2; ++j) {
-        const double dt_coefficient = -dist * (n[k] * (c.lambda / c.M) * t[j] + t[k] * n[j]) / span;
-        add_term(tie, plus * d + j, dt_coefficient);
-        add_term(tie, minus * d + j, -dt_coefficient);
-      }
-      ties.push_back(std::move(tie));
-    }
+    const int m = mirror_particle(L, f, xm);
+    if (c.kind == LayerCondition::Kind::displacement)
+      add_displacement_ties(ties, L, f, m, xs);
+    else
+      add_traction_ties(ties, L, f, m, s, xm);
   }
   return ties;
 }

@@ -11,6 +11,74 @@
 
 namespace pd {
 
+namespace {
+
+// Particles binned in a uniform grid of cubic cells (edge `size`) over their bounding box.
+struct CellList {
+  int d = 0;
+  double size = 0;
+  double lo[3] = {0, 0, 0};
+  int dims[3] = {1, 1, 1};
+  std::vector<int> start, items;  // items[start[c] .. start[c + 1]) are the particles of cell c
+  // The (clamped) cell coordinates of point x.
+  void cell_of(const double* x, int* ci) const {
+    for (int c = 0; c < 3; ++c)
+      ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
+  }
+};
+
+// Builds the cell list of the particles with cells of edge `size` (a counting sort by cell).
+CellList build_cell_list(const Particles& p, double size) {
+  const int d = p.dim, n = p.size();
+  CellList cl;
+  cl.d = d;
+  cl.size = size;
+  double hi[3] = {0, 0, 0};
+  for (int c = 0; c < d; ++c) {
+    cl.lo[c] = hi[c] = p.x[c];
+    for (int i = 0; i < n; ++i)
+      cl.lo[c] = std::min(cl.lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
+  }
+  for (int c = 0; c < d; ++c) cl.dims[c] = std::max(1, static_cast<int>((hi[c] - cl.lo[c]) / size) + 1);
+  const std::size_t n_cells = static_cast<std::size_t>(cl.dims[0]) * cl.dims[1] * cl.dims[2];
+  cl.start.assign(n_cells + 1, 0);
+  cl.items.assign(static_cast<std::size_t>(n), 0);
+  std::vector<std::size_t> cell_index(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    int ci[3];
+    cl.cell_of(p.position(i), ci);
+    cell_index[i] = (static_cast<std::size_t>(ci[2]) * cl.dims[1] + ci[1]) * cl.dims[0] + ci[0];
+    ++cl.start[cell_index[i] + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) cl.start[c + 1] += cl.start[c];
+  {
+    std::vector<int> fill(cl.start.begin(), cl.start.end() - 1);
+    for (int i = 0; i < n; ++i) cl.items[fill[cell_index[i]]++] = i;
+  }
+  return cl;
+}
+
+// Appends to b the bonds of particle i to its sorted neighbours `found` (xi, length, weight, alpha).
+void append_family(Bonds& b, const Particles& p, int i, const std::vector<int>& found, double delta_i,
+                   double (*influence)(double, double)) {
+  const int d = p.dim;
+  for (int j : found) {
+    double r2 = 0;
+    for (int c = 0; c < d; ++c) {
+      const double e = p.x[j * d + c] - p.x[i * d + c];
+      b.xi.push_back(e);
+      r2 += e * e;
+    }
+    const double r = std::sqrt(r2);
+    b.neighbor.push_back(j);
+    b.length.push_back(r);
+    b.w.push_back(influence(r, delta_i));
+    b.alpha.push_back(1.0);
+  }
+}
+
+}  // namespace
+
 Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& delta,
                               double (*influence)(double, double)) {
   const int d = p.dim, n = p.size();
@@ -23,32 +91,10 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
   // a lattice) inside the scanned cells whatever the rounding of (x - lo) / size; with one
   // horizon for all, span = 1: the 3^d cells of the uniform search.
   const double size = *std::min_element(delta.begin(), delta.end()) * (1 + 1e-9);
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  for (int c = 0; c < d; ++c) {
-    lo[c] = hi[c] = p.x[c];
-    for (int i = 0; i < n; ++i)
-      lo[c] = std::min(lo[c], p.x[i * d + c]), hi[c] = std::max(hi[c], p.x[i * d + c]);
-  }
-  int dims[3] = {1, 1, 1};
-  for (int c = 0; c < d; ++c) dims[c] = std::max(1, static_cast<int>((hi[c] - lo[c]) / size) + 1);
-  auto cell_of = [&](const double* x, int* ci) {
-    for (int c = 0; c < 3; ++c)
-      ci[c] = c < d ? std::min(dims[c] - 1, static_cast<int>((x[c] - lo[c]) / size)) : 0;
-  };
-  const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
-  std::vector<int> cell_start(n_cells + 1, 0), cell_items(static_cast<std::size_t>(n));
-  std::vector<std::size_t> cell_index(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    int ci[3];
-    cell_of(p.position(i), ci);
-    cell_index[i] = (static_cast<std::size_t>(ci[2]) * dims[1] + ci[1]) * dims[0] + ci[0];
-    ++cell_start[cell_index[i] + 1];
-  }
-  for (std::size_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
-  {
-    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-    for (int i = 0; i < n; ++i) cell_items[fill[cell_index[i]]++] = i;
-  }
+  const CellList cells = build_cell_list(p, size);
+  const int* dims = cells.dims;
+  const std::vector<int>& cell_start = cells.start;
+  const std::vector<int>& cell_items = cells.items;
   Bonds b;
   b.dim = d;
   b.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -58,7 +104,7 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
     const double reach = delta[i] * (1 + 1e-12);  // a lattice site exactly delta away stays in
     const int span = static_cast<int>(std::ceil(reach / size));
     int ci[3];
-    cell_of(p.position(i), ci);
+    cells.cell_of(p.position(i), ci);
     found.clear();
     const int sz = d == 3 ? span : 0;
     for (int dz = -sz; dz <= sz; ++dz)
@@ -77,19 +123,7 @@ Bonds find_bonds_per_particle(const Particles& p, const std::vector<double>& del
           }
         }
     std::sort(found.begin(), found.end());
-    for (int j : found) {
-      double r2 = 0;
-      for (int c = 0; c < d; ++c) {
-        const double e = p.x[j * d + c] - p.x[i * d + c];
-        b.xi.push_back(e);
-        r2 += e * e;
-      }
-      const double r = std::sqrt(r2);
-      b.neighbor.push_back(j);
-      b.length.push_back(r);
-      b.w.push_back(influence(r, delta[i]));
-      b.alpha.push_back(1.0);
-    }
+    append_family(b, p, i, found, delta[i], influence);
     b.offsets[i + 1] = static_cast<int>(b.neighbor.size());
   }
   return b;

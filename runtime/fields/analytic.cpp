@@ -12,6 +12,36 @@ double param(const FieldSpec& s, const std::string& key, double fallback) {
   auto it = s.parameters.find(key);
   return it == s.parameters.end() ? fallback : it->second;
 }
+
+// Refuses a parameter that no analytic field reads (a misspelt key would otherwise be ignored).
+void check_known_parameters(const FieldSpec& spec, const std::string& name) {
+  for (const auto& [k, v] : spec.parameters) {
+    static const char* known[] = {"E",
+                                  "nu",
+                                  "x0",
+                                  "y0",
+                                  "pressure",
+                                  "half_length",
+                                  "traction",
+                                  "angle",
+                                  "stretch",
+                                  "radius",
+                                  "E_inclusion",
+                                  "nu_inclusion",
+                                  "inclusion_stress",
+                                  "e11",
+                                  "e22",
+                                  "e33",
+                                  "e12",
+                                  "e13",
+                                  "e23",
+                                  "z0",
+                                  "amplitude"};
+    bool ok = false;
+    for (const char* n : known) ok = ok || k == n;
+    if (!ok) throw std::invalid_argument("field " + name + ": unknown parameter '" + k + "'");
+  }
+}
 }  // namespace
 
 AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) : name_(spec.solution) {
@@ -78,32 +108,7 @@ AnalyticField::AnalyticField(const FieldSpec& spec, const IsotropicElastic& m) :
   } else {
     throw std::invalid_argument("unknown analytic solution '" + name_ + "'");
   }
-  for (const auto& [k, v] : spec.parameters) {
-    static const char* known[] = {"E",
-                                  "nu",
-                                  "x0",
-                                  "y0",
-                                  "pressure",
-                                  "half_length",
-                                  "traction",
-                                  "angle",
-                                  "stretch",
-                                  "radius",
-                                  "E_inclusion",
-                                  "nu_inclusion",
-                                  "inclusion_stress",
-                                  "e11",
-                                  "e22",
-                                  "e33",
-                                  "e12",
-                                  "e13",
-                                  "e23",
-                                  "z0",
-                                  "amplitude"};
-    bool ok = false;
-    for (const char* n : known) ok = ok || k == n;
-    if (!ok) throw std::invalid_argument("field " + name_ + ": unknown parameter '" + k + "'");
-  }
+  check_known_parameters(spec, name_);
 }
 
 std::array<double, 3> AnalyticField::displacement_at_load(const double* p, double load) const {

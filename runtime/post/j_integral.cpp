@@ -65,52 +65,27 @@ std::array<double, 2> dudx1(const Lattice& lat, const Particles& p, const double
   if (span == 0) return {0.0, 0.0};
   return {(u[2 * b] - u[2 * a]) / span, (u[2 * b + 1] - u[2 * a + 1]) / span};
 }
-}  // namespace
 
-JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h,
-                           const JContour& contour, const double* external) {
-  const abi::KernelVariant& kernels = assembler.variant();
-  const std::string& where = contour.where;
-  if (kernels.energy == nullptr)
-    throw std::runtime_error(
-        fmt::format("{}: law {} has no energy kernel, and the J-integral's contour term needs the "
-                    "strain-energy density W",
-                    where, assembler.law().name));
-  const FamilyInputs& in = assembler.inputs();
-  const Particles& p = *in.particles;
-  const Bonds& bonds = *in.bonds;
-  const Lattice lat(p, h, where);
-  const auto [c0, c1] = Lattice::lines_inside(contour.min[0], contour.max[0], lat.ox(), h);
-  const auto [r0, r1] = Lattice::lines_inside(contour.min[1], contour.max[1], lat.oy(), h);
-  JIntegralResult res;
-  res.contour = contour;
-  res.edge_min = {lat.x_of(c0) - h / 2, lat.y_of(r0) - h / 2, 0};
-  res.edge_max = {lat.x_of(c1) + h / 2, lat.y_of(r1) + h / 2, 0};
+// Marks the particles whose lattice cell lies in columns [c0, c1] and rows [r0, r1] (R), counting them.
+std::vector<char> mark_inside(const Lattice& lat, const Particles& p, long long c0, long long c1,
+                              long long r0, long long r1, int& count) {
   const int n = p.size();
   std::vector<char> inside(static_cast<std::size_t>(n), 0);
   for (int i = 0; i < n; ++i) {
     const long long cx = lat.column(p.x[2 * i]), cy = lat.row(p.x[2 * i + 1]);
     inside[i] = cx >= c0 && cx <= c1 && cy >= r0 && cy <= r1;
-    res.inside += inside[i];
+    count += inside[i];
   }
-  if (res.inside == 0) throw std::runtime_error(where + ": the contour box holds no particle");
+  return inside;
+}
 
-  FamilyGather gather(in);
-  auto energy = [&](int i) {
-    const abi::Family fam = gather.gather(i, u);
-    return has_intact_bond(fam) ? kernels.energy(fam) : 0.0;  // a particle cut free stores no energy
-  };
-  // W at the contour point between lattice columns a (inside) and b (outside) of row cy:
-  // the mean of the two, or the one that exists (a hole or the body's edge).
-  auto edge_w = [&](long long a, long long b, long long cy) {
-    const int i = lat.at(a, cy), j = lat.at(b, cy);
-    if (i >= 0 && j >= 0) return (energy(i) + energy(j)) / 2;
-    return i >= 0 ? energy(i) : j >= 0 ? energy(j) : 0.0;
-  };
-  // n1 = +1 on the right side, -1 on the left; 0 on top and bottom.
-  for (long long cy = r0; cy <= r1; ++cy)
-    res.contour_term += h * (edge_w(c1, c1 + 1, cy) - edge_w(c0, c0 - 1, cy));
-
+// The double sum over bonds between R and Q: the general form (first) and eq. (21) with the
+// pair force (second); counts the bonds leaving R.
+std::pair<double, double> bond_sums(const abi::KernelVariant& kernels, FamilyGather& gather,
+                                    const Bonds& bonds, const Lattice& lat, const Particles& p,
+                                    const double* u, double h, const std::vector<char>& inside,
+                                    long long& crossing_bonds) {
+  const int n = p.size();
   // The double sum: family i in R with neighbours in Q, and family j in Q with
   // neighbours in R. Forces of neighbour k of family q: -V_q V_k t_q<k>.
   std::vector<double> forces(static_cast<std::size_t>(gather.max_bonds() + 1) * 2);
@@ -135,9 +110,53 @@ JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, do
       // Eq. (21) with f_ij = t_i<j> - t_j<i>: each family contributes (1/2) V V t . (du_i + du_j) / dx1.
       // (The family outside sees the bond from the other end: the same terms, negated.)
       pair += inside[q] ? (tj + tq) / 2 : -(tj + tq) / 2;
-      if (inside[q]) ++res.crossing_bonds;
+      if (inside[q]) ++crossing_bonds;
     }
   }
+  return {general, pair};
+}
+}  // namespace
+
+JIntegralResult j_integral(const FamilyAssembler& assembler, const double* u, double h,
+                           const JContour& contour, const double* external) {
+  const abi::KernelVariant& kernels = assembler.variant();
+  const std::string& where = contour.where;
+  if (kernels.energy == nullptr)
+    throw std::runtime_error(
+        fmt::format("{}: law {} has no energy kernel, and the J-integral's contour term needs the "
+                    "strain-energy density W",
+                    where, assembler.law().name));
+  const FamilyInputs& in = assembler.inputs();
+  const Particles& p = *in.particles;
+  const Bonds& bonds = *in.bonds;
+  const Lattice lat(p, h, where);
+  const auto [c0, c1] = Lattice::lines_inside(contour.min[0], contour.max[0], lat.ox(), h);
+  const auto [r0, r1] = Lattice::lines_inside(contour.min[1], contour.max[1], lat.oy(), h);
+  JIntegralResult res;
+  res.contour = contour;
+  res.edge_min = {lat.x_of(c0) - h / 2, lat.y_of(r0) - h / 2, 0};
+  res.edge_max = {lat.x_of(c1) + h / 2, lat.y_of(r1) + h / 2, 0};
+  const int n = p.size();
+  const std::vector<char> inside = mark_inside(lat, p, c0, c1, r0, r1, res.inside);
+  if (res.inside == 0) throw std::runtime_error(where + ": the contour box holds no particle");
+
+  FamilyGather gather(in);
+  auto energy = [&](int i) {
+    const abi::Family fam = gather.gather(i, u);
+    return has_intact_bond(fam) ? kernels.energy(fam) : 0.0;  // a particle cut free stores no energy
+  };
+  // W at the contour point between lattice columns a (inside) and b (outside) of row cy:
+  // the mean of the two, or the one that exists (a hole or the body's edge).
+  auto edge_w = [&](long long a, long long b, long long cy) {
+    const int i = lat.at(a, cy), j = lat.at(b, cy);
+    if (i >= 0 && j >= 0) return (energy(i) + energy(j)) / 2;
+    return i >= 0 ? energy(i) : j >= 0 ? energy(j) : 0.0;
+  };
+  // n1 = +1 on the right side, -1 on the left; 0 on top and bottom.
+  for (long long cy = r0; cy <= r1; ++cy)
+    res.contour_term += h * (edge_w(c1, c1 + 1, cy) - edge_w(c0, c0 - 1, cy));
+
+  const auto [general, pair] = bond_sums(kernels, gather, bonds, lat, p, u, h, inside, res.crossing_bonds);
   if (external != nullptr)
     for (int i = 0; i < n; ++i)
       if (inside[i]) {

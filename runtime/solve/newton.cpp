@@ -3,8 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -68,6 +70,231 @@ NewtonSolver::NewtonSolver(NewtonSettings settings, std::function<void(const std
   if (s_.load_steps < 1) throw std::invalid_argument("Newton: load_steps must be at least 1");
 }
 
+namespace {
+
+// One iteration's log line: where the solve is, |r|, the step that led here, and the time
+// since the solve began.
+std::string iteration_line(const NewtonSettings& s, const NewtonRecord& rec, int step, double load, int round,
+                           int it, double norm, double reference,
+                           std::chrono::steady_clock::time_point started) {
+  return fmt::format(
+      "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}  t = {:.1f} s", load,
+      step, s.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it, norm,
+      reference > 0 ? norm / reference : 0.0,
+      it == 0 ? std::string()
+              : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
+                            rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
+                                                  : std::string()),
+      seconds_since(started));
+}
+
+// Why a load step failed when its iterations ended without convergence; above_floor (when
+// not empty) says why the increment or stagnation rule did not end it.
+std::string not_converged_message(const NewtonSettings& s, int step, double load, int its, double norm,
+                                  double reference, const std::string& above_floor) {
+  return above_floor.empty()
+             ? fmt::format(
+                   "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
+                   "{:.2e} of the reference {:.3e} (tolerance {:.1e}); try more load steps or more "
+                   "iterations",
+                   load, step, s.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
+                   s.relative_tolerance)
+             : fmt::format(
+                   "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
+                   "{:.2e} of the reference {:.3e} (tolerance {:.1e}); {}",
+                   load, step, s.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
+                   s.relative_tolerance, above_floor);
+}
+
+// What the increment and stagnation rules make of an iterate: nothing (iterate on), the
+// end of the load step on the rounding floor, or repeated negligible steps above it.
+enum class FloorVerdict { iterate_on, converged, stuck };
+
+// The Newton iterations of one load step, with the state shared across load steps (the
+// residual buffers and the convergence reference). The solver's private rules come in as
+// callbacks.
+class LoadStepIterations {
+ public:
+  using StagnationRule = std::function<bool(const std::vector<NewtonRecord>&, int)>;
+  using FloorMeasure = std::function<double(const Eigen::VectorXd& u, double load, const Eigen::VectorXd& r,
+                                            double reference)>;
+
+  LoadStepIterations(const NewtonSettings& s, NonlinearSystem& sys, const DofMap& dofs, Eigen::VectorXd& u,
+                     NewtonResult& res, LinearStep& linear_step,
+                     const std::function<void(const std::string&)>& log, StagnationRule stagnated,
+                     FloorMeasure rounding_floor)
+      : s_(s),
+        sys_(sys),
+        dofs_(dofs),
+        u_(u),
+        res_(res),
+        linear_step_(linear_step),
+        log_(log),
+        stagnated_(std::move(stagnated)),
+        rounding_floor_(std::move(rounding_floor)),
+        r_(sys.size()),
+        r_trial_(sys.size()),
+        trial_(sys.size()),
+        du_(sys.size()),
+        // Each iteration's line carries the time since the solve began: a long solve shows
+        // where it is and how fast it goes (factorisations and Krylov solves are inside).
+        started_(std::chrono::steady_clock::now()) {}
+
+  // Newton iterations of one load step (round > 0: solved again after after_step
+  // changed the system); false with res.message set when they fail.
+  bool run(int step, double load, int round) {
+    sys_.residual(u_, load, r_);
+    double norm = dofs_.restrict_free(r_).norm();
+    reference_ = std::max(reference_, norm);
+    NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
+    bool done = false;
+    std::string above_floor;   // why the increment or stagnation rule did not end the step
+    int negligible_steps = 0;  // consecutive full steps below the increment tolerance, above the ceiling
+    for (int it = 0;; ++it) {
+      if (interrupt_signal() != 0)
+        throw_if_interrupted(
+            fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
+      rec.iteration = it;
+      rec.residual = norm;
+      res_.history.push_back(rec);
+      say(iteration_line(s_, rec, step, load, round, it, norm, reference_, started_));
+      if (!std::isfinite(norm)) {
+        res_.message =
+            fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
+        return false;
+      }
+      if (norm <= s_.relative_tolerance * reference_ || norm <= s_.absolute_tolerance) {
+        done = true;
+        break;
+      }
+      const FloorVerdict verdict = check_floor(rec, it, load, norm, above_floor, negligible_steps);
+      if (verdict == FloorVerdict::converged) {
+        done = true;
+        break;
+      }
+      if (verdict == FloorVerdict::stuck) break;
+      if (it == s_.max_iterations) break;
+      rec = NewtonRecord{step, it + 1, round, load, 0.0, 0.0, 0.0, 0, 0.0};
+      if (!take_step(rec, it, load, norm)) return false;
+    }
+    if (!done) {
+      const int its = res_.history.back().iteration;
+      res_.message = not_converged_message(s_, step, load, its, norm, reference_, above_floor);
+      say(res_.message);
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  void say(const std::string& line) const {
+    if (log_) log_(line);
+  }
+
+  // The increment and stagnation rules end the step only on the rounding floor: below
+  // floor_factor times the floor measured here (NewtonSettings::floor_factor).
+  FloorVerdict check_floor(const NewtonRecord& rec, int it, double load, double norm,
+                           std::string& above_floor, int& negligible_steps) {
+    const bool small_step = it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance;
+    const bool stagnant = !small_step && stagnated_(res_.history, it);
+    if (small_step || stagnant) {
+      res_.rounding_floor = rounding_floor_(u_, load, r_, reference_);
+      const double ceiling = s_.floor_factor * res_.rounding_floor;
+      if (norm <= ceiling) {
+        if (stagnant)
+          say(fmt::format(
+              "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
+              "|du|/|u| <= {:.0e}, within {:.0f} times the floor {:.2e}; the relative tolerance {:.0e} is "
+              "below what this system's conditioning allows",
+              norm, reference_ > 0 ? norm / reference_ : 0.0, s_.stagnation_window, s_.stagnation_increment,
+              s_.floor_factor, res_.rounding_floor, s_.relative_tolerance));
+        res_.stagnated = stagnant;
+        return FloorVerdict::converged;
+      }
+      above_floor = fmt::format(
+          "the {} (|du|/|u| = {:.1e}) with |r| = {:.3e} above the rounding-floor ceiling {:.3e} ({:.0f} "
+          "times the floor {:.2e}): the tangent does not match the residual, or the system is singular or "
+          "badly scaled",
+          small_step ? "steps became negligible" : "iteration stagnated", rec.increment, norm, ceiling,
+          s_.floor_factor, res_.rounding_floor);
+      say("  " + above_floor + "; not converged, iterating on");
+      // A full step that no longer moves u leaves it where it is: iterating on repeats it.
+      if (small_step && ++negligible_steps == 3) return FloorVerdict::stuck;
+    } else {
+      negligible_steps = 0;
+      above_floor.clear();
+    }
+    return FloorVerdict::iterate_on;
+  }
+
+  // One Newton step from iteration it: the linear direction, the line search, and the
+  // move of u, r and norm to the accepted trial; false with res.message set when the
+  // linear solve fails.
+  bool take_step(NewtonRecord& rec, int it, double load, double& norm) {
+    const Eigen::VectorXd rf = dofs_.restrict_free(r_);
+    Eigen::VectorXd dx;
+    try {
+      dx = linear_step_.direction({sys_, dofs_, u_, load, rec.iteration, reference_}, rf, rec, res_);
+    } catch (const std::runtime_error& e) {
+      res_.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load,
+                                 it + 1, e.what());
+      return false;
+    }
+    du_.setZero();
+    dofs_.expand_free(dx, du_);
+    // A full step below the increment tolerance has converged to rounding: the residual
+    // sits on its floor there, so it is taken without a line search (which could only
+    // waste halvings). Otherwise backtrack: halve the step until |r_f| decreases
+    // sufficiently; if none does, keep the smallest step (the next tangent may do
+    // better) and say so.
+    const bool negligible = du_.norm() <= s_.increment_tolerance * u_.norm();
+    double trial_norm = 0.0;
+    const double alpha = backtrack(load, norm, negligible, trial_norm);
+    const double unorm = trial_.norm();
+    rec.step_length = alpha;
+    rec.increment = unorm > 0 ? alpha * du_.norm() / unorm : 0.0;
+    u_ = trial_;
+    r_ = r_trial_;
+    norm = trial_norm;
+    return true;
+  }
+
+  // The backtracking line search along du: the step length taken, with the trial point in
+  // trial_, its residual in r_trial_ and |r_f| there in trial_norm.
+  double backtrack(double load, double norm, bool negligible, double& trial_norm) {
+    double alpha = 1.0;
+    for (int b = 0;; ++b) {
+      trial_ = u_ + alpha * du_;
+      sys_.residual(trial_, load, r_trial_);
+      trial_norm = dofs_.restrict_free(r_trial_).norm();
+      if (negligible ||
+          (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm))
+        break;
+      if (b == s_.max_backtracks) {
+        say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
+        break;
+      }
+      alpha *= 0.5;
+    }
+    return alpha;
+  }
+
+  const NewtonSettings& s_;
+  NonlinearSystem& sys_;
+  const DofMap& dofs_;
+  Eigen::VectorXd& u_;
+  NewtonResult& res_;
+  LinearStep& linear_step_;
+  const std::function<void(const std::string&)>& log_;
+  StagnationRule stagnated_;
+  FloorMeasure rounding_floor_;
+  Eigen::VectorXd r_, r_trial_, trial_, du_;
+  double reference_ = 0;
+  std::chrono::steady_clock::time_point started_;
+};
+
+}  // namespace
+
 NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen::VectorXd& u) {
   NewtonResult res;
   auto say = [&](const std::string& line) {
@@ -89,145 +316,18 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   const std::unique_ptr<LinearStep> linear_step = s_.matrix_free
                                                       ? make_matrix_free_step(s_, sys, symmetric, log_)
                                                       : make_assembled_step(s_, symmetric, log_);
-  Eigen::VectorXd r(n), r_trial(n), trial(n), du(n);
-  double reference = 0;
-  // Each iteration's line carries the time since the solve began: a long solve shows
-  // where it is and how fast it goes (factorisations and Krylov solves are inside).
-  const auto started = std::chrono::steady_clock::now();
-
-  // Newton iterations of one load step (round > 0: solved again after after_step
-  // changed the system); false with res.message set when they fail.
-  auto iterate = [&](int step, double load, int round) -> bool {
-    sys.residual(u, load, r);
-    double norm = dofs.restrict_free(r).norm();
-    reference = std::max(reference, norm);
-    NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
-    bool done = false;
-    std::string above_floor;   // why the increment or stagnation rule did not end the step
-    int negligible_steps = 0;  // consecutive full steps below the increment tolerance, above the ceiling
-    for (int it = 0;; ++it) {
-      if (interrupt_signal() != 0)
-        throw_if_interrupted(
-            fmt::format("during the solve (load step {}/{}, Newton iteration {})", step, s_.load_steps, it));
-      rec.iteration = it;
-      rec.residual = norm;
-      res.history.push_back(rec);
-      say(fmt::format(
-          "  load {:.3g} (step {}/{}{})  iteration {:2d}  |r| = {:.3e}  relative {:.2e}{}  t = {:.1f} s",
-          load, step, s_.load_steps, round > 0 ? fmt::format(", re-solve {}", round) : std::string(), it,
-          norm, reference > 0 ? norm / reference : 0.0,
-          it == 0 ? std::string()
-                  : fmt::format("  step {:.3g}  |du|/|u| = {:.1e}{}", rec.step_length, rec.increment,
-                                rec.linear_iterations ? fmt::format("  {} linear its", rec.linear_iterations)
-                                                      : std::string()),
-          seconds_since(started)));
-      if (!std::isfinite(norm)) {
-        res.message =
-            fmt::format("Newton: the residual is not finite at load {:.3g}, iteration {}", load, it);
-        return false;
-      }
-      if (norm <= s_.relative_tolerance * reference || norm <= s_.absolute_tolerance) {
-        done = true;
-        break;
-      }
-      // The increment and stagnation rules end the step only on the rounding floor: below
-      // floor_factor times the floor measured here (NewtonSettings::floor_factor).
-      const bool small_step = it > 0 && rec.step_length == 1.0 && rec.increment <= s_.increment_tolerance;
-      const bool stagnant = !small_step && stagnated(res.history, it);
-      if (small_step || stagnant) {
-        res.rounding_floor = rounding_floor(sys, dofs, u, load, r, reference);
-        const double ceiling = s_.floor_factor * res.rounding_floor;
-        if (norm <= ceiling) {
-          if (stagnant)
-            say(fmt::format(
-                "  stagnated on the rounding floor: |r| = {:.3e} ({:.2e} of the reference) after {} steps of "
-                "|du|/|u| <= {:.0e}, within {:.0f} times the floor {:.2e}; the relative tolerance {:.0e} is "
-                "below what this system's conditioning allows",
-                norm, reference > 0 ? norm / reference : 0.0, s_.stagnation_window, s_.stagnation_increment,
-                s_.floor_factor, res.rounding_floor, s_.relative_tolerance));
-          res.stagnated = stagnant;
-          done = true;
-          break;
-        }
-        above_floor = fmt::format(
-            "the {} (|du|/|u| = {:.1e}) with |r| = {:.3e} above the rounding-floor ceiling {:.3e} ({:.0f} "
-            "times the floor {:.2e}): the tangent does not match the residual, or the system is singular or "
-            "badly scaled",
-            small_step ? "steps became negligible" : "iteration stagnated", rec.increment, norm, ceiling,
-            s_.floor_factor, res.rounding_floor);
-        say("  " + above_floor + "; not converged, iterating on");
-        // A full step that no longer moves u leaves it where it is: iterating on repeats it.
-        if (small_step && ++negligible_steps == 3) break;
-      } else {
-        negligible_steps = 0;
-        above_floor.clear();
-      }
-      if (it == s_.max_iterations) break;
-      rec = NewtonRecord{step, it + 1, round, load, 0.0, 0.0, 0.0, 0, 0.0};
-      const Eigen::VectorXd rf = dofs.restrict_free(r);
-      Eigen::VectorXd dx;
-      try {
-        dx = linear_step->direction({sys, dofs, u, load, rec.iteration, reference}, rf, rec, res);
-      } catch (const std::runtime_error& e) {
-        res.message = fmt::format("Newton: the linear solve failed at load {:.3g}, iteration {}: {}", load,
-                                  it + 1, e.what());
-        return false;
-      }
-      du.setZero();
-      dofs.expand_free(dx, du);
-      // A full step below the increment tolerance has converged to rounding: the residual
-      // sits on its floor there, so it is taken without a line search (which could only
-      // waste halvings). Otherwise backtrack: halve the step until |r_f| decreases
-      // sufficiently; if none does, keep the smallest step (the next tangent may do
-      // better) and say so.
-      const bool negligible = du.norm() <= s_.increment_tolerance * u.norm();
-      double alpha = 1.0, trial_norm = 0.0;
-      for (int b = 0;; ++b) {
-        trial = u + alpha * du;
-        sys.residual(trial, load, r_trial);
-        trial_norm = dofs.restrict_free(r_trial).norm();
-        if (negligible ||
-            (std::isfinite(trial_norm) && trial_norm <= (1.0 - s_.sufficient_decrease * alpha) * norm))
-          break;
-        if (b == s_.max_backtracks) {
-          say(fmt::format("  line search found no decrease after {} halvings; taking step {:.3g}", b, alpha));
-          break;
-        }
-        alpha *= 0.5;
-      }
-      const double unorm = trial.norm();
-      rec.step_length = alpha;
-      rec.increment = unorm > 0 ? alpha * du.norm() / unorm : 0.0;
-      u = trial;
-      r = r_trial;
-      norm = trial_norm;
-    }
-    if (!done) {
-      const int its = res.history.back().iteration;
-      res.message =
-          above_floor.empty()
-              ? fmt::format(
-                    "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
-                    "{:.2e} of the reference {:.3e} (tolerance {:.1e}); try more load steps or more "
-                    "iterations",
-                    load, step, s_.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
-                    s_.relative_tolerance)
-              : fmt::format(
-                    "Newton did not converge at load {:.3g} (step {}/{}) in {} iterations: |r| = {:.3e}, "
-                    "{:.2e} of the reference {:.3e} (tolerance {:.1e}); {}",
-                    load, step, s_.load_steps, its, norm, reference > 0 ? norm / reference : 0.0, reference,
-                    s_.relative_tolerance, above_floor);
-      say(res.message);
-      return false;
-    }
-    return true;
-  };
+  LoadStepIterations iterations(
+      s_, sys, dofs, u, res, *linear_step, log_,
+      [this](const std::vector<NewtonRecord>& history, int it) { return stagnated(history, it); },
+      [&](const Eigen::VectorXd& at, double load, const Eigen::VectorXd& r, double reference) {
+        return rounding_floor(sys, dofs, at, load, r, reference);
+      });
 
   for (int step = 1; step <= s_.load_steps; ++step) {
     const double load = static_cast<double>(step) / s_.load_steps;
     dofs.apply_prescribed(u, load);
     for (int round = 0;; ++round) {
-      if (!iterate(step, load, round)) return res;
+      if (!iterations.run(step, load, round)) return res;
       if (!s_.after_step) break;
       const long long changes = s_.after_step(step, load, u);
       if (changes == 0) break;

@@ -79,21 +79,22 @@ SeriesOrder fit_series(const StudySpec& spec, const std::vector<const StudyPoint
     o.paper = it->second;
   return o;
 }
-}  // namespace
 
-std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::vector<StudyPoint>& points,
-                                            const std::string& out, bool quick) {
-  // Series (in first-seen order) and their orders.
-  std::vector<std::string> keys;
-  std::map<std::string, std::vector<const StudyPoint*>> series;
+// Points grouped by series: the series keys in first-seen order and each series' points.
+using SeriesMap = std::map<std::string, std::vector<const StudyPoint*>>;
+void group_series(const std::vector<StudyPoint>& points, std::vector<std::string>& keys, SeriesMap& series) {
   for (const auto& p : points) {
     const std::string key = paper_key(p.problem, p.law, p.influence, p.ratio);
     if (!series.count(key)) keys.push_back(key);
     series[key].push_back(&p);
   }
-  // Each series once unsmoothed, then once per smoothing its points recorded.
+}
+
+// Fits each series once unsmoothed, then once per smoothing its points recorded; collects
+// every smoothing seen (first-seen order) for the columns of points.csv.
+std::vector<SeriesOrder> fit_all_series(const StudySpec& spec, const std::vector<std::string>& keys,
+                                        SeriesMap& series, std::vector<std::string>& all_smoothings) {
   std::vector<SeriesOrder> orders;
-  std::vector<std::string> all_smoothings;
   for (const auto& key : keys) {
     auto pts = series[key];
     std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->h > b->h; });
@@ -102,6 +103,12 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
       for (const auto& name : p->smoothing) add_once(smoothings, name), add_once(all_smoothings, name);
     for (const auto& smoothing : smoothings) orders.push_back(fit_series(spec, pts, smoothing));
   }
+  return orders;
+}
+
+// The text of points.csv: one row per point, with the frontier flag and a column per smoothing.
+std::string points_csv(const std::vector<StudyPoint>& points,
+                       const std::vector<std::string>& all_smoothings) {
   const auto best = frontier(points);
   std::ostringstream csv;
   csv << "problem,law,influence,ratio,count,h,converged,error,particles,nonzeros,setup_s,assembly_s,solve_s,"
@@ -123,9 +130,12 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
     }
     csv << "\n";
   }
-  write_file_atomically((fs::path(out) / "points.csv").string(), csv.str());
+  return csv.str();
+}
 
-  std::ostringstream md;
+// orders.md's heading and its table of fitted orders next to the paper's.
+void write_orders_table(std::ostringstream& md, const StudySpec& spec, const std::vector<SeriesOrder>& orders,
+                        bool quick) {
   md << "# Orders of convergence\n\nFitted by least squares on log e against log h (paper 000 eq. 37) from `"
      << spec.file << "`" << (quick ? " (quick sweep)" : "") << "; `fine` fits the finest " << spec.fine_points
      << " resolutions only. Paper: paper 000's tables where it reports the series; **bold** marks an order "
@@ -143,7 +153,11 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
                       std::isfinite(o.min_error) ? fmt::format("{:.4g}", o.min_error) : "",
                       number(o.paper.order, "{:.4f}"), number(o.paper.min_error, "{:.3f}"));
   }
-  // Single points the paper reports (e.g. its Table 7) next to ours.
+}
+
+// Single points the paper reports (e.g. its Table 7) next to ours; nothing when it reports none.
+void write_single_points(std::ostringstream& md, const StudySpec& spec,
+                         const std::vector<StudyPoint>& points) {
   std::ostringstream single;
   for (const auto& p : points) {
     std::vector<std::string> smoothings{""};
@@ -160,7 +174,10 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
           "paper |\n"
           "|---|---|---|---|---|---|---|---|\n"
        << single.str();
-  // What the finest point of each series cost, and which solver reached it.
+}
+
+// What the finest point of each series cost, and which solver reached it.
+void write_finest_cost(std::ostringstream& md, const std::vector<std::string>& keys, SeriesMap& series) {
   md << "\n## Cost of the finest point of each series\n\n| problem | law | influence | delta/h | n | "
         "particles | "
         "solver | Newton | Krylov | nonzeros | seconds | peak MiB "
@@ -174,6 +191,23 @@ std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::ve
                       p->converged ? p->solver : "FAILED", p->newton_iterations, p->krylov_iterations,
                       p->nonzeros, p->total_seconds, memory(p->peak_rss_mb));
   }
+}
+}  // namespace
+
+std::vector<SeriesOrder> write_study_report(const StudySpec& spec, const std::vector<StudyPoint>& points,
+                                            const std::string& out, bool quick) {
+  // Series (in first-seen order) and their orders.
+  std::vector<std::string> keys;
+  SeriesMap series;
+  group_series(points, keys, series);
+  std::vector<std::string> all_smoothings;
+  std::vector<SeriesOrder> orders = fit_all_series(spec, keys, series, all_smoothings);
+  write_file_atomically((fs::path(out) / "points.csv").string(), points_csv(points, all_smoothings));
+
+  std::ostringstream md;
+  write_orders_table(md, spec, orders, quick);
+  write_single_points(md, spec, points);
+  write_finest_cost(md, keys, series);
   write_file_atomically((fs::path(out) / "orders.md").string(), md.str());
   return orders;
 }
