@@ -8,7 +8,7 @@
 // (center and points, kernel_abi.hpp) and local tangent M = d f_loc / d y_loc therefore give
 //   nodal forces   f_nodes = P^T f_loc              (chain rule, exact),
 //   nodal tangent  K_nodes = P^T M P                (P does not depend on u; formed from the
-//                                                    tangent factors without M, gauss_point_assembler.cpp),
+//                                                    tangent factors without M, gauss_point_gather.hpp),
 //   product        K v     = P^T jvp(P v),
 // and the stiffness couples every two nodes of {i} U supports: the sparsity pattern is the
 // family pattern of those node sets (reach_bonds), wider than the bond one by r_w on each
@@ -104,6 +104,7 @@ class GaussPointAssembler final : public ForceOperator {
   void for_each_family_coloured(const char* stage, Body&& body) const;
   int thread_count() const;
   void gather_points(const double* u, double* ug) const;
+  std::vector<double> point_displacements(const double* u) const;  // gather_points, empty without u
   void add_mapped(const double* per_point, double scale, double* out) const;
 
   const Particles* particles_;
