@@ -85,14 +85,11 @@ std::optional<std::string> backend_refusal(const Scene& scene, const RunOptions&
   return std::nullopt;
 }
 
-int run_scene(const RunOptions& options) {
-  const std::string& scene_path = options.scene_path;
-  const std::string& out_dir = options.out_dir;
-  const std::string& restart = options.restart;
-  install_interrupt_handlers();
-  Scene scene;
+// Reads the scene and applies the command line to it; 0, or the exit code of a refusal
+// (printed): bad input, too little memory, a backend this run cannot use.
+int read_run_scene(const RunOptions& options, Scene& scene) {
   try {
-    scene = read_scene(scene_path);
+    scene = read_scene(options.scene_path);
   } catch (const SceneError& e) {
     fmt::print(stderr, "pd run: {}\n", e.what());
     return 2;
@@ -101,19 +98,60 @@ int run_scene(const RunOptions& options) {
     fmt::print(stderr, "pd run: {}\n", *refusal);
     return 2;
   }
-  if (!out_dir.empty()) scene.output.directory = out_dir;
-  if (!restart.empty()) {
+  if (!options.out_dir.empty()) scene.output.directory = options.out_dir;
+  if (!options.restart.empty()) {
     if (!scene.dynamics) {
       fmt::print(stderr, "pd run: --restart needs a scene with a dynamics section\n");
       return 2;
     }
-    scene.dynamics->restart = restart;
+    scene.dynamics->restart = options.restart;
   }
-  const bool petsc = scene.solver.backend == Backend::petsc;
   if (const auto refusal = backend_refusal(scene, options)) {
-    fmt::print(stderr, "pd run: {}: {}\n", scene_path, *refusal);
+    fmt::print(stderr, "pd run: {}: {}\n", options.scene_path, *refusal);
     return 2;
   }
+  return 0;
+}
+
+// Build the model (planned by its driver), run, write (rank 0 writes a static run's files).
+RunSummary solve_scene(const Scene& scene, int rank, const RunLog& log) {
+  if (scene.dynamics) {
+    Model model = build_dynamic_model(scene);
+    DynamicRun run = prepare_dynamic_run(model, scene, log);
+    return run_dynamic(run, true);  // serially or over the ranks, as the solver plan says
+  }
+  StaticRun run;
+  Model model = build_static_model(scene, run);
+  describe_static_run(run, model, scene, log);
+  run_static(run, model, scene, log);
+  if (rank == 0) write_static_outputs(run, model, scene);
+  return run.summary;
+}
+
+void log_leftovers(const StagingDirectory& staging, const std::string& directory, const RunLog& log) {
+  for (const std::string& old : staging.leftovers())
+    log(
+        fmt::format("  warning: {}: the files of an earlier run into {} that did not finish (killed?): "
+                    "its checkpoint, "
+                    "if any, can resume it with --restart; remove the directory when it is not needed",
+                    old, directory));
+}
+
+// The timings and the result files, named in the published directory.
+void print_results(RunSummary& s, const StagingDirectory* staging, const std::string& directory) {
+  for (auto& f : s.files)
+    if (staging && f.rfind(staging->path() + "/", 0) == 0) f = directory + f.substr(staging->path().size());
+  fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
+             s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds,
+             s.output_seconds);
+  for (const auto& f : s.files) fmt::print("  {}\n", f);
+}
+
+int run_scene(const RunOptions& options) {
+  const std::string& scene_path = options.scene_path;
+  install_interrupt_handlers();
+  Scene scene;
+  if (const int refused = read_run_scene(options, scene)) return refused;
   RunSummary s;
   const bool dynamic = scene.dynamics.has_value();
   const std::string directory = scene.output.directory;
@@ -128,39 +166,23 @@ int run_scene(const RunOptions& options) {
   try {
     // Every rank solves; rank 0 alone claims the directory, logs and writes the files.
     std::optional<DistributedSession> session;
-    if (petsc) session.emplace(std::vector<std::string>{scene.solver.petsc_options, options.petsc_options});
+    if (scene.solver.backend == Backend::petsc)
+      session.emplace(std::vector<std::string>{scene.solver.petsc_options, options.petsc_options});
     rank = session ? session->rank() : 0;
     if (rank == 0) {
       claim.emplace(directory);  // writable and ours, before any solve
       staging.emplace(directory);
       scene.output.directory = staging->path();
     }
-    const auto log = [rank](const std::string& line) {
+    const RunLog log = [rank](const std::string& line) {
       if (rank != 0) return;
       fmt::print("{}\n", line);
       std::fflush(stdout);
     };
     log(version_line());
-    if (staging)
-      for (const std::string& old : staging->leftovers())
-        log(
-            fmt::format("  warning: {}: the files of an earlier run into {} that did not finish (killed?): "
-                        "its checkpoint, "
-                        "if any, can resume it with --restart; remove the directory when it is not needed",
-                        old, directory));
+    if (staging) log_leftovers(*staging, directory, log);
     if (session) log(fmt::format("PETSc backend on {} MPI process(es)", session->size()));
-    // Read (above), build the model, plan the solver, run, write.
-    if (scene.dynamics) check_dynamic_scene(scene);
-    Model model = build_model(scene);
-    if (scene.dynamics) {
-      DynamicRun run = prepare_dynamic_run(model, scene, log);
-      s = run_dynamic(run, true);  // serially or over the ranks, as the solver plan says
-    } else {
-      StaticRun run = plan_static_run(model, scene, log);
-      run_static(run, model, scene, log);
-      if (rank == 0) write_static_outputs(run, model, scene);
-      s = run.summary;
-    }
+    s = solve_scene(scene, rank, log);
   } catch (const SceneError& e) {  // problems found after reading, e.g. an empty region
     // Those found while setting up the body (a horizon beyond the body, overflowing
     // moduli) know no file: name it, so every bad-input message starts with it.
@@ -183,12 +205,7 @@ int run_scene(const RunOptions& options) {
   }
   if (rank != 0) return 0;
   publish();
-  for (auto& f : s.files)
-    if (staging && f.rfind(staging->path() + "/", 0) == 0) f = directory + f.substr(staging->path().size());
-  fmt::print("done in {:.3f} s (setup {:.3f}, solve {:.3f}, output {:.3f}); results:\n",
-             s.setup_seconds + s.solve_seconds + s.output_seconds, s.setup_seconds, s.solve_seconds,
-             s.output_seconds);
-  for (const auto& f : s.files) fmt::print("  {}\n", f);
+  print_results(s, staging ? &*staging : nullptr, directory);
   return 0;
 }
 }  // namespace

@@ -1,4 +1,5 @@
-// build_model: scene -> particles, bonds, law parameters, family checks.
+// The model in two phases: the body (particles, bonds, law parameters, family checks,
+// quadrature, dofs), then the assemblers the plan asks for (the effects: model_effects.cpp).
 #include "model/model.hpp"
 
 #include <fmt/core.h>
@@ -37,115 +38,138 @@ std::optional<Box2> obq_cut_body(const Scene& scene) {
   for (int a = 0; a < 2; ++a) body.lo[a] = scene.lo[a] - grow, body.hi[a] = scene.hi[a] + grow;
   return body;
 }
-}  // namespace
 
-Model build_model(const Scene& scene) {
-  const auto t0 = std::chrono::steady_clock::now();
-  Model m;
-  m.law = abi::find_law(scene.law);
-  m.influence = abi::find_influence(scene.influence);
-  if (!m.law || !m.influence) throw std::invalid_argument("unknown law or influence function");
-  m.particles = discretize(scene);
-  m.bonds =
-      scene.particle_spacing.empty()
-          ? find_quadrature_bonds(m.particles, scene.delta(), scene.h, scene.quadrature, m.influence->weight)
-          : find_block_bonds(m.particles, scene.particle_horizons(), scene.particle_spacing, scene.quadrature,
-                             m.influence->weight);  // domain.blocks
-  m.bond_count = m.bonds.bond_count() / 2;
-  std::vector<int> crossed;
-  m.cut_by_cracks = cut_bonds(scene.cracks, m.particles, m.bonds, &crossed) / 2;
-  m.warnings = scene.warnings;
-  for (std::size_t c = 0; c < scene.cracks.size(); ++c)
-    if (crossed[c] == 0)
-      m.warnings.push_back(scene.cracks[c].where +
-                           ": the crack crosses no bond (it lies outside the body, in a hole, "
-                           "or between particles closer than a spacing): it has no effect");
-  const Particles& p = m.particles;
+void check_neighbours(const Particles& p, const Bonds& bonds) {
   for (int i = 0; i < p.size(); ++i)
-    if (m.bonds.family_size(i) == 0)
+    if (bonds.family_size(i) == 0)
       throw SceneError(fmt::format("particle {} at ({:.6g}, {:.6g}) has no neighbour within the horizon", i,
                                    p.x[i * p.dim], p.x[i * p.dim + 1]));
-  m.quality = check_family_quality(p, m.bonds, m.influence->weight, m.influence->name, scene.h);
-  for (const MaterialSpec& mat : scene.materials)
-    m.params.push_back(law_parameters(*m.law, mat.elastic, mat.plane, mat.parameters));
-  if (scene.compensation) {
-    const CompensationInputs in{m.law,   &m.params,        scene.delta(),
-                                scene.h, scene.quadrature, m.influence->weight};
-    apply_compensation(m.bonds, compensation_factors(m.particles, m.bonds, in));
-  }
-  if (scene.surface_correction) {
-    if (!scene.particle_spacing.empty())
-      throw SceneError(scene.file +
-                       ": domain.surface_correction: not with domain.blocks (the factors compare each "
-                       "family with the full family of one regular lattice)");
-    const SurfaceCorrectionInputs in{
-        m.law,
-        &m.params,
-        scene.delta(),
-        scene.h,
-        scene.quadrature,
-        m.influence->weight,
-        scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
-    apply_surface_correction(m.bonds, surface_correction_factors(m.particles, m.bonds, in),
-                             m.law->has_dilatation_sum);
-  }
-  if (is_obq(scene.quadrature)) {
-    const std::optional<Box2> body = obq_cut_body(scene);
-    ReproducingSpace space =
-        scene.obq_space == ObqSpace::paper001_odd ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
-    if (scene.obq_space == ObqSpace::law) try {
-        space = law_reproducing_space(*m.law, scene.dim, m.influence->weight, m.influence->name);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());
-      }
-    m.collocation = std::make_unique<Collocation>(
-        make_obq_collocation(m.particles, m.bonds, space, m.collocation_description, body ? &*body : nullptr,
-                             scene.obq_symmetric));
-  }
-  if (scene.gauss_points > 0) {
-    // The Gauss bonds are not cut by cracks and do not break; the cells are of one spacing.
-    if (!scene.cracks.empty() || scene.damage || !scene.particle_spacing.empty())
-      throw SceneError(scene.file +
-                       ": domain.gauss_points: not with cracks, damage or domain.blocks (the Gauss bonds "
-                       "are not cut and do not break; the cells need one spacing)");
-    GaussPointOptions o;
-    o.per_axis = scene.gauss_points;
-    o.support = scene.gauss_support;
-    m.gauss_points = std::make_unique<GaussPoints>(
-        build_gauss_points(m.particles, scene.h, scene.delta(), m.influence->weight, o));
-  }
-  for (const MaterialSpec& mat : scene.materials)
-    warn_if_poisson_ratio_differs(*m.law, mat.elastic, mat.plane, mat.name);
-  m.dofs = scene_constraints(scene, m.particles);
-  m.build_seconds = seconds_since(t0);
-  return m;
 }
 
-AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads) {
+// The scene's pre-cracks cut the bonds; a crack that cuts none is named in the warnings.
+int cut_by_pre_cracks(const Scene& scene, const Particles& particles, Bonds& bonds,
+                      std::vector<std::string>& warnings) {
+  std::vector<int> crossed;
+  const int cut = cut_bonds(scene.cracks, particles, bonds, &crossed) / 2;
+  for (std::size_t c = 0; c < scene.cracks.size(); ++c)
+    if (crossed[c] == 0)
+      warnings.push_back(scene.cracks[c].where +
+                         ": the crack crosses no bond (it lies outside the body, in a hole, "
+                         "or between particles closer than a spacing): it has no effect");
+  return cut;
+}
+
+// domain.surface_correction (paper 003): scale the bonds of the families cut by a surface.
+void correct_surface_bonds(const Scene& scene, const DiscretizedBody& b, Bonds& bonds) {
+  if (!scene.particle_spacing.empty())
+    throw SceneError(scene.file +
+                     ": domain.surface_correction: not with domain.blocks (the factors compare each "
+                     "family with the full family of one regular lattice)");
+  const SurfaceCorrectionInputs in{
+      b.law,
+      &b.params,
+      scene.delta(),
+      scene.h,
+      scene.quadrature,
+      b.influence->weight,
+      scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
+  apply_surface_correction(bonds, surface_correction_factors(b.particles, bonds, in),
+                           b.law->has_dilatation_sum);
+}
+
+// domain.quadrature: obq / obq_cut (paper 001): the collocation weights on the bonds.
+std::unique_ptr<Collocation> obq_collocation(const Scene& scene, const DiscretizedBody& b,
+                                             std::string& description) {
+  const std::optional<Box2> body = obq_cut_body(scene);
+  ReproducingSpace space =
+      scene.obq_space == ObqSpace::paper001_odd ? paper001_odd_space(scene.dim) : paper001_space(scene.dim);
+  if (scene.obq_space == ObqSpace::law) try {
+      space = law_reproducing_space(*b.law, scene.dim, b.influence->weight, b.influence->name);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(scene.file + ": domain.obq_space: " + e.what());
+    }
+  return std::make_unique<Collocation>(make_obq_collocation(b.particles, b.bonds, space, description,
+                                                            body ? &*body : nullptr, scene.obq_symmetric));
+}
+
+// domain.gauss_points (paper 002 §3.3). The Gauss bonds are not cut by cracks and do not
+// break; the cells are of one spacing.
+std::unique_ptr<GaussPoints> gauss_points_of(const Scene& scene, const DiscretizedBody& b) {
+  if (!scene.cracks.empty() || scene.damage || !scene.particle_spacing.empty())
+    throw SceneError(scene.file +
+                     ": domain.gauss_points: not with cracks, damage or domain.blocks (the Gauss bonds "
+                     "are not cut and do not break; the cells need one spacing)");
+  GaussPointOptions o;
+  o.per_axis = scene.gauss_points;
+  o.support = scene.gauss_support;
+  return std::make_unique<GaussPoints>(
+      build_gauss_points(b.particles, scene.h, scene.delta(), b.influence->weight, o));
+}
+}  // namespace
+
+DiscretizedBody::DiscretizedBody(const Scene& scene) {
+  const auto t0 = std::chrono::steady_clock::now();
+  law = abi::find_law(scene.law);
+  influence = abi::find_influence(scene.influence);
+  if (!law || !influence) throw std::invalid_argument("unknown law or influence function");
+  particles = discretize(scene);
+  bonds = scene.particle_spacing.empty()
+              ? find_quadrature_bonds(particles, scene.delta(), scene.h, scene.quadrature, influence->weight)
+              : find_block_bonds(particles, scene.particle_horizons(), scene.particle_spacing,
+                                 scene.quadrature, influence->weight);  // domain.blocks
+  bond_count = bonds.bond_count() / 2;
+  warnings = scene.warnings;
+  cut_by_cracks = cut_by_pre_cracks(scene, particles, bonds, warnings);
+  check_neighbours(particles, bonds);
+  quality = check_family_quality(particles, bonds, influence->weight, influence->name, scene.h);
+  for (const MaterialSpec& mat : scene.materials)
+    params.push_back(law_parameters(*law, mat.elastic, mat.plane, mat.parameters));
+  if (scene.compensation) {
+    const CompensationInputs in{law, &params, scene.delta(), scene.h, scene.quadrature, influence->weight};
+    apply_compensation(bonds, compensation_factors(particles, bonds, in));
+  }
+  if (scene.surface_correction) correct_surface_bonds(scene, *this, bonds);
+  if (is_obq(scene.quadrature)) collocation = obq_collocation(scene, *this, collocation_description);
+  if (scene.gauss_points > 0) gauss_points = gauss_points_of(scene, *this);
+  for (const MaterialSpec& mat : scene.materials)
+    warn_if_poisson_ratio_differs(*law, mat.elastic, mat.plane, mat.name);
+  dofs = scene_constraints(scene, particles);
+  build_seconds = seconds_since(t0);
+}
+
+Model::Model(const Scene& scene, const Planner& planner) : DiscretizedBody(scene) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ModelPlan plan = planner(*this);
+  // The short horizon first: the damage effect breaks its bonds with the real ones.
+  if (plan.short_delta) build_short_horizon(scene, *plan.short_delta);
+  build_assembler(scene, plan);
+  build_effects(scene);
+  build_seconds += seconds_since(t0);
+}
+
+void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
   AssemblerOptions options;
   // A scene with damage needs the damaged variant from the start: bonds may break.
-  options.intact = model.cut_by_cracks == 0 && !scene.damage;
-  options.matrix = matrix;
-  options.threads = threads;
-  options.collocation = model.collocation.get();
-  options.gauss_points = model.gauss_points.get();
-  model.assembler = make_force_operator(model.particles, model.bonds, *model.law, model.params, options);
-  model.assembler_options = options;
-  return options;
+  options.intact = cut_by_cracks == 0 && !scene.damage;
+  options.matrix = plan.matrix;
+  options.threads = plan.threads;
+  options.collocation = collocation.get();
+  options.gauss_points = gauss_points.get();
+  assembler = make_force_operator(particles, bonds, *law, params, options);
+  assembler_options = options;
 }
 
-void attach_short_horizon(Model& model, const Scene& scene, double short_delta) {
-  if (model.collocation) {
+void Model::build_short_horizon(const Scene& scene, double short_delta) {
+  if (collocation) {
     // OBQ collocation (paper 001): the volume rule's stiffness on a shorter horizon is not
     // an approximation of this operator -- on scenes/paper001_hole.yaml it left matrix-free
     // GMRES at a relative residual of 1.8e-2 after 20 000 iterations, and PETSc's Krylov
     // solve likewise, even with an exact factor of it. The preconditioner is the collocation
     // tangent itself (its own bonds and weights): a factor of it solves in one iteration.
     AssemblerOptions options;
-    options.intact = model.cut_by_cracks == 0 && !scene.damage;
-    options.collocation = model.collocation.get();
-    model.approximation =
-        std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params, options);
+    options.intact = cut_by_cracks == 0 && !scene.damage;
+    options.collocation = collocation.get();
+    approximation = std::make_unique<FamilyAssembler>(particles, bonds, *law, params, options);
     return;
   }
   // The same law's stiffness on a horizon of ratio h: far fewer nonzeros, and spectrally
@@ -157,16 +181,15 @@ void attach_short_horizon(Model& model, const Scene& scene, double short_delta) 
     std::vector<double> delta = scene.particle_horizons();
     for (std::size_t i = 0; i < delta.size(); ++i)
       delta[i] = std::min(delta[i], scene.solver.preconditioner_ratio * scene.particle_spacing[i]);
-    model.short_bonds = find_bonds_per_particle(model.particles, delta, model.influence->weight);
+    short_bonds = find_bonds_per_particle(particles, delta, influence->weight);
   } else {
-    model.short_bonds = find_bonds(model.particles, short_delta, model.influence->weight);
+    short_bonds = find_bonds(particles, short_delta, influence->weight);
   }
-  drop_negligible_bonds(model.short_bonds);
-  const int cut = cut_bonds(scene.cracks, model.particles, model.short_bonds);
+  drop_negligible_bonds(short_bonds);
+  const int cut = cut_bonds(scene.cracks, particles, short_bonds);
   AssemblerOptions options;
   options.intact = cut == 0 && !scene.damage;
-  model.approximation = std::make_unique<FamilyAssembler>(model.particles, model.short_bonds, *model.law,
-                                                          model.params, options);
+  approximation = std::make_unique<FamilyAssembler>(particles, short_bonds, *law, params, options);
 }
 
 }  // namespace pd

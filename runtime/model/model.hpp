@@ -1,12 +1,20 @@
-// The model a run solves: the law and influence, the particles, the bonds (cut by the
-// pre-cracks), the per-material law parameters, the family checks and the dof map (the
-// Dirichlet conditions, with their load path and motion in time), built once from
-// a const Scene by build_model; the assembler is added by the driver once the solver
-// plan has said whether it needs a matrix (attach_assembler), then the effects
-// (attach_effects), which read the assembler. The static and dynamic drivers both start from it.
+// The model a run solves, built complete in two phases by one constructor and not
+// added to afterwards:
+//  1. DiscretizedBody: the law and influence, the particles, the bonds (cut by the
+//     pre-cracks), the per-material law parameters, the family checks, the quadrature
+//     (OBQ collocation or Gauss points) and the dof map (the Dirichlet conditions, with
+//     their load path and motion in time) -- everything a solver plan reads;
+//  2. Model: what the plan chose (ModelPlan) -- the assembler (with a matrix or
+//     matrix-free), the short-horizon approximation for the preconditioner -- and then the
+//     scene's effects, which read the assemblers and bonds.
+// The drivers pass the planner (run/static_run.hpp: build_static_model; a dynamic run's
+// plan is fixed: build_dynamic_model) and only read and step the result; the run's state that changes (u, v,
+// the bonds' damage through the damage effect) is the run's.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,60 +35,76 @@ class CriticalStretchDamage;
 class Inertia;
 class ViscousDamping;
 
-struct Model {
+// Phase 1: the discretized body and its quadrature, from the scene alone.
+struct DiscretizedBody {
+  // Throws std::invalid_argument on an unknown law or influence, std::runtime_error
+  // naming a particle without neighbours and SceneError naming a condition whose region is empty.
+  explicit DiscretizedBody(const Scene& scene);
+
   const abi::LawDescriptor* law = nullptr;
   const abi::InfluenceDescriptor* influence = nullptr;
   Particles particles;
   Bonds bonds;
   std::vector<std::vector<double>> params;  // per material, in law.param_names order
   FamilyQualityReport quality;
-  double build_seconds = 0;  // build_model's time (the run's setup time starts with it)
+  double build_seconds = 0;  // the model's build time, both phases (the run's setup time starts with it)
   // The constrained dofs and their values at full load (constraints/constraints.hpp), with the
   // load path of a rotation and each dof's function of time (DofMap::apply_motion).
   DofMap dofs;
   long long bond_count = 0;           // each bond once (not per direction)
   int cut_by_cracks = 0;              // bonds the scene's pre-cracks cut, each once
   std::vector<std::string> warnings;  // the scene's and the set-up's (a crack that crosses no bond)
-  // domain.quadrature: obq — the per-bond weights and collocation assembly (eq. 2.13 of
+  // domain.quadrature: obq -- the per-bond weights and collocation assembly (eq. 2.13 of
   // paper 001), and the log line that says how many families kept the volume rule.
   std::unique_ptr<Collocation> collocation;
   std::string collocation_description;
   // domain.gauss_points (paper 002 §3.3): the points, their MLS shape functions and the
   // Gauss families the assembler integrates over instead of the bonds.
   std::unique_ptr<GaussPoints> gauss_points;
-  std::unique_ptr<ForceOperator> assembler;  // attach_assembler (declared after what it reads)
+};
+
+// What a solver plan asks of phase 2.
+struct ModelPlan {
+  bool matrix = false;  // the assembler keeps a sparsity pattern (factorisation, PETSc's matrix)
+  int threads = 0;      // the assembler's OpenMP threads (0: OpenMP's default)
+  // The short-horizon approximation for the matrix-free path's preconditioner: the bonds
+  // within this horizon (negligible ones dropped, cut by the same cracks); on a body of
+  // blocks each particle's own min(delta_i, preconditioner_ratio h_i). With OBQ collocation
+  // the approximation is the collocation tangent itself.
+  std::optional<double> short_delta;
+};
+
+// Phase 2 on top of phase 1. Neither copied nor moved: the effects and assemblers hold
+// references into the body (a prvalue, as build_model returns, is built in place).
+struct Model : DiscretizedBody {
+  using Planner = std::function<ModelPlan(const DiscretizedBody&)>;
+  // Builds the body, asks `planner` what it needs, then builds that and the scene's effects.
+  Model(const Scene& scene, const Planner& planner);
+  Model(const Scene& scene, const ModelPlan& plan)
+      : Model(scene, Planner([plan](const auto&) { return plan; })) {}
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  std::unique_ptr<ForceOperator> assembler;  // the intact kernels unless a bond is cut or can break
   AssemblerOptions assembler_options;        // the options it was built with
-  // Static matrix-free runs with the short-horizon preconditioner (attach_short_horizon):
-  // the same law on delta = ratio h, whose factorised stiffness preconditions the solve.
+  // ModelPlan::short_delta: the same law on a shorter horizon, whose factorised stiffness
+  // preconditions the matrix-free solve (empty bonds and null without it).
   Bonds short_bonds;
   std::unique_ptr<ForceOperator> approximation;
-  // attach_effects: every effect the scene calls for, in the order the run log lists
-  // them (loads, crack pressure, body forces, pre-cracks, damage evolution; a dynamic
-  // run's inertia and viscous damping last). Declared last: they read the assemblers and bonds above.
+  // Every effect the scene calls for, in the order the run log lists them (loads, crack
+  // pressure, body forces, pre-cracks, damage evolution; a dynamic run's inertia and
+  // viscous damping last; model/model_effects.cpp). Declared last: they read the assemblers and bonds above.
   std::vector<std::unique_ptr<Effect>> effects;
   const CriticalStretchDamage* damage = nullptr;  // the damage effect's rule (null without `damage`)
   const Inertia* inertia = nullptr;  // dynamic runs: rho V (explicit) or the fictitious density (relaxation)
   const ViscousDamping* damping = nullptr;  // explicit dynamics with dynamics.damping > 0
+
+ private:
+  void build_assembler(const Scene& scene, const ModelPlan& plan);
+  void build_short_horizon(const Scene& scene, double short_delta);
+  void build_effects(const Scene& scene);  // model/model_effects.cpp
 };
 
-// Throws std::invalid_argument on an unknown law or influence, std::runtime_error
-// naming a particle without neighbours and SceneError naming a condition whose region is empty.
-Model build_model(const Scene& scene);
-
-// The assembler over the model's particles and bonds: the intact kernels (alpha folded
-// to 1) unless a bond is cut or can break (`damage`), with a matrix pattern only when
-// `matrix`. Returns the options it used.
-AssemblerOptions attach_assembler(Model& model, const Scene& scene, bool matrix, int threads = 0);
-
-// The short-horizon approximation (bonds within short_delta, negligible ones dropped,
-// cut by the same cracks) for the matrix-free path's preconditioner. On a body of blocks
-// each particle's own min(delta_i, preconditioner_ratio h_i) instead of short_delta.
-void attach_short_horizon(Model& model, const Scene& scene, double short_delta);
-
-// The scene's effects (model/model_effects.cpp), after attach_assembler (and
-// attach_short_horizon when used). A dynamic scene's loads carry their time functions;
-// its inertia (and damping) come last, from the stiffness row sums at the reference
-// configuration (a temporary assembler with a matrix).
-void attach_effects(Model& model, const Scene& scene);
-
+// The model with a fixed plan (the tests' and tools' shorthand; the drivers plan).
+inline Model build_model(const Scene& scene, const ModelPlan& plan = {}) { return Model(scene, plan); }
 }  // namespace pd

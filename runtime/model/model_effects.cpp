@@ -1,4 +1,4 @@
-// attach_effects: the list of the scene's effects, in the order the run log names them.
+// Model::build_effects: the list of the scene's effects, in the order the run log names them.
 // A new effect is one file in effects/ plus one line here (and its scene key).
 #include <fmt/core.h>
 
@@ -46,7 +46,6 @@ void add_timed_loads(Model& m, const Scene& s) {
 // damping, or relaxation's fictitious density; both from the row sums of the stiffness at
 // the reference configuration (ForceOperator::stiffness_row_sums).
 void add_inertia(Model& m, const Scene& s) {
-  if (!m.assembler) throw std::logic_error("add_inertia: attach the assembler first");
   const std::vector<double> rows = m.assembler->stiffness_row_sums(nullptr);
   if (s.dynamics->method == DynamicsMethod::explicit_verlet) {
     std::unique_ptr<Inertia> inertia = make_inertia(s, m.particles, rows);
@@ -63,19 +62,18 @@ void add_inertia(Model& m, const Scene& s) {
 }
 }  // namespace
 
-void attach_effects(Model& m, const Scene& s) {
-  if (!m.assembler) throw std::logic_error("attach_effects: attach the assembler first");
+void Model::build_effects(const Scene& s) {
   if (s.dynamics)
-    add_timed_loads(m, s);
+    add_timed_loads(*this, s);
   else
-    add_static_loads(m, s);
-  add(m.effects, make_pre_cracks(m.cut_by_cracks));
-  DamageEffect damage =
-      make_damage_evolution(s, DamageBody{m.particles, *m.law, m.params[0], *m.influence}, m.bonds,
-                            *m.assembler, m.approximation ? &m.short_bonds : nullptr, m.approximation.get());
-  m.damage = damage.rule;
-  add(m.effects, std::move(damage.effect));
-  if (s.dynamics) add_inertia(m, s);
+    add_static_loads(*this, s);
+  add(effects, make_pre_cracks(cut_by_cracks));
+  DamageEffect evolution =
+      make_damage_evolution(s, DamageBody{particles, *law, params[0], *influence}, bonds, *assembler,
+                            approximation ? &short_bonds : nullptr, approximation.get());
+  damage = evolution.rule;
+  add(effects, std::move(evolution.effect));
+  if (s.dynamics) add_inertia(*this, s);
 }
 
 }  // namespace pd

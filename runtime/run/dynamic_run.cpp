@@ -15,6 +15,7 @@
 #include "input/yaml_keys.hpp"
 #include "petsc/rank_steps_factory.hpp"
 #include "run/run_outputs.hpp"
+#include "run/setup_report.hpp"
 #include "stopwatch.hpp"
 
 namespace pd {
@@ -27,24 +28,20 @@ void check_dynamic_scene(const Scene& scene) {
                                 " is implemented for static solves only");
 }
 
+Model build_dynamic_model(const Scene& scene) {
+  check_dynamic_scene(scene);
+  return Model(scene,
+               ModelPlan{.matrix = false, .threads = scene.dynamics->threads, .short_delta = std::nullopt});
+}
+
 DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log log) {
   check_dynamic_scene(scene);
+  if (!model.inertia) throw std::logic_error("prepare_dynamic_run: the model was not built for dynamics");
   const auto t0 = std::chrono::steady_clock::now();
   const DynamicsSpec& dyn = *scene.dynamics;
   DynamicRun run{scene, model, std::move(log), {}, {}, {}, {}, {}, {}};
   RunSummary& summary = run.summary;
-  summary.describe(scene, model);
-  // The intact kernels (alpha folded to 1) unless a bond is or can become broken; no
-  // matrix: the explicit loop needs forces only.
-  const AssemblerOptions options = attach_assembler(model, scene, false, dyn.threads);
-  if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
-  summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
-  summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name,
-                                        summary.variant, model.influence->name));
-  // The loads (each scaled by its own function of time), the pre-cracks, damage
-  // evolution, and the inertia (with the viscous damping) or relaxation's fictitious density.
-  attach_effects(model, scene);
-  for (const auto& e : model.effects) summary.effects.push_back(e->describe());
+  describe_model(summary, model, scene);
   if (run.explicit_dynamics() && !dyn.initial.empty())
     summary.effects.push_back(fmt::format("initial conditions: {} region(s)", dyn.initial.size()));
   run.probe_ids = probe_particles(scene, model.particles);
@@ -58,11 +55,7 @@ DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log
   }
   summary.newton.unknowns = static_cast<std::int64_t>(model.dofs.free_count());
   summary.setup_seconds = model.build_seconds + seconds_since(t0);
-  run.log(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s",
-                      scene.file, summary.particles, summary.bonds, scene.delta(), scene.delta() / scene.h,
-                      summary.setup_seconds));
-  for (const auto& e : summary.effects) run.log("  effect: " + e);
-  for (const auto& w : summary.warnings) run.log("  warning: " + w);
+  log_setup(summary, scene, run.log);
   return run;
 }
 

@@ -76,8 +76,13 @@ struct DynamicRun {
 // Refuses (std::invalid_argument) what the dynamic runs do not implement: obq quadrature.
 void check_dynamic_scene(const Scene& scene);
 
-// Sets the model up for `scene.dynamics` (the assembler without a matrix, the effects),
-// logs the set-up and returns the run's state at t = 0. The model and scene must outlive it.
+// The model for `scene.dynamics` (after check_dynamic_scene): the assembler without a
+// matrix (the loops need forces only) on dynamics.threads, the timed loads, pre-cracks,
+// damage evolution and the inertia (with the viscous damping) or relaxation's density.
+Model build_dynamic_model(const Scene& scene);
+
+// Logs the set-up of a model built by build_dynamic_model and returns the run's state at
+// t = 0. The model and scene must outlive it.
 DynamicRun prepare_dynamic_run(Model& model, const Scene& scene, DynamicRun::Log log);
 
 // Run from t = 0, or from scene.dynamics->restart when set, to the scene's last step

@@ -12,7 +12,7 @@ class DynamicSimulation {
   using Log = DynamicRun::Log;
   DynamicSimulation(Scene scene, Log log)
       : scene_(std::move(scene)),
-        model_((check_dynamic_scene(scene_), build_model(scene_))),
+        model_(build_dynamic_model(scene_)),
         run_(prepare_dynamic_run(model_, scene_, std::move(log))) {}
   DynamicSimulation(const DynamicSimulation&) = delete;
   DynamicSimulation& operator=(const DynamicSimulation&) = delete;

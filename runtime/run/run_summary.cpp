@@ -10,7 +10,65 @@
 
 namespace pd {
 
-void RunSummary::describe(const Scene& s, const Model& model) {
+namespace {
+// The "dynamics" object of summary.json: the method, its steps and time, its energy or
+// convergence, and what it broke and wrote.
+nlohmann::ordered_json dynamics_json(const DynamicsReport& d) {
+  nlohmann::ordered_json dj{{"method", std::string(name_of(d.method))},
+                            {"first_step", d.first_step},
+                            {"last_step", d.last_step},
+                            {"time", d.time},
+                            {"dt", d.dt}};
+  if (d.method == DynamicsMethod::explicit_verlet)
+    dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
+  if (d.method == DynamicsMethod::relaxation)
+    dj["last_adaptive_coefficient"] = d.damping;
+  else if (d.damping > 0)
+    dj["viscous_damping"] = d.damping;
+  nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
+  if (d.strain_available)
+    energy["strain"] = d.strain;
+  else
+    energy["strain"] = "unavailable (the law has no energy kernel)";
+  if (d.method == DynamicsMethod::explicit_verlet) dj["energy"] = energy;
+  if (d.method == DynamicsMethod::relaxation)
+    dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
+  dj["bonds_broken"] = d.bonds_broken;
+  if (!d.restarted_from.empty()) dj["restarted_from"] = d.restarted_from;
+  dj["checkpoints"] = d.checkpoints;
+  dj["snapshots"] = d.snapshots;
+  return dj;
+}
+
+// One entry per Newton iteration; with_resolve (damage runs) adds which solve of the load step it was.
+nlohmann::ordered_json newton_iterations_json(const std::vector<NewtonRecord>& history, bool with_resolve) {
+  nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
+  for (const auto& it : history) {
+    nlohmann::ordered_json e{{"load_step", it.step}, {"load", it.load}};
+    if (with_resolve) e["resolve"] = it.round;  // 0: the first solve of the step
+    e.update({{"iteration", it.iteration},
+              {"residual", it.residual},
+              {"increment", it.increment},
+              {"line_search", it.step_length},
+              {"linear_iterations", it.linear_iterations}});
+    iterations.push_back(e);
+  }
+  return iterations;
+}
+
+// The probes' values, with the reference and error where there is one.
+nlohmann::ordered_json probes_json(const std::vector<ProbeResult>& probes) {
+  nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
+  for (const auto& p : probes) {
+    nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
+    if (p.has_reference) e["reference"] = p.reference, e["error"] = p.error;
+    probe_list.push_back(e);
+  }
+  return probe_list;
+}
+}  // namespace
+
+void RunSummary::describe(const Scene& s, const DiscretizedBody& model) {
   scene = s.file;
   law = model.law->name;
   influence = model.influence->name;
@@ -35,50 +93,16 @@ std::string RunSummary::json() const {
   j["broken_bonds"] = broken_bonds;
   j["unknowns"] = newton.unknowns;
   if (dynamics) {
-    const DynamicsReport& d = *dynamics;
-    nlohmann::ordered_json dj{{"method", std::string(name_of(d.method))},
-                              {"first_step", d.first_step},
-                              {"last_step", d.last_step},
-                              {"time", d.time},
-                              {"dt", d.dt}};
-    if (d.method == DynamicsMethod::explicit_verlet)
-      dj["dt_stable_estimate"] = d.dt_stable, dj["dt_rule"] = d.dt_rule;
-    if (d.method == DynamicsMethod::relaxation)
-      dj["last_adaptive_coefficient"] = d.damping;
-    else if (d.damping > 0)
-      dj["viscous_damping"] = d.damping;
-    nlohmann::ordered_json energy{{"kinetic", d.kinetic}, {"external_work", d.external_work}};
-    if (d.strain_available)
-      energy["strain"] = d.strain;
-    else
-      energy["strain"] = "unavailable (the law has no energy kernel)";
-    if (d.method == DynamicsMethod::explicit_verlet) dj["energy"] = energy;
-    if (d.method == DynamicsMethod::relaxation)
-      dj["converged"] = d.converged, dj["residual_ratio"] = d.residual_ratio;
-    dj["bonds_broken"] = d.bonds_broken;
-    if (!d.restarted_from.empty()) dj["restarted_from"] = d.restarted_from;
-    dj["checkpoints"] = d.checkpoints;
-    dj["snapshots"] = d.snapshots;
-    j["dynamics"] = dj;
+    j["dynamics"] = dynamics_json(*dynamics);
     j["seconds"] = {{"setup", setup_seconds}, {"solve", solve_seconds}, {"output", output_seconds}};
   } else {
     j["nonzeros"] = newton.nonzeros;
     j["linear_solver"] = {
         {"path", solver_path}, {"method", newton.linear_solver}, {"choice", newton.linear_choice}};
-    nlohmann::ordered_json iterations = nlohmann::ordered_json::array();
-    for (const auto& it : newton.history) {
-      nlohmann::ordered_json e{{"load_step", it.step}, {"load", it.load}};
-      if (bonds_broken_by_damage) e["resolve"] = it.round;  // 0: the first solve of the step
-      e.update({{"iteration", it.iteration},
-                {"residual", it.residual},
-                {"increment", it.increment},
-                {"line_search", it.step_length},
-                {"linear_iterations", it.linear_iterations}});
-      iterations.push_back(e);
-    }
-    j["newton"] = {{"converged", newton.converged},
-                   {"stagnated_on_rounding_floor", newton.stagnated},
-                   {"iterations", iterations}};
+    j["newton"] = {
+        {"converged", newton.converged},
+        {"stagnated_on_rounding_floor", newton.stagnated},
+        {"iterations", newton_iterations_json(newton.history, bonds_broken_by_damage.has_value())}};
     if (bonds_broken_by_damage)
       j["damage"] = {{"bonds_broken", *bonds_broken_by_damage}, {"resolves", newton.resolves}};
     j["seconds"] = {{"setup", setup_seconds},
@@ -88,13 +112,7 @@ std::string RunSummary::json() const {
                     {"output", output_seconds}};
   }
   if (!j_integrals.empty()) j["j_integral"] = j_integral_json(j_integrals);
-  nlohmann::ordered_json probe_list = nlohmann::ordered_json::array();
-  for (const auto& p : probes) {
-    nlohmann::ordered_json e{{"name", p.name}, {"particles", p.particles}, {"value", p.value}};
-    if (p.has_reference) e["reference"] = p.reference, e["error"] = p.error;
-    probe_list.push_back(e);
-  }
-  j["probes"] = probe_list;
+  j["probes"] = probes_json(probes);
   if (has_field_error) j["field_error_eq48"] = field_error;
   if (has_field_error) j["rms_error_free"] = {{"value", rms_error}, {"particles", rms_particles}};
   if (!smoothing.empty()) {

@@ -48,7 +48,7 @@ struct RunSummary {
   double setup_seconds = 0, solve_seconds = 0, output_seconds = 0;
   std::vector<std::string> files;
   // The scene, law, influence and count fields from the model.
-  void describe(const Scene& scene, const Model& model);
+  void describe(const Scene& scene, const DiscretizedBody& model);
   std::string text() const;  // the run summary for the log
   std::string json() const;  // the run summary, as written to summary.json
 };

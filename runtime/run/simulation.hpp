@@ -15,10 +15,9 @@ class Simulation {
   using Log = RunLog;
   // Builds the model and plans the solver (setup, timed).
   Simulation(Scene scene, Log log)
-      : scene_(std::move(scene)),
-        log_(std::move(log)),
-        model_(build_model(scene_)),
-        run_(plan_static_run(model_, scene_, log_)) {}
+      : scene_(std::move(scene)), log_(std::move(log)), model_(build_static_model(scene_, run_)) {
+    describe_static_run(run_, model_, scene_, log_);
+  }
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
   // Solves and writes the outputs; throws on failure (nothing half-written).
@@ -47,8 +46,8 @@ class Simulation {
  private:
   const Scene scene_;  // never changed after reading
   Log log_;
+  StaticRun run_;  // planned while model_ is built (declared first)
   Model model_;
-  StaticRun run_;
 };
 
 }  // namespace pd

@@ -1,7 +1,7 @@
-// A static run over a model: plan the solver and set the model up for it
-// (plan_static_run, static_setup.cpp), solve with Newton over the load steps
-// (run_static, static_run.cpp), write the result files (write_static_outputs,
-// static_outputs.cpp). `pd run` calls the three in turn after build_model.
+// A static run over a model: build the model with the solver planned from its body
+// (build_static_model, static_setup.cpp) and describe it, solve with Newton over the load
+// steps (run_static, static_run.cpp), write the result files (write_static_outputs,
+// static_outputs.cpp). `pd run` calls them in turn.
 #pragma once
 
 #include <functional>
@@ -11,11 +11,10 @@
 #include "input/scene.hpp"
 #include "model/model.hpp"
 #include "run/run_summary.hpp"
+#include "run/setup_report.hpp"  // RunLog
 #include "solve/solver_plan.hpp"
 
 namespace pd {
-
-using RunLog = std::function<void(const std::string&)>;
 
 // A static run's plan, its summary and its answer.
 struct StaticRun {
@@ -26,10 +25,19 @@ struct StaticRun {
   std::vector<double> stress;    // peridynamic stress [n*dim*dim], when wants_stress(scene)
 };
 
-// Plans the solver for the model (plan_solver), then attaches what the plan needs: the
-// assembler (with a matrix unless matrix-free), the short-horizon approximation, the
-// effects. Logs the set-up, the solver path and the families' checks.
-StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log);
+// Plans the solver for the discretized body (plan_solver): the run with its plan, nothing solved.
+StaticRun plan_static_run(const DiscretizedBody& body, const Scene& scene);
+
+// What that plan asks of the model: a matrix unless matrix-free, the short-horizon
+// approximation when the plan's preconditioner is one.
+ModelPlan static_model_plan(const StaticRun& run, const Scene& scene);
+
+// The model, with `run` planned from its body in between the two phases (model/model.hpp).
+Model build_static_model(const Scene& scene, StaticRun& run);
+
+// The summary's description of the set-up; logs it, the solver path and the families'
+// checks (and warns of a law nearly blind to a homogeneous strain). Sets u = 0.
+void describe_static_run(StaticRun& run, const Model& model, const Scene& scene, const RunLog& log);
 
 // Solves (nothing when there is no load: u = 0) and evaluates probes, eq. 48 errors,
 // smoothing and J-integrals into run.summary. Throws on failure.

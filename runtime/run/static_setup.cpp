@@ -1,4 +1,5 @@
-// plan_static_run: the solver plan and the model's assemblers and effects for it.
+// plan_static_run: the solver plan from the discretized body, what it asks of the model,
+// and the set-up's description and checks once the model is built.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -6,74 +7,43 @@
 
 #include "assembly/strain_modes.hpp"
 #include "discretize/discretization.hpp"
+#include "run/setup_report.hpp"
 #include "run/static_run.hpp"
 #include "stopwatch.hpp"
 
 namespace pd {
 
 namespace {
-// What the solver plan needs of the model (mean family size: bonds per particle).
-ProblemSize problem_size(const Model& model, const Scene& scene, double short_family_size) {
-  return {model.particles.size(), 2.0 * static_cast<double>(model.bond_count) / model.particles.size(),
-          model.particles.dim,    scene.delta() / scene.h,
-          short_family_size,      coupling_of_law(model.law->n_states) == Coupling::pairwise};
+// What the solver plan needs of the body (mean family size: bonds per particle).
+ProblemSize problem_size(const DiscretizedBody& body, const Scene& scene, double short_family_size) {
+  return {body.particles.size(), 2.0 * static_cast<double>(body.bond_count) / body.particles.size(),
+          body.particles.dim,    scene.delta() / scene.h,
+          short_family_size,     coupling_of_law(body.law->n_states) == Coupling::pairwise};
 }
-}  // namespace
 
-StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
-  const auto t0 = std::chrono::steady_clock::now();
-  StaticRun run;
-  RunSummary& summary = run.summary;
-  summary.describe(scene, model);
-  const abi::LawDescriptor* law = model.law;
-  const abi::InfluenceDescriptor* influence = model.influence;
-  const FamilyQualityReport& quality = model.quality;
-  // Simulate only what the scene calls for: no broken bond -> the variant without alpha;
-  // matrix-free Newton-Krylov -> no sparsity pattern and no slot table.
-  const double short_delta = std::min(scene.delta(), scene.solver.preconditioner_ratio * scene.h);
-  // Only `auto` sizes the preconditioner before choosing (a pass over every bond).
-  const double short_family = plan_needs_short_family_size(scene.solver)
-                                  ? mean_short_family_size(model.bonds, short_delta, influence->weight)
-                                  : -1;
-  run.plan = plan_solver(scene.solver, problem_size(model, scene, short_family));
-  summary.solver_path = run.plan.reason;
-  // PETSc with delta <= ratio h: its preconditioning matrix is the tangent's own.
-  if (run.plan.short_horizon_preconditioner() &&
-      !(run.plan.backend == Backend::petsc && short_delta >= scene.delta()))
-    attach_short_horizon(model, scene, short_delta);
-  if (run.plan.short_horizon_preconditioner() && model.collocation)
-    summary.solver_path +=
-        "; with quadrature obq the preconditioner is the collocation tangent itself (a shorter "
-        "horizon's volume-rule stiffness does not approximate it)";
-  const AssemblerOptions options = attach_assembler(model, scene, !run.plan.matrix_free());
-  attach_effects(model, scene);
-  if (model.collocation) summary.effects.push_back(model.collocation_description);
-  if (model.gauss_points) summary.effects.push_back(model.gauss_points->describe());
-  // The check reads the law on the bond families; a Gauss-point model has its bonds too,
-  // and the check is of the law on that horizon.
-  std::unique_ptr<FamilyAssembler> on_bonds;
+// The preconditioner's horizon: delta, or preconditioner_ratio h when that is shorter.
+double short_delta_of(const Scene& scene) {
+  return std::min(scene.delta(), scene.solver.preconditioner_ratio * scene.h);
+}
+
+// The check of the law's response to homogeneous strains reads the law on the bond
+// families; a Gauss-point model has its bonds too, and the check is of the law on that horizon.
+StrainModeReport strain_modes_of(const Model& model, const Scene& scene) {
   const FamilyAssembler* families = model.assembler->bond_families();
+  std::unique_ptr<FamilyAssembler> on_bonds;
   if (!families) {
-    AssemblerOptions bond_options = options;
+    AssemblerOptions bond_options = model.assembler_options;
     bond_options.gauss_points = nullptr;
     bond_options.matrix = false;
-    on_bonds =
-        std::make_unique<FamilyAssembler>(model.particles, model.bonds, *law, model.params, bond_options);
+    on_bonds = std::make_unique<FamilyAssembler>(model.particles, model.bonds, *model.law, model.params,
+                                                 bond_options);
     families = on_bonds.get();
   }
-  const StrainModeReport modes = check_strain_modes(*families, influence->name, scene.delta() / scene.h);
-  summary.variant = options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
-  summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", law->name,
-                                        summary.variant, influence->name));
-  for (const auto& e : model.effects) summary.effects.push_back(e->describe());
-  run.u.assign(static_cast<std::size_t>(model.particles.size()) * model.particles.dim, 0.0);
-  summary.setup_seconds = model.build_seconds + seconds_since(t0);
-  log(fmt::format("{}: {} particles, {} bonds, delta = {:.6g} (delta/h = {:.4g}), setup {:.3f} s", scene.file,
-                  summary.particles, summary.bonds, scene.delta(), scene.delta() / scene.h,
-                  summary.setup_seconds));
-  for (const auto& e : summary.effects) log("  effect: " + e);
-  for (const auto& w : summary.warnings) log("  warning: " + w);
-  log("  solver path: " + summary.solver_path);
+  return check_strain_modes(*families, model.influence->name, scene.delta() / scene.h);
+}
+
+void log_family_checks(const Model& model, const StrainModeReport& modes, const RunLog& log) {
+  const FamilyQualityReport& quality = model.quality;
   log(fmt::format(
       "  families: smallest weighted volume {:.3g} of a full horizon's (particle {}), largest shape-tensor "
       "condition number {:.3g} (particle {}), weakest response to a homogeneous strain {:.3g} of the "
@@ -96,7 +66,55 @@ StaticRun plan_static_run(Model& model, const Scene& scene, const RunLog& log) {
                     "(particle {} first); "
                     "their neighbours' families hold them",
                     modes.blind.size(), modes.blind.front()));
+}
+}  // namespace
+
+StaticRun plan_static_run(const DiscretizedBody& body, const Scene& scene) {
+  StaticRun run;
+  // Only `auto` sizes the preconditioner before choosing (a pass over every bond).
+  const double short_family =
+      plan_needs_short_family_size(scene.solver)
+          ? mean_short_family_size(body.bonds, short_delta_of(scene), body.influence->weight)
+          : -1;
+  run.plan = plan_solver(scene.solver, problem_size(body, scene, short_family));
   return run;
+}
+
+ModelPlan static_model_plan(const StaticRun& run, const Scene& scene) {
+  // Simulate only what the scene calls for: matrix-free Newton-Krylov -> no sparsity
+  // pattern and no slot table; PETSc with delta <= ratio h: its preconditioning matrix is
+  // the tangent's own, no approximation.
+  ModelPlan plan;
+  plan.matrix = !run.plan.matrix_free();
+  const double short_delta = short_delta_of(scene);
+  if (run.plan.short_horizon_preconditioner() &&
+      !(run.plan.backend == Backend::petsc && short_delta >= scene.delta()))
+    plan.short_delta = short_delta;
+  return plan;
+}
+
+Model build_static_model(const Scene& scene, StaticRun& run) {
+  return Model(scene, [&](const DiscretizedBody& body) {
+    run = plan_static_run(body, scene);
+    return static_model_plan(run, scene);
+  });
+}
+
+void describe_static_run(StaticRun& run, const Model& model, const Scene& scene, const RunLog& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RunSummary& summary = run.summary;
+  describe_model(summary, model, scene);
+  summary.solver_path = run.plan.reason;
+  if (run.plan.short_horizon_preconditioner() && model.collocation)
+    summary.solver_path +=
+        "; with quadrature obq the preconditioner is the collocation tangent itself (a shorter "
+        "horizon's volume-rule stiffness does not approximate it)";
+  const StrainModeReport modes = strain_modes_of(model, scene);
+  run.u.assign(static_cast<std::size_t>(model.particles.size()) * model.particles.dim, 0.0);
+  summary.setup_seconds = model.build_seconds + seconds_since(t0);
+  log_setup(summary, scene, log);
+  log("  solver path: " + summary.solver_path);
+  log_family_checks(model, modes, log);
 }
 
 }  // namespace pd

@@ -50,10 +50,7 @@ std::string held_plate(const std::string& extra) {
 }
 
 pd::Model dynamic_model(const pd::Scene& s) {
-  pd::Model m = pd::build_model(s);
-  pd::attach_assembler(m, s, false, 1);
-  pd::attach_effects(m, s);
-  return m;
+  return pd::build_model(s, {.matrix = false, .threads = 1, .short_delta = std::nullopt});
 }
 }  // namespace
 
@@ -148,7 +145,7 @@ TEST(VerletWithEffects, HalfStepsAreTheDampedAndUndampedFormulas) {
 
 TEST(DofMapMotion, TheModelsDofMapCarriesEachConditionsFunctionOfTime) {
   const pd::Scene s = pd::parse_scene(plate("method: explicit, steps: 1, threads: 1"), "plate.yaml");
-  const pd::Model m = pd::build_model(s);
+  const pd::DiscretizedBody m(s);
   const pd::DofMap& dofs = m.dofs;
   // 5 held particles (x and y), 4 driven in x (right column below the top row), 9 top-row
   // particles right of the held column with y prescribed.

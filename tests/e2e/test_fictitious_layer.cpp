@@ -114,8 +114,8 @@ TEST(FictitiousLayer, TractionLayersReproduceTheUniaxialStressFieldAndHoldThePat
   for (const std::string law : {"oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
     SCOPED_TRACE(law);
     const pd::Scene scene = pd::parse_scene(square_scene(law), "square.yaml");
-    pd::Model model = pd::build_model(scene);
-    pd::attach_assembler(model, scene, true);
+    const pd::Model model =
+        pd::build_model(scene, {.matrix = true, .threads = 0, .short_delta = std::nullopt});
     const pd::DofMap dofs = pd::scene_constraints(scene, model.particles);
     const pd::Particles& p = model.particles;
     EXPECT_EQ(dofs.tied_count(), 2 * (22 * 22 - 10 * 10));
@@ -151,8 +151,7 @@ TEST(FictitiousLayer, ReducedTangentAndJvpEqualFiniteDifferences) {
   // Silling's law is geometrically nonlinear: at a displacement of a tenth of the spacing
   // the tangent differs from the linear one, so FD checks the real S K(u) P.
   const pd::Scene scene = pd::parse_scene(square_scene("silling_plane_strain"), "square.yaml");
-  pd::Model model = pd::build_model(scene);
-  pd::attach_assembler(model, scene, true);
+  const pd::Model model = pd::build_model(scene, {.matrix = true, .threads = 0, .short_delta = std::nullopt});
   const pd::DofMap dofs = pd::scene_constraints(scene, model.particles);
   pd::PeridynamicSystem sys(*model.assembler, {});
   std::mt19937 rng(3);

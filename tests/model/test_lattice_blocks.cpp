@@ -141,10 +141,10 @@ TEST(LatticeBlocks, PartialVolumeFamiliesMatchTheUniformLatticeAndIntegrateTheDi
       "  box: {min: [0, 0], max: [1, 1]}\n  spacing: 0.05\n" +
           tail,
       "uniform.yaml");
-  const pd::Model mb = pd::build_model(blocks), mu = pd::build_model(uniform);
+  const pd::DiscretizedBody mb(blocks), mu(uniform);
   ASSERT_EQ(mb.particles.size(), mu.particles.size());
   // Families keyed by positions (the blocks fill block by block, the box row by row).
-  auto families = [](const pd::Model& m) {
+  auto families = [](const pd::DiscretizedBody& m) {
     std::vector<std::vector<double>> rows;
     const int d = m.particles.dim;
     for (int i = 0; i < m.particles.size(); ++i)
@@ -165,7 +165,7 @@ TEST(LatticeBlocks, PartialVolumeFamiliesMatchTheUniformLatticeAndIntegrateTheDi
   std::string text = two_blocks("silling_plane_strain");
   text.insert(text.find("  blocks:"), "  quadrature: partial_linear\n");
   const pd::Scene s2 = pd::parse_scene(text, "blocks.yaml");
-  const pd::Model two = pd::build_model(s2);
+  const pd::DiscretizedBody two(s2);
   const std::vector<double> delta = s2.particle_horizons();
   const pd::Particles& p = two.particles;
   double worst_straddling = 0, worst_uniform = 0;
@@ -200,8 +200,10 @@ TEST(LatticeBlocks, ShortHorizonPreconditionerTakesEachParticlesOwnSpacing) {
   std::string text =
       two_blocks("oterkus_plane_strain", "solver: {linear: matrix_free, preconditioner_ratio: 2}\n");
   const pd::Scene s = pd::parse_scene(text, "blocks.yaml");
-  pd::Model m = pd::build_model(s);
-  pd::attach_short_horizon(m, s, std::min(s.delta(), s.solver.preconditioner_ratio * s.h));
+  const pd::Model m =
+      pd::build_model(s, {.matrix = false,
+                          .threads = 0,
+                          .short_delta = std::min(s.delta(), s.solver.preconditioner_ratio * s.h)});
   const pd::Bonds& b = m.short_bonds;
   int fine_with_bonds = 0;
   for (int i = 0; i < m.particles.size(); ++i) {
@@ -226,8 +228,7 @@ TEST(LatticeBlocks, MomentumIsBalancedAcrossTheInterface) {
   for (const std::string law :
        {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
     const pd::Scene s = pd::parse_scene(two_blocks(law), "blocks.yaml");
-    pd::Model m = pd::build_model(s);
-    pd::attach_assembler(m, s, false, 1);
+    const pd::Model m = pd::build_model(s, {.matrix = false, .threads = 1, .short_delta = std::nullopt});
     const int n = m.particles.size();
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
@@ -276,8 +277,7 @@ TEST(LatticeBlocks, PatchTestHomogeneousStrainLeavesNoForceAwayFromTheInterface)
   for (const std::string law :
        {"silling_plane_strain", "oterkus_plane_strain", "correspondence_silling_plane_strain"}) {
     const pd::Scene s = pd::parse_scene(wide_blocks(law, ""), "blocks.yaml");
-    pd::Model m = pd::build_model(s);
-    pd::attach_assembler(m, s, false, 1);
+    const pd::Model m = pd::build_model(s, {.matrix = false, .threads = 1, .short_delta = std::nullopt});
     const int n = m.particles.size();
     std::vector<double> u(2 * n), f(2 * n);
     for (int i = 0; i < n; ++i)

@@ -45,7 +45,7 @@ struct Counted {
 Counted run_counted(const std::string& text, Backend backend, int stop_after) {
   Scene scene = parse_scene(text, "after_step_counter.yaml");
   scene.solver.backend = backend;
-  Model model = build_model(scene);
+  Model model = build_dynamic_model(scene);
   DynamicRun run = prepare_dynamic_run(model, scene, [](const std::string&) {});
   auto counter = std::make_unique<AfterStepCounter>(model.particles.size());
   AfterStepCounter* seen = counter.get();

@@ -96,8 +96,7 @@ double max_abs(const std::vector<double>& v) {
 
 void check_against_serial(const char* yaml) {
   const Scene scene = parse_scene(yaml, "distributed.yaml");
-  Model model = build_model(scene);
-  attach_assembler(model, scene, true, 1);
+  const Model model = build_model(scene, {.matrix = true, .threads = 1, .short_delta = std::nullopt});
   const FamilyAssembler& a = bond_families(*model.assembler, "the distributed assembly test");
   const int N = a.dofs(), d = scene.dim;
   const std::vector<double> u = deformation(N), v = deformation(N + 3);  // two different vectors
@@ -175,7 +174,7 @@ TEST(DistributedAssembly, PairwiseCube3DEqualsSerial) { check_against_serial(k3D
 
 TEST(Partition, OwnedBlocksCoverEveryParticleOnce) {
   const Scene scene = parse_scene(k2D, "p.yaml");
-  const Model model = build_model(scene);
+  const DiscretizedBody model(scene);
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   std::vector<int> owners(static_cast<std::size_t>(model.particles.size()), 0);

@@ -60,8 +60,7 @@ void expect_same_fracture(MakeScene make, long long min_broken) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const Scene scene_s = make(), scene_d = on_ranks(make());
-  check_dynamic_scene(scene_s);
-  Model model_s = build_model(scene_s), model_d = build_model(scene_d);
+  Model model_s = build_dynamic_model(scene_s), model_d = build_dynamic_model(scene_d);
   DynamicRun serial = prepare_dynamic_run(model_s, scene_s, [](const std::string&) {});
   const RunSummary ss = run_dynamic(serial, false);
   DynamicRun distributed = prepare_dynamic_run(model_d, scene_d, [](const std::string&) {});
@@ -133,7 +132,7 @@ TEST(DistributedDynamics, NotchedBar3DFractureEqualsSerial) {
 template <class MakeScene>
 void expect_same_relaxation(MakeScene make) {
   const Scene scene_s = make(), scene_d = on_ranks(make());
-  Model model_s = build_model(scene_s), model_d = build_model(scene_d);
+  Model model_s = build_dynamic_model(scene_s), model_d = build_dynamic_model(scene_d);
   DynamicRun serial = prepare_dynamic_run(model_s, scene_s, [](const std::string&) {});
   const RunSummary ss = run_dynamic(serial, false);
   DynamicRun distributed = prepare_dynamic_run(model_d, scene_d, [](const std::string&) {});

@@ -1,5 +1,5 @@
 // domain.surface_correction: read, refused where it cannot apply, and applied by
-// build_model to the bonds the assembler sees.
+// the model's first phase (DiscretizedBody) to the bonds the assembler sees.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,11 +43,11 @@ TEST(SurfaceCorrectionScene, ReadsTheKeyAndRefusesWhatItCannotCorrect) {
             std::string::npos);
 }
 
-TEST(SurfaceCorrectionScene, BuildModelPutsTheBondMeansOnTheBonds) {
-  const pd::Model off = pd::build_model(pd::parse_scene(plate(""), "s.yaml"));
+TEST(SurfaceCorrectionScene, TheBodyPutsTheBondMeansOnTheBonds) {
+  const pd::DiscretizedBody off(pd::parse_scene(plate(""), "s.yaml"));
   EXPECT_TRUE(off.bonds.surface_force.empty());
   EXPECT_TRUE(off.bonds.surface_dilatation.empty());
-  const pd::Model on = pd::build_model(pd::parse_scene(plate("  surface_correction: terms\n"), "s.yaml"));
+  const pd::DiscretizedBody on(pd::parse_scene(plate("  surface_correction: terms\n"), "s.yaml"));
   ASSERT_EQ(on.bonds.surface_force.size(), on.bonds.neighbor.size());
   ASSERT_EQ(on.bonds.surface_dilatation.size(), on.bonds.neighbor.size());
   const auto [lo, hi] = std::minmax_element(on.bonds.surface_force.begin(), on.bonds.surface_force.end());
@@ -63,7 +63,7 @@ TEST(SurfaceCorrectionScene, BuildModelPutsTheBondMeansOnTheBonds) {
         }
     }
   // A law without a dilatation sum gets the force factor only.
-  const pd::Model bb = pd::build_model(
+  const pd::DiscretizedBody bb(
       pd::parse_scene(plate("  surface_correction: terms\n", "bond_based_constant_2d"), "s.yaml"));
   EXPECT_TRUE(bb.bonds.surface_dilatation.empty());
   EXPECT_FALSE(bb.bonds.surface_force.empty());
