@@ -79,7 +79,9 @@ if [[ $# -eq 0 && -f $repo/scenes/crack.yaml ]]; then
     prepare crack+bicgstab "$crack" "solver: {linear: bicgstab}"
 fi
 # No scene in scenes/ has viscous damping or prescribed motion in time (a velocity
-# condition, a displacement with a time function): one small explicit scene has all three.
+# condition, a displacement with a time function): one small explicit scene has all three
+# (the top row's condition stops short of the held left corner, which two conditions on
+# one component would give: refused since 8586a84).
 if [[ $# -eq 0 ]]; then
     cat > "$work/motion_source.yaml" <<'YAML'
 dimension: 2
@@ -94,7 +96,7 @@ boundary:
   - region: {side: right}
     velocity: {x: 0.01}
     time_function: {ramp: 0.5}
-  - region: {side: top}
+  - region: {side: top, within: {min: [0.02, 0], max: [0.18, 1]}}
     displacement: {y: 0.001}
     time_function: {sine: {period: 2.0}}
 probes:
@@ -125,7 +127,7 @@ for i in "${!names[@]}"; do
             echo "$name: both refused alike (exit status ${rcs[after]}): $(tail -1 "$work/$name.after.log")"
         else
             echo "$name: exit status ${rcs[before]} before, ${rcs[after]} after; logs:"
-            tail -3 "$work/$name.before.log" "$work/$name.after.log"
+            tail -n 3 "$work/$name.before.log" "$work/$name.after.log" || true
             status=1
         fi
         continue

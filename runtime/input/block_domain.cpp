@@ -16,7 +16,7 @@ void read_block_domain(const YamlAt& domain, Scene& s) {
        {"box", "count", "spacing", "placement", "perturbation", "holes", "inclusions", "particles"})
     if (d.has(key))
       d.get(key).fail(std::string(key) + " does not apply to a body of blocks (give it per block)");
-  const std::vector<Quadrature> supported{Quadrature::Volume, Quadrature::PartialLinear};
+  const std::vector<Quadrature> supported = quadratures_with(&QuadratureRule::blocks);
   if (d.has("quadrature"))
     s.quadrature = read_word(d.get("quadrature"), supported, [&](const std::string&) {
       return "a body of blocks supports quadrature: " + name_list<Quadrature>(supported, " or ") +

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "input/enum_names.hpp"
 
@@ -18,9 +19,6 @@ enum class Quadrature {
   ObqCut,  // the same, a family cut by a face of the body's box integrating over the cut ball (free surfaces)
 };
 
-// Either OBQ choice.
-inline bool is_obq(Quadrature q) { return q == Quadrature::Obq || q == Quadrature::ObqCut; }
-
 // The scene spelling of each choice, in the order of the enum.
 template <>
 struct enum_names<Quadrature> {
@@ -30,5 +28,49 @@ struct enum_names<Quadrature> {
                                                               {Quadrature::Obq, "obq"},
                                                               {Quadrature::ObqCut, "obq_cut"}}};
 };
+
+// What each rule is and what it goes with: the one table that the scene reader's
+// compatibility checks (input/read_domain.cpp, input/block_domain.cpp), the model's first
+// phase (model/model.cpp), the dynamic driver (run/dynamic_run.cpp) and the test
+// QuadratureRules (which also holds docs/scene_format.md to it) read. A rule's mechanism --
+// its bonds' reach and volume share, its weights -- lives in discretize/ and assembly/.
+struct QuadratureRule {
+  Quadrature id;
+  bool own_weights;     // per-family weights assembled by collocation (paper 001), not bond volumes
+  bool cut_box_body;    // families cut by a face of the body's box integrate over the cut ball (2D boxes)
+  bool blocks;          // on a body of blocks (domain.blocks: paper 003 eq. 17)
+  bool dynamics;        // in a dynamic run (explicit or relaxation)
+  bool scales_volumes;  // compensation and the surface correction may scale its bond volumes
+  bool gauss_points;    // under domain.gauss_points (the points carry their own volumes, eq. 3.14)
+};
+
+// clang-format off
+inline constexpr std::array<QuadratureRule, 5> kQuadratureRules{{
+    // id                     own_weights cut_box blocks dynamics scales gauss
+    {Quadrature::Volume,        false,     false,  true,  true,    true,  true},
+    {Quadrature::PartialLinear, false,     false,  true,  true,    true,  false},
+    {Quadrature::PartialExact,  false,     false,  false, true,    true,  false},
+    {Quadrature::Obq,           true,      false,  false, false,   false, false},
+    {Quadrature::ObqCut,        true,      true,   false, false,   false, false},
+}};
+// clang-format on
+
+constexpr const QuadratureRule& quadrature_rule(Quadrature q) {
+  for (const QuadratureRule& r : kQuadratureRules)
+    if (r.id == q) return r;
+  return kQuadratureRules[0];  // unreachable: the test holds the table to the enum
+}
+
+// The rules that have `feature` (a member pointer of QuadratureRule), in table order.
+template <typename F>
+std::vector<Quadrature> quadratures_with(F feature) {
+  std::vector<Quadrature> out;
+  for (const QuadratureRule& r : kQuadratureRules)
+    if (r.*feature) out.push_back(r.id);
+  return out;
+}
+
+// The rules that weigh bonds by their own per-family weights (obq, obq_cut).
+inline bool is_obq(Quadrature q) { return quadrature_rule(q).own_weights; }
 
 }  // namespace pd

@@ -23,6 +23,14 @@ struct enum_names<SurfaceCorrection> {
 
 namespace {
 
+// The names of the rules with their own weights, and of those whose volumes the corrections scale.
+std::string own_weight_rules() {
+  return name_list<Quadrature>(quadratures_with(&QuadratureRule::own_weights), " or ");
+}
+std::string volume_scaling_rules() {
+  return name_list<Quadrature>(quadratures_with(&QuadratureRule::scales_volumes), " or ");
+}
+
 Shape read_shape(const YamlAt& at, int dim, bool inclusion) {
   MapReader m(at);
   Shape s;
@@ -91,11 +99,13 @@ void read_quadrature(MapReader& d, Scene& s) {
     });
   if (d.has("obq_space")) {
     s.obq_space = enum_choice(d, "obq_space", ObqSpace::paper001);
-    if (!is_obq(s.quadrature)) d.get("obq_space").fail("obq_space needs quadrature: obq or obq_cut");
+    if (!quadrature_rule(s.quadrature).own_weights)
+      d.get("obq_space").fail("obq_space needs quadrature: " + own_weight_rules());
   }
   if (d.has("obq_symmetric")) {
     s.obq_symmetric = d.boolean("obq_symmetric", false);
-    if (!is_obq(s.quadrature)) d.get("obq_symmetric").fail("obq_symmetric needs quadrature: obq or obq_cut");
+    if (!quadrature_rule(s.quadrature).own_weights)
+      d.get("obq_symmetric").fail("obq_symmetric needs quadrature: " + own_weight_rules());
   }
 }
 
@@ -103,11 +113,11 @@ void read_quadrature(MapReader& d, Scene& s) {
 void read_corrections(MapReader& d, Scene& s) {
   if (d.has("compensation")) {
     s.compensation = d.boolean("compensation", false);
-    if (s.compensation && is_obq(s.quadrature))
+    if (s.compensation && !quadrature_rule(s.quadrature).scales_volumes)
       d.get("compensation")
-          .fail(
-              "the compensation factor scales bond volumes; obq and obq_cut replace them by their own "
-              "weights");
+          .fail("the compensation factor scales bond volumes; quadrature " +
+                std::string(name_of(s.quadrature)) + " replaces them by its own weights (use " +
+                volume_scaling_rules() + ")");
     if (s.compensation && s.perturbation > 0)
       d.get("compensation")
           .fail(
@@ -125,10 +135,11 @@ void read_corrections(MapReader& d, Scene& s) {
   s.surface_correction = match != SC::none;
   s.surface_match_responses = match == SC::responses;
   const YamlAt at = d.get("surface_correction");
-  if (s.surface_correction && is_obq(s.quadrature))
+  if (s.surface_correction && !quadrature_rule(s.quadrature).scales_volumes)
     at.fail(
-        "the surface correction compares each family with the full family of a regular lattice; obq and "
-        "obq_cut replace the bond volumes by their own weights");
+        "the surface correction compares each family with the full family of a regular lattice; quadrature " +
+        std::string(name_of(s.quadrature)) + " replaces the bond volumes by its own weights (use " +
+        volume_scaling_rules() + ")");
   if (s.surface_correction && s.compensation)
     at.fail(
         "choose one of compensation (paper 002) and surface_correction (paper 003): both correct the same "
@@ -149,11 +160,12 @@ void read_gauss_points(MapReader& d, Scene& s) {
   if (!(s.gauss_support >= 1.0))
     g.get("support").fail("support (the MLS radius r_w in units of h) must be at least 1");
   g.finish();
-  if (s.quadrature != Quadrature::Volume || s.compensation || s.surface_correction)
+  if (!quadrature_rule(s.quadrature).gauss_points || s.compensation || s.surface_correction)
     d.get("gauss_points")
         .fail(
-            "the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with another "
-            "quadrature, compensation or surface_correction");
+            "the Gauss points carry their own volumes and reduction factors (eq. 3.14): not with "
+            "compensation, surface_correction or a quadrature other than " +
+            name_list<Quadrature>(quadratures_with(&QuadratureRule::gauss_points), " or "));
 }
 
 void read_box_domain(const YamlAt& at, Scene& s) {

@@ -28,11 +28,11 @@ namespace {
 // face integrate over -- the box, grown by h/2 for node placement (the particles on
 // the faces stand for cells that reach half a spacing beyond them). None for `obq`.
 std::optional<Box2> obq_cut_body(const Scene& scene) {
-  if (scene.quadrature != Quadrature::ObqCut) return std::nullopt;
+  if (!quadrature_rule(scene.quadrature).cut_box_body) return std::nullopt;
   if (scene.dim != 2 || scene.point_cloud || !scene.holes.empty())
     throw std::invalid_argument(scene.file +
-                                ": domain.quadrature: obq_cut needs a 2D box body without holes "
-                                "(use obq)");
+                                ": domain.quadrature: " + std::string(name_of(scene.quadrature)) +
+                                " needs a 2D box body without holes (use obq)");
   const double grow = scene.placement == Placement::node ? 0.5 * scene.h : 0.0;
   Box2 body;
   for (int a = 0; a < 2; ++a) body.lo[a] = scene.lo[a] - grow, body.hi[a] = scene.hi[a] + grow;
@@ -129,7 +129,8 @@ DiscretizedBody::DiscretizedBody(const Scene& scene) {
     apply_compensation(bonds, compensation_factors(particles, bonds, in));
   }
   if (scene.surface_correction) correct_surface_bonds(scene, *this, bonds);
-  if (is_obq(scene.quadrature)) collocation = obq_collocation(scene, *this, collocation_description);
+  if (quadrature_rule(scene.quadrature).own_weights)
+    collocation = obq_collocation(scene, *this, collocation_description);
   if (scene.gauss_points > 0) gauss_points = gauss_points_of(scene, *this);
   for (const MaterialSpec& mat : scene.materials)
     warn_if_poisson_ratio_differs(*law, mat.elastic, mat.plane, mat.name);

@@ -22,7 +22,7 @@ namespace pd {
 
 void check_dynamic_scene(const Scene& scene) {
   if (!scene.dynamics) throw std::invalid_argument("dynamic run: the scene has no dynamics section");
-  if (is_obq(scene.quadrature))
+  if (!quadrature_rule(scene.quadrature).dynamics)
     throw std::invalid_argument(scene.file +
                                 ": domain.quadrature: " + std::string(name_of(scene.quadrature)) +
                                 " is implemented for static solves only");

@@ -349,7 +349,7 @@ TEST(GaussPointScene, ErrorsNameTheKey) {
   EXPECT_NE(scene_error(", gauss_points: {support: 0.5}").find("domain.gauss_points.support"),
             std::string::npos);
   EXPECT_NE(scene_error(", quadrature: partial_linear, gauss_points: {per_axis: 2}")
-                .find("not with another quadrature"),
+                .find("a quadrature other than volume"),
             std::string::npos);
   EXPECT_NE(scene_error(", gauss_points: {per_axis: 2, bogus: 1}").find("bogus"), std::string::npos);
 }
