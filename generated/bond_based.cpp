@@ -526,6 +526,8 @@ void bond_based_constant_2d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_2d";
@@ -534,6 +536,9 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -1094,6 +1099,8 @@ void bond_based_conical_2d_intact_form(const pd::abi::Family& fam, const pd::abi
 pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_2d";
@@ -1102,6 +1109,9 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -1870,6 +1880,8 @@ void bond_based_constant_3d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_3d";
@@ -1878,6 +1890,9 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2650,6 +2665,8 @@ void bond_based_conical_3d_intact_form(const pd::abi::Family& fam, const pd::abi
 pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_3d";
@@ -2658,6 +2675,9 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;

@@ -1075,6 +1075,8 @@ void correspondence_plane_strain_intact_form(const pd::abi::Family& fam, const p
 pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_plane_strain";
@@ -1083,6 +1085,9 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -3220,6 +3225,8 @@ void correspondence_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Ta
 pd::abi::LawDescriptor correspondence_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_3d";
@@ -3228,6 +3235,9 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -4535,6 +4545,8 @@ void correspondence_silling_plane_strain_intact_form(const pd::abi::Family& fam,
 pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_plane_strain";
@@ -4543,6 +4555,9 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -6920,6 +6935,8 @@ void correspondence_silling_3d_intact_form(const pd::abi::Family& fam, const pd:
 pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_3d";
@@ -6928,6 +6945,9 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -8196,6 +8216,8 @@ void correspondence_littlewood_plane_strain_intact_form(const pd::abi::Family& f
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_plane_strain";
@@ -8204,6 +8226,9 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -10580,6 +10605,8 @@ void correspondence_littlewood_3d_intact_form(const pd::abi::Family& fam, const 
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_3d";
@@ -10588,6 +10615,9 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };

@@ -5,6 +5,7 @@
 #include "kernel_abi.hpp"
 #include "bond_based.hpp"
 #include "correspondence.hpp"
+#include "elastic_plastic.hpp"
 #include "influence.hpp"
 #include "lps.hpp"
 #include "oterkus.hpp"
@@ -24,6 +25,8 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::correspondence_silling_3d_descriptor(),
       pd::generated::correspondence_littlewood_plane_strain_descriptor(),
       pd::generated::correspondence_littlewood_3d_descriptor(),
+      pd::generated::elastic_plastic_plane_strain_descriptor(),
+      pd::generated::elastic_plastic_3d_descriptor(),
       pd::generated::lps_plane_strain_descriptor(),
       pd::generated::lps_3d_descriptor(),
       pd::generated::lps_corrected_plane_strain_descriptor(),
@@ -38,7 +41,7 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 23);
+  return std::span<const LawDescriptor>(table, 25);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

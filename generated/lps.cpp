@@ -778,6 +778,8 @@ void lps_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::Tan
 pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_plane_strain";
@@ -786,6 +788,9 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -1822,6 +1827,8 @@ void lps_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactor
 pd::abi::LawDescriptor lps_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_3d";
@@ -1830,6 +1837,9 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -2905,6 +2915,8 @@ void lps_corrected_plane_strain_intact_form(const pd::abi::Family& fam, const pd
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_plane_strain";
@@ -2913,6 +2925,9 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -4540,6 +4555,8 @@ void lps_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Tan
 pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_3d";
@@ -4548,6 +4565,9 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -5328,6 +5348,8 @@ void lps_paper_plane_strain_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_plane_strain";
@@ -5336,6 +5358,9 @@ pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -6357,6 +6382,8 @@ void lps_paper_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Tangent
 pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_3d";
@@ -6365,6 +6392,9 @@ pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -7306,6 +7336,8 @@ void lps_paper_corrected_plane_strain_intact_form(const pd::abi::Family& fam, co
 pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_corrected_plane_strain";
@@ -7314,6 +7346,9 @@ pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -8753,6 +8788,8 @@ void lps_paper_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_corrected_3d";
@@ -8761,6 +8798,9 @@ pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;

@@ -880,6 +880,8 @@ void oterkus_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi:
 pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_plane_strain";
@@ -888,6 +890,9 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2026,6 +2031,8 @@ void oterkus_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFa
 pd::abi::LawDescriptor oterkus_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_3d";
@@ -2034,6 +2041,9 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2920,6 +2930,8 @@ void oterkus_paper_d_plane_strain_intact_form(const pd::abi::Family& fam, const 
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_paper_d_plane_strain";
@@ -2928,6 +2940,9 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;

@@ -31,6 +31,7 @@ EmittedVariant emit_variant(const Law& law, const std::string& variant) {
       {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
   if (k.has_energy) programs.push_back({"energy", &k.energy});
   if (k.has_outputs) programs.push_back({"outputs", &k.outputs});
+  if (k.has_update) programs.push_back({"update", &k.update});
   for (const auto& [kind, program] : programs)
     v.kernels.push_back({kind, program->name, emit_kernel(*program)});
   const std::string form = law.name() + "_" + variant + "_form";
@@ -48,6 +49,10 @@ GeneratedFiles generate() {
     try {
       const Law law = e.build();
       if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
+      for (const HistoryDef& h : law.history())
+        if (!h.has_update)
+          throw std::invalid_argument("history '" + h.name +
+                                      "' is declared but never updated: call law.update");
       if (!law_names.insert(law.name()).second)
         throw std::invalid_argument("law '" + law.name() + "' is registered twice");
       files.add_law(e.file_stem, law,

@@ -45,6 +45,14 @@ struct Family {
   // dilatation sum (laws that declare one: LawDescriptor::has_dilatation_sum).
   const double* dilatation_factor = nullptr;  // [L]
   const double* force_factor = nullptr;       // [L]
+  // History (a law with memory, LawDescriptor::n_history > 0): the committed per-bond
+  // internal variables at the start of the step, [L*n_history] bond-major (bond k's at
+  // [k*n_history]). The kernels read them and never write them: the residual, tangent and
+  // JVP are those of the incremental problem with this history held fixed, and the update
+  // kernel writes the values at the end of the step into a separate array, which the
+  // runtime commits only once the step has converged. Null: every bond at the law's
+  // initial values (LawDescriptor::history_initial), a virgin body.
+  const double* history = nullptr;
 };
 
 // Factored tangent of one family. With T_ik = d t_i / d Y_k (bond i's force state
@@ -80,6 +88,10 @@ using FormKernel = void (*)(const Family&, const TangentFactors& factors, double
 using EnergyKernel = double (*)(const Family&);
 // Per-particle derived quantities for output (dilatation, strain, ...).
 using OutputsKernel = void (*)(const Family&, double* outputs);
+// The history at the end of the step, [L*n_history] bond-major, from Family::history (the
+// committed values) and the current deformation: the law's update (plastic return map,
+// viscous update). Null when the law has no history.
+using UpdateKernel = void (*)(const Family&, double* history_out);
 
 struct OpCounts {
   int adds = 0, muls = 0, divs = 0, calls = 0;  // calls: sqrt, pow, exp, log, ...
@@ -93,6 +105,7 @@ struct KernelVariant {
   FormKernel form = nullptr;                    // may be null (hand-written laws)
   EnergyKernel energy = nullptr;                // may be null
   OutputsKernel outputs = nullptr;              // may be null when n_outputs == 0
+  UpdateKernel update = nullptr;                // null when n_history == 0
   OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
 };
 
@@ -124,6 +137,11 @@ struct LawDescriptor {
   int n_states = 0;  // scalar state components (the s index of TangentFactors)
   int n_outputs = 0;
   const char* const* output_names = nullptr;
+  // Per-bond internal variables (Family::history, UpdateKernel): their names and the values
+  // a virgin bond has; 0: an elastic law, a function of the current deformation alone.
+  int n_history = 0;
+  const char* const* history_names = nullptr;
+  const double* history_initial = nullptr;
   int scratch_per_bond = 0;  // doubles per bond of Family::scratch any kernel of the law uses
   // The law claims sum_k Y_k x t_k = 0 (angular momentum balance) for every deformation.
   bool balances_angular_momentum = false;

@@ -3,6 +3,8 @@
 
 #include <sstream>
 
+#include "pdgen/kernel_program.hpp"
+
 namespace pdgen::abi_text {
 
 namespace {
@@ -29,6 +31,8 @@ Signature signature(Kernel k) {
       return {"double", {kFamily}, {"fam"}};
     case Kernel::Outputs:
       return {"void", {kFamily, "double* outputs"}, {"fam", "outputs"}};
+    case Kernel::Update:
+      return {"void", {kFamily, "double* history_out"}, {"fam", "history_out"}};
     case Kernel::Influence:
       return {"double", {"double r", "double delta"}, {"r", "delta"}};
   }
@@ -49,6 +53,13 @@ std::string pair_param(int i, int n_params, const std::string& mean) {
          str(n_params) + " + " + str(i) + "]) : " + param(i) + ")";
 }
 std::string moment_input(int i) { return "fam.moments[" + str(i) + "]"; }
+std::string history_input(int i, int n_history, double initial) {
+  return "(fam.history != nullptr ? fam.history[k * " + str(n_history) + " + " + str(i) +
+         "] : " + cpp_double(initial) + ")";
+}
+std::string history_output(int i, int n_history) {
+  return "history_out[k * " + str(n_history) + " + " + str(i) + "]";
+}
 std::string bond_count() { return "fam.n_bonds"; }
 std::string scratch() { return "fam.scratch"; }
 

@@ -13,7 +13,7 @@ struct Signature {
   std::string return_type;
   std::vector<std::string> params, names;
 };
-enum class Kernel { Moments, Residual, Tangent, Jvp, Form, Energy, Outputs, Influence };
+enum class Kernel { Moments, Residual, Tangent, Jvp, Form, Energy, Outputs, Update, Influence };
 Signature signature(Kernel k);
 
 // Family inputs. Per bond k: component c of a vector field (xi, Y), a scalar field
@@ -28,6 +28,10 @@ std::string param(int i);
 // center's and the neighbour's value, or the center's when fam.nbr_params is null.
 std::string pair_param(int i, int n_params, const std::string& mean);
 std::string moment_input(int i);
+// Bond k's committed value of history variable i of n (Family::history; null: `initial`),
+// and the update kernel's store of its new value.
+std::string history_input(int i, int n_history, double initial);
+std::string history_output(int i, int n_history);
 std::string bond_count();  // L
 std::string scratch();     // the per-bond cache's storage
 

@@ -71,6 +71,12 @@ std::string descriptor_head(const Law& law) {
   for (double v : law.param_test_values())
     desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
   desc << "0.0};\n";
+  desc << "  static const char* const history_names[] = {";
+  for (auto& h : law.history()) desc << quoted(h.name) << ", ";
+  desc << "nullptr};\n";
+  desc << "  static const double history_initial[] = {";
+  for (auto& h : law.history()) desc << cpp_double(h.initial) << ", ";
+  desc << "0.0};\n";
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
   desc << "nullptr};\n";
@@ -78,6 +84,8 @@ std::string descriptor_head(const Law& law) {
        << ";\n  d.summary = " << quoted(law.summary()) << ";\n  d.dim = " << law.dim()
        << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
   desc << "  d.param_test_values = test_values;\n";
+  desc << "  d.n_history = " << law.history().size()
+       << ";\n  d.history_names = history_names;\n  d.history_initial = history_initial;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
   if (law.has_dilatation_sum()) desc << "  d.has_dilatation_sum = true;\n";

@@ -50,6 +50,8 @@ class Builder {
         values.push_back({abi_text::output(static_cast<int>(i)), law_.outputs()[i].value});
       out.outputs = prune(particle_value_kernel("outputs", abi_text::Kernel::Outputs, values));
     }
+    out.has_update = law_.has_history();
+    if (out.has_update) out.update = prune(update_kernel());
     return out;
   }
 
@@ -102,6 +104,11 @@ class Builder {
       b[symbol_index(moments_[i]->symbol)] = {
           var(*moments_[i]), moments_are_inputs ? abi_text::moment_input(static_cast<int>(i)) : "", false};
     for (const SumDef* s : states_) b[symbol_index(s->symbol)] = {var(*s), "", false};
+    const auto n_history = static_cast<int>(law_.history().size());
+    for (int i = 0; i < n_history; ++i) {
+      const HistoryDef& h = law_.history()[static_cast<std::size_t>(i)];
+      b[symbol_index(h.committed)] = {"H_" + h.name, abi_text::history_input(i, n_history, h.initial), true};
+    }
     return b;
   }
 
@@ -266,6 +273,23 @@ class Builder {
     std::vector<Expr> dt;
     for (Expr t : force_roots()) dt.push_back(directional(t));
     force_stores(seg, dt, "df", "");
+    p.segments.push_back(seg);
+    return p;
+  }
+
+  // The history update: every variable's value at the end of the step, per bond, from the
+  // committed values and the current deformation (through the states it reads).
+  KernelProgram update_kernel() const {
+    KernelProgram p = program("update", abi_text::Kernel::Update, true);
+    std::vector<Expr> roots;
+    for (const HistoryDef& h : law_.history()) roots.push_back(h.updated);
+    sum_loops(p, needed(roots, true));
+    Segment seg;
+    seg.loop = true;
+    const auto n_history = static_cast<int>(law_.history().size());
+    for (int i = 0; i < n_history; ++i)
+      seg.stores.push_back({abi_text::history_output(i, n_history),
+                            law_.history()[static_cast<std::size_t>(i)].updated, StoreMode::Set, ""});
     p.segments.push_back(seg);
     return p;
   }

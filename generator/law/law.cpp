@@ -105,6 +105,30 @@ void Law::built_in_kernel(std::string description, std::vector<RadialTermDef> pr
   kernel_profile_ = std::move(profile);
 }
 
+Expr Law::bond_history(const std::string& name, double initial) {
+  check_identifier(name);
+  if (!std::isfinite(initial))
+    throw std::invalid_argument("law " + name_ + ": initial value of history '" + name + "' must be finite");
+  for (const HistoryDef& h : history_)
+    if (h.name == name)
+      throw std::invalid_argument("law " + name_ + ": history '" + name + "' declared twice");
+  const Expr committed = symbol("history_" + name, SymbolKind::BondInput);
+  history_.push_back({name, initial, committed, committed, false});
+  return committed;
+}
+
+void Law::update(Expr committed, Expr updated) {
+  for (HistoryDef& h : history_) {
+    if (h.committed != committed) continue;
+    if (h.has_update)
+      throw std::invalid_argument("law " + name_ + ": history '" + h.name + "' updated twice");
+    h.updated = updated;
+    h.has_update = true;
+    return;
+  }
+  throw std::invalid_argument("law " + name_ + ": update of an expression that is not a declared history");
+}
+
 Expr Law::deformed_length() const { return sqrt(dot(Y_, Y_) + 1e-16 * dot(xi_, xi_)); }
 
 Expr Law::sum(const std::string& name, Expr body) {
@@ -114,7 +138,10 @@ Expr Law::sum(const std::string& name, Expr body) {
   SumDef def{name, symbol(name, SymbolKind::Sum), body, false, 0};
   std::vector<int> y_symbols;
   for (int c = 0; c < dim_; ++c) y_symbols.push_back(symbol_index(Y_[c]));
+  for (const HistoryDef& h : history_) y_symbols.push_back(symbol_index(h.committed));
   for (int s : free_symbols(body)) {
+    // A sum that reads the deformation or the committed history changes from step to step:
+    // a state, evaluated by every kernel; the others are moments, computed once at setup.
     if (std::find(y_symbols.begin(), y_symbols.end(), s) != y_symbols.end()) def.is_state = true;
     for (const SumDef& earlier : sums_) {
       if (symbol_index(earlier.symbol) != s) continue;
@@ -171,6 +198,7 @@ Law Law::with_alpha_folded() const {
   for (int c = 0; c < dim_; ++c) r.force_[c] = substitute(force_[c], one);
   if (has_energy_) r.energy_ = substitute(energy_, one);
   for (OutputDef& o : r.outputs_) o.value = substitute(o.value, one);
+  for (HistoryDef& h : r.history_) h.updated = substitute(h.updated, one);
   return r;
 }
 

@@ -32,6 +32,26 @@ Findings unused_law_parameters(const SceneReading& r) {
   return out;
 }
 
+// A law with memory (LawDescriptor::n_history > 0) is evaluated from its committed
+// history. The runtime does not yet keep, commit or check-point that history, so every
+// evaluation sees a virgin body: right for one static load step from the unloaded state
+// (one step of the incremental problem), silently wrong for anything that needs the
+// history of earlier steps: several load steps, time steps, relaxation. Those are refused.
+Findings history_refusals(const SceneReading& r) {
+  if (r.law->n_history == 0) return {};
+  std::string names;
+  for (int i = 0; i < r.law->n_history; ++i) names += (i ? ", " : "") + std::string(r.law->history_names[i]);
+  const std::string why = "law " + r.s.law + " carries history (" + names +
+                          " per bond), which this runtime does not commit between steps yet: ";
+  if (r.s.dynamics) return one(r.section("dynamics"), why + "it runs only as one static load step");
+  if (r.s.solver.load_steps != 1) {
+    const YamlAt solver = r.section("solver");
+    return one(solver.child(solver.node["load_steps"], "load_steps"),
+               why + "give load_steps: 1 (one step from the virgin state)");
+  }
+  return {};
+}
+
 // Static scenes (no dynamics section) and relaxation have no time: each boundary condition
 // in turn (its time function, then a velocity), then each crack, with the message for each.
 Findings time_dependence(const SceneReading& r, const std::string& time, const std::string& velocity,
@@ -130,6 +150,8 @@ const std::vector<SceneRule> kRules{
                         "the bond families only; use the serial backend")
                   : Findings{};
      }},
+    {"a law with history runs one static step from the virgin state", Section::dynamics, false,
+     [](const SceneReading& r) { return history_refusals(r); }},
     {"damage.max_resolves belongs to static runs", Section::damage, false,
      [](const SceneReading& r) {
        return r.s.dynamics && r.s.damage && !r.s.damage->max_resolves_where.empty()

@@ -21,6 +21,9 @@ struct TestFamily {
   std::vector<double> y;  // [(L+1)*dim] deformed positions
   std::vector<double> xi, Y, w, alpha, V, params, moments;
   std::vector<double> nbr_params;  // [L*n_params] the neighbours' parameters; empty: Family::nbr_params null
+  // [L*n_history] the committed history (Family::history), the law's initial values until
+  // commit_update; empty for a law without history (Family::history null).
+  std::vector<double> history;
   mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
   const abi::LawDescriptor* law = nullptr;
@@ -41,6 +44,7 @@ struct TestFamily {
     f.params = params.data();
     f.nbr_params = nbr_params.empty() ? nullptr : nbr_params.data();
     f.moments = moments.data();
+    f.history = history.empty() ? nullptr : history.data();
     const auto need = static_cast<std::size_t>(bonds() * (law ? law->scratch_per_bond : 0));
     if (kernel_scratch.size() < need) kernel_scratch.resize(need);  // once: a family's bond count is fixed
     f.scratch = kernel_scratch.data();
@@ -54,6 +58,25 @@ struct TestFamily {
   void update_moments(const abi::KernelVariant& v) {
     moments.assign(static_cast<std::size_t>(law->n_moments) + 1, 0.0);
     v.moments(view(), moments.data());
+  }
+  // The history at the end of a step to the current positions (the update kernel).
+  std::vector<double> updated_history(const abi::KernelVariant& v) const {
+    std::vector<double> out(history.size());
+    if (v.update != nullptr) v.update(view(), out.data());
+    return out;
+  }
+  // Commits a step to the current positions: the updated history becomes the committed one.
+  void commit_update(const abi::KernelVariant& v) { history = updated_history(v); }
+  // Gives every parameter the law declares a test value that value (law.param(name, v)),
+  // at the center and at the neighbours: e.g. a yield stress the random strains exceed.
+  void use_declared_test_values() {
+    const int np = law->n_params;
+    for (int p = 0; p < np; ++p) {
+      if (law->param_test_values == nullptr || std::isnan(law->param_test_values[p])) continue;
+      params[static_cast<std::size_t>(p)] = law->param_test_values[p];
+      for (std::size_t k = 0; k * np < nbr_params.size(); ++k)
+        nbr_params[k * np + p] = law->param_test_values[p];
+    }
   }
   std::vector<double> forces(const abi::KernelVariant& v) const {
     std::vector<double> f(static_cast<std::size_t>(dofs()));
@@ -111,6 +134,24 @@ struct FamilyOptions {
   unsigned seed = 1;
 };
 
+// y = x + H x + noise: a random displacement gradient H of size `strain` and a noise of
+// 0.2 strain h per component (h the lattice spacing).
+inline std::vector<double> random_deformation(const TestFamily& f, double strain, double h,
+                                              std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int d = f.dim;
+  double H[9];
+  for (double& e : H) e = strain * u(rng);
+  std::vector<double> y(f.x.size());
+  for (int a = 0; a <= f.bonds(); ++a)
+    for (int r = 0; r < d; ++r) {
+      double v = f.x[a * d + r] + 0.2 * strain * h * u(rng);
+      for (int c = 0; c < d; ++c) v += H[r * 3 + c] * f.x[a * d + c];
+      y[a * d + r] = v;
+    }
+  return y;
+}
+
 inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions& o) {
   std::mt19937 rng(o.seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -163,18 +204,10 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
       for (int p = 0; p < law.n_params; ++p) f.nbr_params.push_back(beyond ? other[p] : f.params[p]);
     }
   }
-  // y = x + H x + noise, with a random displacement gradient H.
-  double H[9];
-  for (double& e : H) e = o.strain * u(rng);
-  std::vector<double> y(f.x.size());
-  for (int a = 0; a <= L; ++a)
-    for (int r = 0; r < d; ++r) {
-      double v = f.x[a * d + r] + 0.2 * o.strain * h * u(rng);
-      for (int c = 0; c < d; ++c) v += H[r * 3 + c] * f.x[a * d + c];
-      y[a * d + r] = v;
-    }
-  f.set_positions(y);
+  f.set_positions(random_deformation(f, o.strain, h, rng));
   f.update_moments(law.damaged);
+  for (int k = 0; k < L; ++k)
+    for (int i = 0; i < law.n_history; ++i) f.history.push_back(law.history_initial[i]);
   return f;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "verify/balance.hpp"
 
@@ -58,6 +59,32 @@ FamilyCheck check_family(const abi::LawDescriptor& law, TestFamily& f, std::stri
   c.angular_momentum_error = angular_momentum_error(f, forces);
   return c;
 }
+// A law with history: its kernels are those of the incremental problem, the committed
+// history held fixed, so the tangent is checked against differences with that history.
+// "yielding": a virgin family with the parameters' declared test values (a yield stress
+// the random strain exceeds); "committed": the history a first step to one random
+// deformation leaves, then a second random deformation (loading on, or unloading, from a
+// plastic state: either branch, away from the yield surface with probability 1).
+void add_history_checks(const abi::LawDescriptor& law, const FamilyOptions& base,
+                        std::vector<FamilyCheck>& out) {
+  const char* names[] = {"interior", "free edge", "corner"};
+  for (Truncation t : {Truncation::Interior, Truncation::Edge, Truncation::Corner})
+    for (bool broken : {false, true}) {
+      FamilyOptions o = base;
+      o.truncation = t;
+      o.broken_bonds = broken;
+      const std::string where = std::string(names[static_cast<int>(t)]) + (broken ? ", broken bonds" : "");
+      TestFamily virgin = make_family(law, o);
+      virgin.use_declared_test_values();
+      out.push_back(check_family(law, virgin, where + ", yielding from virgin (test values)", true));
+      TestFamily f = make_family(law, o);
+      f.use_declared_test_values();
+      f.commit_update(law.damaged);
+      std::mt19937 rng(base.seed + 7919);  // a second, independent random deformation
+      f.set_positions(random_deformation(f, o.strain, std::pow(f.V0, 1.0 / f.dim), rng));
+      out.push_back(check_family(law, f, where + ", committed plastic history", true));
+    }
+}
 }  // namespace
 
 std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed) {
@@ -99,6 +126,7 @@ std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed)
   for (int c = 0; c < collapsed.dim; ++c) y[collapsed.dim + c] = y[c];
   collapsed.set_positions(y);
   out.push_back(check_family(law, collapsed, "collapsed bond", false));
+  if (law.n_history > 0) add_history_checks(law, base, out);
   return out;
 }
 

@@ -21,6 +21,8 @@ struct LawKernelSet {
   KernelProgram energy;
   bool has_outputs = false;
   KernelProgram outputs;
+  bool has_update = false;  // the law carries history: the update kernel writes its new values
+  KernelProgram update;
 };
 
 // `prefix` starts every kernel's function name (e.g. "silling_plane_strain_intact").

@@ -29,6 +29,18 @@ struct OutputDef {
   Expr value;  // per-particle expression
 };
 
+// A per-bond internal variable (Law::bond_history): `committed` is the value at the start
+// of the step, a per-bond input the kernels read from Family::history; `updated` is its
+// value after the step, a function of the committed values and the current deformation,
+// which the update kernel writes and the runtime commits once a step has converged.
+struct HistoryDef {
+  std::string name;  // C identifier, unique in the law
+  double initial = 0.0;
+  Expr committed;  // per-bond input symbol
+  Expr updated;    // per-bond expression (the committed value until Law::update sets it)
+  bool has_update = false;
+};
+
 // How a bond's pair parameter p_ij is formed from its two particles' values; each
 // satisfies p(z, z) = p(z) (paper 001 after eq. 2.3).
 enum class PairMean {
@@ -94,6 +106,17 @@ class Law {
   // deformed bond collapses to zero length (where Y/|Y| would be 0/0). Use it rather
   // than norm(Y()) wherever the law divides by the deformed length.
   Expr deformed_length() const;
+
+  // History (laws with memory). A per-bond internal variable with its initial value; the
+  // returned expression is its committed value at the start of the step. The law writes
+  // the force from the committed values and the current deformation (the return map of a
+  // plastic law, a time-discrete viscous update), and `update` gives the variable's value
+  // at the end of the step. The kernels' tangent is then the algorithmic (consistent)
+  // tangent of the incremental problem: the committed values are inputs, held fixed.
+  Expr bond_history(const std::string& name, double initial);
+  void update(Expr committed, Expr updated);
+  const std::vector<HistoryDef>& history() const { return history_; }
+  bool has_history() const { return !history_.empty(); }
 
   // Horizon sums. Names must be C identifiers; vector and matrix sums get one
   // scalar sum per component, named name_i or name_i_j.
@@ -184,6 +207,7 @@ class Law {
   Expr energy_;
   bool has_energy_ = false;
   std::vector<OutputDef> outputs_;
+  std::vector<HistoryDef> history_;
 };
 
 // An influence function w(r, delta).

@@ -1,0 +1,249 @@
+// Laws with memory (issue 29): the elastic-plastic laws' kernels against an independent,
+// hand-written return map of Mitchell's model (laws/elastic_plastic.cpp states the
+// equations), the algorithmic tangent against central differences of the incremental
+// residual on elastic, yielding and unloading states, an elastic step that leaves the
+// history unchanged to the bit, and non-negative dissipation over a random load path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernel_abi.hpp"
+#include "verify/random_family.hpp"
+#include "verify/tangent_check.hpp"
+
+namespace {
+using pd::verify::FamilyOptions;
+using pd::verify::TestFamily;
+using pd::verify::Truncation;
+
+// Mitchell's return map, written from the equations (not from the generated code).
+struct ReturnMap {
+  std::vector<double> forces;            // [(L+1)*dim] nodal forces
+  std::vector<double> history;           // [L] the plastic extension at the end of the step
+  std::vector<double> deviatoric_force;  // [L] t_d per bond
+  double scale = 1.0;                    // s: 1 elastic, < 1 yielding
+};
+
+ReturnMap return_map(const TestFamily& f) {
+  const int d = f.dim, L = f.bonds();
+  const double K = f.params[0], G = f.params[1], sigma_y = f.params[2];
+  std::vector<double> r(L), l(L), e(L);
+  double m = 0, q = 0;
+  for (int k = 0; k < L; ++k) {
+    double rr = 0, yy = 0;
+    for (int c = 0; c < d; ++c) {
+      rr += f.xi[k * d + c] * f.xi[k * d + c];
+      yy += f.Y[k * d + c] * f.Y[k * d + c];
+    }
+    r[k] = std::sqrt(rr);
+    l[k] = std::sqrt(yy + 1e-16 * rr);  // Law::deformed_length
+    e[k] = l[k] - r[k];
+    m += f.w[k] * f.alpha[k] * rr * f.V[k];
+    q += f.w[k] * f.w[k] * f.alpha[k] * rr * f.V[k];
+  }
+  double theta = 0;
+  for (int k = 0; k < L; ++k) theta += d / m * f.w[k] * f.alpha[k] * r[k] * e[k] * f.V[k];
+  const double c = d == 2 ? 8.0 : 15.0, kappa = d == 2 ? K + G / 3 : K;
+  std::vector<double> ed(L), trial(L);
+  double norm2 = 0;
+  for (int k = 0; k < L; ++k) {
+    ed[k] = e[k] - theta * r[k] / d;
+    trial[k] = c * G / m * f.w[k] * f.alpha[k] * (ed[k] - f.history[k]);
+    norm2 += trial[k] * trial[k] * f.V[k];
+  }
+  const double psi0 = c * c / (d == 2 ? 48.0 : 90.0) * q * sigma_y * sigma_y / (m * m);
+  ReturnMap out;
+  out.scale = norm2 > 2 * psi0 ? std::sqrt(2 * psi0 / norm2) : 1.0;
+  out.forces.assign(static_cast<std::size_t>((L + 1) * d), 0.0);
+  for (int k = 0; k < L; ++k) {
+    out.deviatoric_force.push_back(out.scale * trial[k]);
+    const double t = f.w[k] * f.alpha[k] / m * d * kappa * theta * r[k] + out.scale * trial[k];
+    for (int cc = 0; cc < d; ++cc) {
+      const double fk = f.V0 * f.V[k] * t * f.Y[k * d + cc] / l[k];
+      out.forces[(k + 1) * d + cc] = -fk;
+      out.forces[cc] += fk;
+    }
+    out.history.push_back(f.history[k] + (1 - out.scale) * (ed[k] - f.history[k]));
+  }
+  return out;
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
+  return m;
+}
+
+// y = x + lambda (y - x): the family's deformation scaled back toward the reference.
+void scale_deformation(TestFamily& f, const std::vector<double>& y_full, double lambda) {
+  std::vector<double> y(y_full.size());
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = f.x[i] + lambda * (y_full[i] - f.x[i]);
+  f.set_positions(y);
+}
+
+struct Case {
+  const char* law;
+  Truncation truncation;
+  bool broken;
+};
+std::string case_name(const testing::TestParamInfo<Case>& info) {
+  const char* t[] = {"Interior", "Edge", "Corner"};
+  return std::string(info.param.law) + "_" + t[static_cast<int>(info.param.truncation)] +
+         (info.param.broken ? "_Broken" : "");
+}
+
+class PlasticLaw : public testing::TestWithParam<Case> {
+ protected:
+  const pd::abi::LawDescriptor& law() const {
+    const auto* d = pd::abi::find_law(GetParam().law);
+    EXPECT_NE(d, nullptr);
+    return *d;
+  }
+  TestFamily family(unsigned seed, double sigma_y) const {
+    FamilyOptions o;
+    o.dim = law().dim;
+    o.horizon_ratio = o.dim == 2 ? 3.0 : 2.0;
+    o.truncation = GetParam().truncation;
+    o.broken_bonds = GetParam().broken;
+    o.seed = seed;
+    TestFamily f = pd::verify::make_family(law(), o);
+    f.params[2] = sigma_y;
+    return f;
+  }
+  void expect_tangent_matches_differences(TestFamily& f, const char* state) const {
+    const auto M = f.tangent_matrix(law().damaged);
+    const auto err = pd::verify::block_errors(f, M, f.fd_matrix(law().damaged, 1e-6 * f.delta));
+    EXPECT_LT(err.worst(), 1e-6) << state << ": center " << err.center << ", on-diagonal " << err.on_diagonal
+                                 << ", off-diagonal " << err.off_diagonal << ", coupling "
+                                 << err.center_coupling;
+  }
+};
+
+TEST_P(PlasticLaw, KernelsEqualAnIndependentReturnMap) {
+  int yielding = 0, elastic = 0;
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    // Alternately a low and a high yield stress, from a committed random plastic history.
+    TestFamily f = family(seed, seed % 2 ? 0.01 : 10.0);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-0.05, 0.05);
+    for (double& h : f.history) h = u(rng);
+    const ReturnMap ref = return_map(f);
+    (ref.scale < 1 ? yielding : elastic) += 1;
+    const auto forces = f.forces(law().damaged);
+    EXPECT_LE(max_diff(forces, ref.forces), 1e-12 * max_abs(ref.forces)) << "seed " << seed;
+    const auto history = f.updated_history(law().damaged);
+    EXPECT_LE(max_diff(history, ref.history), 1e-12 * std::max(1e-3, max_abs(ref.history)))
+        << "seed " << seed;
+    std::vector<double> out(static_cast<std::size_t>(law().n_outputs));
+    law().damaged.outputs(f.view(), out.data());
+    for (int i = 0; i < law().n_outputs; ++i)
+      if (std::string(law().output_names[i]) == "yielding") {
+        EXPECT_EQ(out[i], ref.scale < 1 ? 1.0 : 0.0);
+      }
+  }
+  EXPECT_GT(yielding, 0);
+  EXPECT_GT(elastic, 0);
+}
+
+TEST_P(PlasticLaw, AnElasticStepLeavesTheHistoryUnchangedToTheBit) {
+  TestFamily f = family(3, 10.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (double& h : f.history) h = u(rng);
+  ASSERT_EQ(return_map(f).scale, 1.0);
+  const auto history = f.updated_history(law().damaged);
+  for (std::size_t k = 0; k < history.size(); ++k) EXPECT_EQ(history[k], f.history[k]) << "bond " << k;
+}
+
+// Load past yield from a virgin state, commit, then: unload elastically, unload far
+// enough to yield in reverse, and reload past the committed state. The tangent is checked
+// with the committed history fixed (the incremental residual), in each state.
+TEST_P(PlasticLaw, AlgorithmicTangentMatchesDifferencesOnYieldingAndUnloadingStates) {
+  TestFamily f = family(5, 0.01);
+  const std::vector<double> y1 = f.y;
+  const ReturnMap loading = return_map(f);
+  ASSERT_LT(loading.scale, 1.0) << "the first step must yield";
+  expect_tangent_matches_differences(f, "yielding from virgin");
+  f.commit_update(law().damaged);
+  const double s1 = loading.scale;
+  // With e_d - e_p = s1 e_d after the first step, scaling the deformation by lambda gives a
+  // trial norm ((lambda - 1 + s1) / s1)^2 times the yield value (up to the nonlinearity of |Y|).
+  scale_deformation(f, y1, 1 - 0.5 * s1);
+  ASSERT_EQ(return_map(f).scale, 1.0) << "the partial unloading must be elastic";
+  expect_tangent_matches_differences(f, "elastic unloading");
+  scale_deformation(f, y1, 1 - 3 * s1);
+  ASSERT_LT(return_map(f).scale, 1.0) << "the full unloading must yield in reverse";
+  expect_tangent_matches_differences(f, "reverse yielding");
+  scale_deformation(f, y1, 1.5);
+  ASSERT_LT(return_map(f).scale, 1.0) << "the reloading must yield";
+  expect_tangent_matches_differences(f, "reloading past the committed state");
+}
+
+// The plastic work of each step, sum over bonds of V0 V t_d (e_p,n+1 - e_p,n), is never
+// negative over a random load path of loading, unloading and reversal.
+TEST_P(PlasticLaw, DissipationIsNeverNegativeOverARandomPath) {
+  TestFamily f = family(7, 0.01);
+  const std::vector<double> y_ref = f.y;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  double total = 0;
+  int plastic_steps = 0;
+  for (int step = 0; step < 30; ++step) {
+    scale_deformation(f, y_ref, u(rng));
+    const ReturnMap ref = return_map(f);
+    const auto updated = f.updated_history(law().damaged);
+    double work = 0, scale = 0;
+    for (int k = 0; k < f.bonds(); ++k) {
+      const double dw = f.V0 * f.V[k] * ref.deviatoric_force[k] * (updated[k] - f.history[k]);
+      work += dw;
+      scale += std::fabs(dw);
+    }
+    EXPECT_GE(work, -1e-14 * scale) << "step " << step;
+    total += work;
+    plastic_steps += ref.scale < 1;
+    f.commit_update(law().damaged);
+  }
+  EXPECT_GT(plastic_steps, 5);
+  EXPECT_GT(total, 0.0);
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  for (const char* law : {"elastic_plastic_plane_strain", "elastic_plastic_3d"})
+    for (Truncation t : {Truncation::Interior, Truncation::Corner})
+      for (bool broken : {false, true}) out.push_back({law, t, broken});
+  return out;
+}
+INSTANTIATE_TEST_SUITE_P(ElasticPlastic, PlasticLaw, testing::ValuesIn(cases()), case_name);
+
+// Every law that declares history has an update kernel in both variants, names and
+// initial values for each variable; a law without history has none.
+TEST(LawHistory, TheDescriptorDescribesTheHistory) {
+  int with_history = 0;
+  for (const pd::abi::LawDescriptor& law : pd::abi::all_laws()) {
+    if (law.n_history == 0) {
+      EXPECT_EQ(law.damaged.update, nullptr) << law.name;
+      EXPECT_EQ(law.intact.update, nullptr) << law.name;
+      continue;
+    }
+    ++with_history;
+    EXPECT_NE(law.damaged.update, nullptr) << law.name;
+    EXPECT_NE(law.intact.update, nullptr) << law.name;
+    for (int i = 0; i < law.n_history; ++i) {
+      EXPECT_NE(law.history_names[i], nullptr) << law.name;
+      EXPECT_TRUE(std::isfinite(law.history_initial[i])) << law.name;
+    }
+  }
+  EXPECT_GE(with_history, 2);
+}
+
+}  // namespace
