@@ -458,7 +458,7 @@ void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
   outputs[0] = s_theta;
   outputs[1] = 0.6123724356957945 * p11;
-  outputs[2] = (s_trial_deviatoric_norm2 - 2.6666666666666665 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[2] = (s_trial_deviatoric_norm2 - 2.66666664 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
 }
 
 // elastic_plastic_plane_strain_damaged_update: per bond 11 add, 21 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
@@ -1066,7 +1066,7 @@ void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
   outputs[0] = s_theta;
   outputs[1] = 0.6123724356957945 * p11;
-  outputs[2] = (s_trial_deviatoric_norm2 - 2.6666666666666665 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[2] = (s_trial_deviatoric_norm2 - 2.66666664 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
 }
 
 // elastic_plastic_plane_strain_intact_update: per bond 11 add, 18 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
@@ -1787,7 +1787,7 @@ void elastic_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outp
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
   outputs[0] = s_theta;
   outputs[1] = 0.4472135954999579 * p11;
-  outputs[2] = (s_trial_deviatoric_norm2 - 5.0 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[2] = (s_trial_deviatoric_norm2 - 4.999999949999999 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
 }
 
 // elastic_plastic_3d_damaged_update: per bond 13 add, 23 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
@@ -2522,7 +2522,7 @@ void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outpu
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
   outputs[0] = s_theta;
   outputs[1] = 0.4472135954999579 * p11;
-  outputs[2] = (s_trial_deviatoric_norm2 - 5.0 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[2] = (s_trial_deviatoric_norm2 - 4.999999949999999 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
 }
 
 // elastic_plastic_3d_intact_update: per bond 13 add, 20 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call

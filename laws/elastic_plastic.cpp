@@ -65,8 +65,11 @@ Law elastic_plastic(const std::string& name, int dim, const std::string& summary
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   // The elastic response is Silling's (an unyielded body, e_p = 0): the same space.
   law.reproducing_terms(3, 4, 2);
-  law.output("yield_ratio", sqrt(trial_norm2 / (2 * psi0)));  // > 1: the step yields
-  law.output("yielding", select(trial_norm2 - 2 * psi0, Expr(1.0), Expr(0.0)));
+  // Outputs, evaluated with the committed history: after a converged yielding step the
+  // trial state of the same deformation lies on the yield surface (ratio 1 to rounding),
+  // so "yielding" is 1 on or beyond the surface, within a relative 1e-8.
+  law.output("yield_ratio", sqrt(trial_norm2 / (2 * psi0)));
+  law.output("yielding", select(trial_norm2 - (1 - 1e-8) * 2 * psi0, Expr(1.0), Expr(0.0)));
   return law;
 }
 }  // namespace

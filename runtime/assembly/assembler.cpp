@@ -62,6 +62,8 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.params = std::move(params);
   inputs_.scratch_per_bond = law.scratch_per_bond;
   inputs_.collocation = options.collocation;
+  inputs_.history = options.history;
+  inputs_.n_history = law.n_history;
   inputs_.cache_max_bonds();
   update_moments();
   const Coupling coupling = options.coupling.value_or(coupling_of_law(law.n_states));
@@ -291,6 +293,40 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
 }  // namespace pd
 
 namespace pd {
+
+std::vector<double> FamilyAssembler::updated_history(const double* u) const {
+  const int n = inputs_.size(), nh = law_.n_history;
+  const Bonds& B = *inputs_.bonds;
+  std::vector<double> out(B.neighbor.size() * static_cast<std::size_t>(nh));
+  if (nh == 0) return out;
+  for (std::size_t b = 0; b < B.neighbor.size(); ++b)
+    for (int i = 0; i < nh; ++i)
+      out[b * nh + i] = inputs_.history ? inputs_.history[b * nh + i] : law_.history_initial[i];
+  int first_bad = -1;
+  // Each family writes only its own bonds' slice: no colouring needed.
+#pragma omp parallel num_threads(thread_count())
+  {
+    FamilyGather g(inputs_);
+#pragma omp for schedule(static)
+    for (int p = 0; p < n; ++p) {
+      const abi::Family fam = g.gather(p, u);
+      if (!has_intact_bond(fam)) continue;
+      double* slice = out.data() + static_cast<std::ptrdiff_t>(B.offsets[p]) * nh;
+      variant_.update(fam, slice);
+      for (int j = 0; j < fam.n_bonds * nh; ++j)
+        if (!std::isfinite(slice[j])) {
+#pragma omp critical(pd_history_nan)
+          if (first_bad < 0 || p < first_bad) first_bad = p;
+          break;
+        }
+    }
+  }
+  if (first_bad >= 0)
+    throw std::runtime_error(std::string("history update: law ") + law_.name +
+                             " gave a non-finite value in the family of particle " +
+                             std::to_string(first_bad));
+  return out;
+}
 
 double FamilyAssembler::strain_energy(const double* u) const {
   if (variant_.energy == nullptr)

@@ -30,6 +30,10 @@ struct AssemblerOptions {
   // Non-null: make_force_operator integrates the families over these fixed Gauss points
   // (paper 002 §3.3, gauss_point_assembler.hpp); FamilyAssembler refuses them. Must outlive the operator.
   const GaussPoints* gauss_points = nullptr;
+  // A law with memory (LawDescriptor::n_history > 0): the committed per-bond history the
+  // families read, [bonds * n_history] in bond order, owned by the caller (Model) and read
+  // only; null: every bond at the law's initial values. Must outlive the assembler.
+  const double* history = nullptr;
 };
 
 // One code path, assemble(), fills forces, K, or both: families are visited colour by
@@ -75,6 +79,12 @@ class FamilyAssembler final : public ForceOperator {
   double strain_energy(const double* u) const override;
   std::vector<double> particle_outputs(const double* u) const override;
   std::vector<double> stresses(const double* u) const override;
+  // The history at the end of a step to displacement u: the law's update kernel on every
+  // family, [bonds * n_history] in bond order (a family with no intact bond keeps its
+  // committed values). The committed history (options.history) is not touched: the caller
+  // commits the result once the step has converged. Throws std::runtime_error naming the
+  // particle when the update gives a NaN or Inf; empty for a law without history.
+  std::vector<double> updated_history(const double* u) const;
 
   // Throws if options.matrix was false.
   const SparsityPattern& pattern() const override;

@@ -64,6 +64,8 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   f.scratch = scratch_.data();
   f.dilatation_factor = B.surface_dilatation.empty() ? nullptr : B.surface_dilatation.data() + b0;
   f.force_factor = B.surface_force.empty() ? nullptr : B.surface_force.data() + b0;
+  f.history =
+      in_->history == nullptr ? nullptr : in_->history + static_cast<std::ptrdiff_t>(b0) * in_->n_history;
   return f;
 }
 

@@ -24,6 +24,10 @@ struct FamilyInputs {
   int max_bonds = -1;        // largest family; -1 until cache_max_bonds() (then gathers skip the scan)
   // Set for collocation assembly: the families see per-bond quadrature weights as V.
   const Collocation* collocation = nullptr;
+  // A law with memory: the committed per-bond history, [bonds * n_history] in bond order
+  // (Family::history of particle p starts at bond offsets[p]); null: every bond virgin.
+  const double* history = nullptr;
+  int n_history = 0;
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }

@@ -33,21 +33,29 @@ Findings unused_law_parameters(const SceneReading& r) {
 }
 
 // A law with memory (LawDescriptor::n_history > 0) is evaluated from its committed
-// history. The runtime does not yet keep, commit or check-point that history, so every
-// evaluation sees a virgin body: right for one static load step from the unloaded state
-// (one step of the incremental problem), silently wrong for anything that needs the
-// history of earlier steps: several load steps, time steps, relaxation. Those are refused.
+// history, which the serial static driver keeps in the model and commits after every
+// converged load step (Model::commit_history). The other paths do not carry it yet and would
+// evaluate every step from the virgin body, silently wrong after the first: they are refused.
 Findings history_refusals(const SceneReading& r) {
   if (r.law->n_history == 0) return {};
   std::string names;
   for (int i = 0; i < r.law->n_history; ++i) names += (i ? ", " : "") + std::string(r.law->history_names[i]);
-  const std::string why = "law " + r.s.law + " carries history (" + names +
-                          " per bond), which this runtime does not commit between steps yet: ";
-  if (r.s.dynamics) return one(r.section("dynamics"), why + "it runs only as one static load step");
-  if (r.s.solver.load_steps != 1) {
-    const YamlAt solver = r.section("solver");
-    return one(solver.child(solver.node["load_steps"], "load_steps"),
-               why + "give load_steps: 1 (one step from the virgin state)");
+  const std::string why = "law " + r.s.law + " carries history (" + names + " per bond), ";
+  if (r.s.dynamics)
+    return one(r.section("dynamics"),
+               why +
+                   "which only the static driver commits between steps yet: solve it with load_steps "
+                   "(and load_path) instead");
+  const YamlAt solver = r.section("solver");
+  if (r.s.solver.backend == Backend::petsc && r.s.solver.load_steps > 1)
+    return one(solver.child(solver.node["backend"], "backend"),
+               why +
+                   "which the PETSc backend does not carry between load steps yet: use the serial backend "
+                   "(or load_steps: 1)");
+  if (r.s.gauss_points > 0) {
+    const YamlAt domain = r.section("domain");
+    return one(domain.child(domain.node["gauss_points"], "gauss_points"),
+               why + "kept per bond: the Gauss-point families have no bonds to keep it on");
   }
   return {};
 }
@@ -150,7 +158,7 @@ const std::vector<SceneRule> kRules{
                         "the bond families only; use the serial backend")
                   : Findings{};
      }},
-    {"a law with history runs one static step from the virgin state", Section::dynamics, false,
+    {"a law with history runs where its history is committed", Section::dynamics, false,
      [](const SceneReading& r) { return history_refusals(r); }},
     {"damage.max_resolves belongs to static runs", Section::damage, false,
      [](const SceneReading& r) {

@@ -52,6 +52,19 @@ SolverSpec read_solver(const YamlAt& at) {
         "(-ksp_type, -pc_type); leave linear at auto");
   s.load_steps = sv.integer("load_steps", 1);
   if (s.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
+  if (sv.has("load_path")) {
+    s.load_path = sv.numbers("load_path");
+    const YamlAt at = sv.get("load_path");
+    const auto segments = static_cast<int>(s.load_path.size()) - 1;
+    if (segments < 1) at.fail("load_path needs at least two values (the load factor at 0 and at 1)");
+    if (s.load_path.front() != 0.0)
+      at.fail("load_path starts from the unloaded body: its first value must be 0");
+    if (s.load_steps % segments != 0)
+      at.fail(
+          fmt::format("load_steps ({}) must be a multiple of the path's {} segments, so that every turning "
+                      "point is a load step",
+                      s.load_steps, segments));
+  }
   s.tolerance = sv.number("tolerance", 1e-10);
   s.max_iterations = sv.integer("max_iterations", 30);
   s.increment_tolerance = sv.number("increment_tolerance", 1e-9);

@@ -6,6 +6,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "input/enum_names.hpp"
 
@@ -59,6 +60,9 @@ struct SolverSpec {
   double preconditioner_ratio = 2.0;  // matrix_free short_horizon: delta/h of the preconditioning stiffness
   NonlinearMethod nonlinear = NonlinearMethod::newton;  // the only one so far; the key keeps scenes explicit
   int load_steps = 1;
+  // solver.load_path: the load factor at the equally spaced pseudo-times 0, 1/K, ..., 1 (K
+  // segments, linear between); it may unload and reverse. Empty: proportional, i / load_steps.
+  std::vector<double> load_path;
   double tolerance = 1e-10;           // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
   int max_iterations = 30;

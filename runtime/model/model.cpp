@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
@@ -141,11 +142,22 @@ DiscretizedBody::DiscretizedBody(const Scene& scene) {
 Model::Model(const Scene& scene, const Planner& planner) : DiscretizedBody(scene) {
   const auto t0 = std::chrono::steady_clock::now();
   const ModelPlan plan = planner(*this);
+  for (std::size_t b = 0; law->n_history > 0 && b < bonds.neighbor.size(); ++b)
+    bond_history.insert(bond_history.end(), law->history_initial, law->history_initial + law->n_history);
   // The short horizon first: the damage effect breaks its bonds with the real ones.
   if (plan.short_delta) build_short_horizon(scene, *plan.short_delta);
   build_assembler(scene, plan);
   build_effects(scene);
   build_seconds += seconds_since(t0);
+}
+
+void Model::commit_history(const double* u) {
+  if (bond_history.empty()) return;
+  const FamilyAssembler* families = assembler->bond_families();
+  if (families == nullptr)
+    throw std::logic_error("commit_history: a law with history needs the bond-family assembler");
+  const std::vector<double> updated = families->updated_history(u);
+  std::copy(updated.begin(), updated.end(), bond_history.begin());  // in place: the assembler points here
 }
 
 void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
@@ -156,6 +168,7 @@ void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
   options.threads = plan.threads;
   options.collocation = collocation.get();
   options.gauss_points = gauss_points.get();
+  options.history = bond_history.empty() ? nullptr : bond_history.data();
   assembler = make_force_operator(particles, bonds, *law, params, options);
   assembler_options = options;
 }

@@ -85,6 +85,15 @@ struct Model : DiscretizedBody {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
+  // A law with memory: the committed per-bond history, [bonds * law.n_history] in bond order,
+  // every bond at the law's initial values until commit_history; the assembler reads it
+  // (AssemblerOptions::history). Empty for a law without history.
+  std::vector<double> bond_history;
+  // Commits a converged step: the history becomes the law's update at displacement u
+  // (FamilyAssembler::updated_history). Call only with a converged solution: a failed or
+  // trial state must never reach the history. No-op for a law without history.
+  void commit_history(const double* u);
+
   std::unique_ptr<ForceOperator> assembler;  // the intact kernels unless a bond is cut or can break
   AssemblerOptions assembler_options;        // the options it was built with
   // ModelPlan::short_delta: the same law on a shorter horizon, whose factorised stiffness

@@ -207,7 +207,7 @@ void solve_load_steps(const DistributedProblem& pb, const SnesHandles& h, SnesCo
   const Partition& part = body.partition();
   Eigen::VectorXd target(u.size());
   for (int step = 1; step <= s.load_steps && result.message.empty(); ++step) {
-    c.step = step, c.load = static_cast<double>(step) / s.load_steps, c.round = 0;
+    c.step = step, c.load = s.load_at(step), c.round = 0;
     target = u;
     pb.dofs->apply_prescribed(target, c.load);
     c.target_full.assign(target.data(), target.data() + target.size());

@@ -11,6 +11,14 @@ void describe_model(RunSummary& summary, const Model& model, const Scene& scene)
   summary.variant = model.assembler_options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name,
                                         summary.variant, model.influence->name));
+  if (model.law->n_history > 0) {
+    std::string names;
+    for (int i = 0; i < model.law->n_history; ++i)
+      names += (i ? ", " : "") + std::string(model.law->history_names[i]);
+    summary.effects.push_back(
+        fmt::format("history: {} per bond ({} values, {:.3g} MB), committed after each converged load step",
+                    names, model.bond_history.size(), 8e-6 * static_cast<double>(model.bond_history.size())));
+  }
   for (const auto& e : model.effects) summary.effects.push_back(e->describe());
 }
 

@@ -30,6 +30,8 @@ class Simulation {
   const Particles& particles() const { return model_.particles; }
   const Bonds& bonds() const { return model_.bonds; }
   const std::vector<double>& displacement() const { return run_.u; }
+  // A law with memory: the committed per-bond history after the run (Model::bond_history).
+  const std::vector<double>& bond_history() const { return model_.bond_history; }
   // The displacement smoothed by output.smoothing (empty without it).
   const std::vector<double>& smoothed_displacement() const { return run_.u_smooth; }
   const Scene& scene() const { return scene_; }

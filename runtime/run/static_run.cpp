@@ -25,6 +25,7 @@ namespace {
 NewtonSettings newton_settings(const SolverSpec& sv, const SolverPlan& plan) {
   NewtonSettings s;
   s.load_steps = sv.load_steps;
+  s.load_path = sv.load_path;
   s.max_iterations = sv.max_iterations;
   s.relative_tolerance = sv.tolerance;
   s.increment_tolerance = sv.increment_tolerance;
@@ -81,12 +82,16 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
 
 // After a converged load step every effect may change the model (damage evolution
 // breaks bonds and updates the moments: effects/damage_evolution.cpp); any change
-// means the step is solved again on the changed system.
-long long after_load_step(const Model& model, const Scene& scene, const RunLog& log, int step, double load,
+// means the step is solved again on the changed system. A step that stands commits the
+// law's history (a law with memory): only converged, final states reach it.
+long long after_load_step(Model& model, const Scene& scene, const RunLog& log, int step, double load,
                           const Eigen::VectorXd& u) {
   long long changes = 0;
   for (const auto& e : model.effects) changes += e->after_step(u.data(), FamilyScope{});
-  if (changes == 0) return 0;
+  if (changes == 0) {
+    model.commit_history(u.data());
+    return 0;
+  }
   log(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again",
                   load, step, scene.solver.load_steps, changes, broken_bond_count(model.bonds)));
   // A piece cut loose by the new crack faces would make K singular: say which.

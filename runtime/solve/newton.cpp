@@ -324,7 +324,7 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
       });
 
   for (int step = 1; step <= s_.load_steps; ++step) {
-    const double load = static_cast<double>(step) / s_.load_steps;
+    const double load = s_.load_at(step);
     dofs.apply_prescribed(u, load);
     for (int round = 0;; ++round) {
       if (!iterations.run(step, load, round)) return res;
@@ -344,6 +344,20 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
   }
   res.converged = true;
   return res;
+}
+
+double NewtonSettings::load_at(int step) const {
+  const double s = static_cast<double>(step) / load_steps;
+  if (load_path.size() < 2) return s;
+  const auto segments = static_cast<int>(load_path.size()) - 1;
+  const double at = s * segments;
+  const int k = std::min(static_cast<int>(at), segments - 1);
+  const double frac = at - k;
+  // Exactly the path's value at its points (step i of a multiple of the segments).
+  return frac == 0.0
+             ? load_path[static_cast<std::size_t>(k)]
+             : load_path[static_cast<std::size_t>(k)] + frac * (load_path[static_cast<std::size_t>(k) + 1] -
+                                                                load_path[static_cast<std::size_t>(k)]);
 }
 
 }  // namespace pd

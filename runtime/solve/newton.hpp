@@ -48,6 +48,11 @@ enum class MatrixFreePreconditioner { jacobi, approximate_tangent };
 
 struct NewtonSettings {
   int load_steps = 1;
+  // The load factor along the steps (solver.load_path): values at the equally spaced
+  // pseudo-times 0, 1/K, ..., 1 of its K segments, linear between; load step i solves at
+  // the factor at i / load_steps. Empty: proportional loading, factor i / load_steps.
+  std::vector<double> load_path;
+  double load_at(int step) const;
   int max_iterations = 25;            // per load step
   double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
   double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
