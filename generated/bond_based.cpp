@@ -526,8 +526,11 @@ void bond_based_constant_2d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_2d";
@@ -536,9 +539,13 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -1099,8 +1106,11 @@ void bond_based_conical_2d_intact_form(const pd::abi::Family& fam, const pd::abi
 pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   static const char* const params[] = {"kappa2", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_2d";
@@ -1109,9 +1119,13 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -1880,8 +1894,11 @@ void bond_based_constant_3d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_constant_3d";
@@ -1890,9 +1907,13 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2665,8 +2686,11 @@ void bond_based_conical_3d_intact_form(const pd::abi::Family& fam, const pd::abi
 pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   static const char* const params[] = {"K", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {nullptr};
   pd::abi::LawDescriptor d;
   d.name = "bond_based_conical_3d";
@@ -2675,9 +2699,13 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.n_params = 1;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 0;
   d.output_names = outputs;
   d.balances_angular_momentum = true;

@@ -1075,8 +1075,11 @@ void correspondence_plane_strain_intact_form(const pd::abi::Family& fam, const p
 pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_plane_strain";
@@ -1085,9 +1088,13 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -3225,8 +3232,11 @@ void correspondence_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Ta
 pd::abi::LawDescriptor correspondence_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_3d";
@@ -3235,9 +3245,13 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -4545,8 +4559,11 @@ void correspondence_silling_plane_strain_intact_form(const pd::abi::Family& fam,
 pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_plane_strain";
@@ -4555,9 +4572,13 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -6935,8 +6956,11 @@ void correspondence_silling_3d_intact_form(const pd::abi::Family& fam, const pd:
 pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", "stab", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_silling_3d";
@@ -6945,9 +6969,13 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -8216,8 +8244,11 @@ void correspondence_littlewood_plane_strain_intact_form(const pd::abi::Family& f
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_11", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_plane_strain";
@@ -8226,9 +8257,13 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 3;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };
@@ -10605,8 +10640,11 @@ void correspondence_littlewood_3d_intact_form(const pd::abi::Family& fam, const 
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   static const char* const params[] = {"K", "G", "hourglass", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 1.0, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"strain_00", "strain_01", "strain_02", "strain_11", "strain_12", "strain_22", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "correspondence_littlewood_3d";
@@ -10615,9 +10653,13 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 6;
   d.output_names = outputs;
   static const pd::abi::MonomialGroup reproducing_groups[] = {{1, 2, 0}, };

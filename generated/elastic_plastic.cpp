@@ -400,7 +400,7 @@ void elastic_plastic_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// elastic_plastic_plane_strain_damaged_outputs: per bond 7 add, 19 mul, 0 div, 2 call; per family 2 add, 17 mul, 4 div, 1 call
+// elastic_plastic_plane_strain_damaged_outputs: per bond 7 add, 23 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -408,9 +408,24 @@ void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
   const double s_deviatoric_moment = fam.moments[1];
   const double P_sigma_y = fam.params[2];
   double* const cache = fam.scratch;
+  double s_plastic_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_plastic_extension * H_plastic_extension * V * alpha * w;
+    }
+  }
+  s_plastic_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -429,15 +444,15 @@ void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   double s_trial_deviatoric_norm2 = 0.0;
   const double p4 = 1.0 / s_m;
   const double p5 = 64.0 * (p4 * p4) * (P_G * P_G);
   const double p6 = 0.5 * s_theta;
-  double lane1[4] = {};
+  double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -450,19 +465,22 @@ void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, do
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b9 = b8 - b7 - p6 * b7 - H_plastic_extension;
-    lane1[lane] += p5 * (b9 * b9) * V * (alpha * alpha) * (w * w);
+    lane2[lane] += p5 * (b9 * b9) * V * (alpha * alpha) * (w * w);
     }
   }
-  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   const double p10 = 1.0 / P_sigma_y;
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
+  const double p12 = std::sqrt(s_plastic_moment * p4);
   outputs[0] = s_theta;
   outputs[1] = 0.6123724356957945 * p11;
   outputs[2] = (s_trial_deviatoric_norm2 - 2.66666664 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[3] = p12;
 }
 
 // elastic_plastic_plane_strain_damaged_update: per bond 11 add, 21 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
-void elastic_plastic_plane_strain_damaged_update(const pd::abi::Family& fam, double* history_out) {
+void elastic_plastic_plane_strain_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out) {
+  static_cast<void>(particle_history_out);
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double P_G = fam.params[1];
@@ -1010,7 +1028,7 @@ void elastic_plastic_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
-// elastic_plastic_plane_strain_intact_outputs: per bond 7 add, 16 mul, 0 div, 2 call; per family 2 add, 17 mul, 4 div, 1 call
+// elastic_plastic_plane_strain_intact_outputs: per bond 7 add, 19 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1018,9 +1036,23 @@ void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
   const double s_deviatoric_moment = fam.moments[1];
   const double P_sigma_y = fam.params[2];
   double* const cache = fam.scratch;
+  double s_plastic_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_plastic_extension * H_plastic_extension * V * w;
+    }
+  }
+  s_plastic_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -1038,15 +1070,15 @@ void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   double s_trial_deviatoric_norm2 = 0.0;
   const double p4 = 1.0 / s_m;
   const double p5 = 64.0 * (p4 * p4) * (P_G * P_G);
   const double p6 = 0.5 * s_theta;
-  double lane1[4] = {};
+  double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -1058,19 +1090,22 @@ void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, dou
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b9 = b8 - b7 - p6 * b7 - H_plastic_extension;
-    lane1[lane] += p5 * (b9 * b9) * V * (w * w);
+    lane2[lane] += p5 * (b9 * b9) * V * (w * w);
     }
   }
-  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   const double p10 = 1.0 / P_sigma_y;
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
+  const double p12 = std::sqrt(s_plastic_moment * p4);
   outputs[0] = s_theta;
   outputs[1] = 0.6123724356957945 * p11;
   outputs[2] = (s_trial_deviatoric_norm2 - 2.66666664 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[3] = p12;
 }
 
 // elastic_plastic_plane_strain_intact_update: per bond 11 add, 18 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
-void elastic_plastic_plane_strain_intact_update(const pd::abi::Family& fam, double* history_out) {
+void elastic_plastic_plane_strain_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out) {
+  static_cast<void>(particle_history_out);
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double P_G = fam.params[1];
@@ -1238,9 +1273,12 @@ void elastic_plastic_plane_strain_intact_form(const pd::abi::Family& fam, const 
 pd::abi::LawDescriptor elastic_plastic_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", "sigma_y", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.01, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::positive, pd::abi::ParamRange::any};
   static const char* const history_names[] = {"plastic_extension", nullptr};
   static const double history_initial[] = {0.0, 0.0};
-  static const char* const outputs[] = {"dilatation", "yield_ratio", "yielding", nullptr};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
+  static const char* const outputs[] = {"dilatation", "yield_ratio", "yielding", "plastic_strain", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "elastic_plastic_plane_strain";
   d.summary = "Mitchell's ordinary state-based elastic-perfectly-plastic law (SAND2011-3166; Peridigm's Elastic Plastic), plane strain; params K (3D bulk), G, sigma_y; history plastic_extension per bond";
@@ -1248,10 +1286,14 @@ pd::abi::LawDescriptor elastic_plastic_plane_strain_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 1;
   d.history_names = history_names;
   d.history_initial = history_initial;
-  d.n_outputs = 3;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
+  d.n_outputs = 4;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
@@ -1727,7 +1769,7 @@ void elastic_plastic_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
-// elastic_plastic_3d_damaged_outputs: per bond 9 add, 21 mul, 0 div, 2 call; per family 2 add, 17 mul, 4 div, 1 call
+// elastic_plastic_3d_damaged_outputs: per bond 9 add, 25 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -1735,9 +1777,24 @@ void elastic_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outp
   const double s_deviatoric_moment = fam.moments[1];
   const double P_sigma_y = fam.params[2];
   double* const cache = fam.scratch;
+  double s_plastic_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_plastic_extension * H_plastic_extension * V * alpha * w;
+    }
+  }
+  s_plastic_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -1758,15 +1815,15 @@ void elastic_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outp
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   double s_trial_deviatoric_norm2 = 0.0;
   const double p4 = 1.0 / s_m;
   const double p5 = 225.0 * (p4 * p4) * (P_G * P_G);
   const double p6 = 0.3333333333333333 * s_theta;
-  double lane1[4] = {};
+  double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -1779,19 +1836,22 @@ void elastic_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outp
     const double alpha = fam.alpha[k];
     const double w = fam.w[k];
     const double b9 = b8 - b7 - p6 * b7 - H_plastic_extension;
-    lane1[lane] += p5 * (b9 * b9) * V * (alpha * alpha) * (w * w);
+    lane2[lane] += p5 * (b9 * b9) * V * (alpha * alpha) * (w * w);
     }
   }
-  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   const double p10 = 1.0 / P_sigma_y;
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
+  const double p12 = std::sqrt(s_plastic_moment * p4);
   outputs[0] = s_theta;
   outputs[1] = 0.4472135954999579 * p11;
   outputs[2] = (s_trial_deviatoric_norm2 - 4.999999949999999 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[3] = p12;
 }
 
 // elastic_plastic_3d_damaged_update: per bond 13 add, 23 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
-void elastic_plastic_3d_damaged_update(const pd::abi::Family& fam, double* history_out) {
+void elastic_plastic_3d_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out) {
+  static_cast<void>(particle_history_out);
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double P_G = fam.params[1];
@@ -2464,7 +2524,7 @@ void elastic_plastic_3d_intact_jvp(const pd::abi::Family& fam, const double* dy,
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
-// elastic_plastic_3d_intact_outputs: per bond 9 add, 18 mul, 0 div, 2 call; per family 2 add, 17 mul, 4 div, 1 call
+// elastic_plastic_3d_intact_outputs: per bond 9 add, 21 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
@@ -2472,9 +2532,23 @@ void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outpu
   const double s_deviatoric_moment = fam.moments[1];
   const double P_sigma_y = fam.params[2];
   double* const cache = fam.scratch;
+  double s_plastic_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_plastic_extension * H_plastic_extension * V * w;
+    }
+  }
+  s_plastic_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -2494,15 +2568,15 @@ void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outpu
     cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
     const double b3 = std::sqrt(b1);
     cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   double s_trial_deviatoric_norm2 = 0.0;
   const double p4 = 1.0 / s_m;
   const double p5 = 225.0 * (p4 * p4) * (P_G * P_G);
   const double p6 = 0.3333333333333333 * s_theta;
-  double lane1[4] = {};
+  double lane2[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -2514,19 +2588,22 @@ void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outpu
     const double V = fam.V[k];
     const double w = fam.w[k];
     const double b9 = b8 - b7 - p6 * b7 - H_plastic_extension;
-    lane1[lane] += p5 * (b9 * b9) * V * (w * w);
+    lane2[lane] += p5 * (b9 * b9) * V * (w * w);
     }
   }
-  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   const double p10 = 1.0 / P_sigma_y;
   const double p11 = std::sqrt(s_trial_deviatoric_norm2 * (1.0 / s_deviatoric_moment) * (s_m * s_m) * (p10 * p10));
+  const double p12 = std::sqrt(s_plastic_moment * p4);
   outputs[0] = s_theta;
   outputs[1] = 0.4472135954999579 * p11;
   outputs[2] = (s_trial_deviatoric_norm2 - 4.999999949999999 * s_deviatoric_moment * (p4 * p4) * (P_sigma_y * P_sigma_y) > 0.0 ? 1.0 : 0.0);
+  outputs[3] = p12;
 }
 
 // elastic_plastic_3d_intact_update: per bond 13 add, 20 mul, 0 div, 2 call; per family 4 add, 15 mul, 3 div, 1 call
-void elastic_plastic_3d_intact_update(const pd::abi::Family& fam, double* history_out) {
+void elastic_plastic_3d_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out) {
+  static_cast<void>(particle_history_out);
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
   const double P_G = fam.params[1];
@@ -2769,9 +2846,12 @@ void elastic_plastic_3d_intact_form(const pd::abi::Family& fam, const pd::abi::T
 pd::abi::LawDescriptor elastic_plastic_3d_descriptor() {
   static const char* const params[] = {"K", "G", "sigma_y", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.01, 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::positive, pd::abi::ParamRange::any};
   static const char* const history_names[] = {"plastic_extension", nullptr};
   static const double history_initial[] = {0.0, 0.0};
-  static const char* const outputs[] = {"dilatation", "yield_ratio", "yielding", nullptr};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
+  static const char* const outputs[] = {"dilatation", "yield_ratio", "yielding", "plastic_strain", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "elastic_plastic_3d";
   d.summary = "Mitchell's ordinary state-based elastic-perfectly-plastic law (SAND2011-3166; Peridigm's Elastic Plastic), 3D; params K, G, sigma_y; history plastic_extension per bond";
@@ -2779,10 +2859,14 @@ pd::abi::LawDescriptor elastic_plastic_3d_descriptor() {
   d.n_params = 3;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 1;
   d.history_names = history_names;
   d.history_initial = history_initial;
-  d.n_outputs = 3;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
+  d.n_outputs = 4;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;

@@ -6,6 +6,7 @@
 #include "bond_based.hpp"
 #include "correspondence.hpp"
 #include "elastic_plastic.hpp"
+#include "elastic_plastic_hardening.hpp"
 #include "influence.hpp"
 #include "lps.hpp"
 #include "oterkus.hpp"
@@ -27,6 +28,8 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::correspondence_littlewood_3d_descriptor(),
       pd::generated::elastic_plastic_plane_strain_descriptor(),
       pd::generated::elastic_plastic_3d_descriptor(),
+      pd::generated::elastic_plastic_hardening_plane_strain_descriptor(),
+      pd::generated::elastic_plastic_hardening_3d_descriptor(),
       pd::generated::lps_plane_strain_descriptor(),
       pd::generated::lps_3d_descriptor(),
       pd::generated::lps_corrected_plane_strain_descriptor(),
@@ -41,7 +44,7 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 25);
+  return std::span<const LawDescriptor>(table, 27);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

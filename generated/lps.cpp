@@ -778,8 +778,11 @@ void lps_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::Tan
 pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_plane_strain";
@@ -788,9 +791,13 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -1827,8 +1834,11 @@ void lps_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactor
 pd::abi::LawDescriptor lps_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_3d";
@@ -1837,9 +1847,13 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -2915,8 +2929,11 @@ void lps_corrected_plane_strain_intact_form(const pd::abi::Family& fam, const pd
 pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_plane_strain";
@@ -2925,9 +2942,13 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -4555,8 +4576,11 @@ void lps_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Tan
 pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_corrected_3d";
@@ -4565,9 +4589,13 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -5348,8 +5376,11 @@ void lps_paper_plane_strain_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_plane_strain";
@@ -5358,9 +5389,13 @@ pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -6382,8 +6417,11 @@ void lps_paper_3d_intact_form(const pd::abi::Family& fam, const pd::abi::Tangent
 pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_3d";
@@ -6392,9 +6430,13 @@ pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -7336,8 +7378,11 @@ void lps_paper_corrected_plane_strain_intact_form(const pd::abi::Family& fam, co
 pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_corrected_plane_strain";
@@ -7346,9 +7391,13 @@ pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;
@@ -8788,8 +8837,11 @@ void lps_paper_corrected_3d_intact_form(const pd::abi::Family& fam, const pd::ab
 pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   static const char* const params[] = {"lambda", "mu", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "lps_paper_corrected_3d";
@@ -8798,9 +8850,13 @@ pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.has_dilatation_sum = true;

@@ -880,8 +880,11 @@ void oterkus_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi:
 pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_plane_strain";
@@ -890,9 +893,13 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2031,8 +2038,11 @@ void oterkus_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFa
 pd::abi::LawDescriptor oterkus_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_3d";
@@ -2041,9 +2051,13 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2930,8 +2944,11 @@ void oterkus_paper_d_plane_strain_intact_form(const pd::abi::Family& fam, const 
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   static const char* const params[] = {"kappa2", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "oterkus_paper_d_plane_strain";
@@ -2940,9 +2957,13 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;

@@ -888,8 +888,11 @@ void silling_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi:
 pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_plane_strain";
@@ -898,9 +901,13 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
@@ -2051,8 +2058,11 @@ void silling_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFa
 pd::abi::LawDescriptor silling_3d_descriptor() {
   static const char* const params[] = {"K", "G", nullptr};
   static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
   static const char* const history_names[] = {nullptr};
   static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
   static const char* const outputs[] = {"dilatation", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "silling_3d";
@@ -2061,9 +2071,13 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.n_params = 2;
   d.param_names = params;
   d.param_test_values = test_values;
+  d.param_ranges = ranges;
   d.n_history = 0;
   d.history_names = history_names;
   d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
   d.n_outputs = 1;
   d.output_names = outputs;
   d.balances_angular_momentum = true;

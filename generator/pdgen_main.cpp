@@ -49,7 +49,9 @@ GeneratedFiles generate() {
     try {
       const Law law = e.build();
       if (!law.has_force()) throw std::invalid_argument("the law declares no force state: call law.force(t)");
-      for (const HistoryDef& h : law.history())
+      std::vector<HistoryDef> all_history = law.history();
+      all_history.insert(all_history.end(), law.particle_history().begin(), law.particle_history().end());
+      for (const HistoryDef& h : all_history)
         if (!h.has_update)
           throw std::invalid_argument("history '" + h.name +
                                       "' is declared but never updated: call law.update");

@@ -31,6 +31,7 @@
 // in-plane deviatoric extension (Mitchell's 2D reading); it is von Mises for in-plane
 // deviatoric states (pure shear), not for plane-strain states whose in-plane dilatation
 // puts a deviator into the out-of-plane direction (docs/laws.md).
+#include "mitchell_plastic.hpp"
 #include "pdgen/dsl.hpp"
 
 using namespace pdgen;
@@ -42,26 +43,17 @@ Law elastic_plastic(const std::string& name, int dim, const std::string& summary
   // The test value yields the automatic checks' random families (strain ~ 0.05, G ~ 0.4),
   // so their tangent checks exercise the plastic branch; tests/laws/test_history.cpp
   // covers the elastic and unloading branches.
-  const Expr sigma_y = law.param("sigma_y", 0.01);
-  const Expr r = norm(law.xi()), l = law.deformed_length();
-  const Expr e = l - r;
-  const Expr wa = law.w() * law.alpha();
-  const Expr m = law.sum("m", wa * r * r * law.V());
-  const Expr q = law.sum("deviatoric_moment", law.w() * wa * r * r * law.V());
-  const double n = dim;
-  const Expr theta = law.dilatation_sum("theta", Expr(n) / m * wa * r * e * law.V());
-  const Expr ed = e - theta * r / n;
+  const Expr sigma_y = law.param("sigma_y", 0.01, ParamRange::positive);
+  const MitchellElasticPart p = mitchell_elastic_part(law, dim, K, G);
   const Expr ep = law.bond_history("plastic_extension", 0.0);
-  const Expr kappa = dim == 2 ? K + G / 3 : K;
-  const double c = dim == 2 ? 8.0 : 15.0;
-  const Expr trial = c * G / m * wa * (ed - ep);  // t_tr, the trial deviatoric force state
+  const Expr trial = p.stiffness * p.wa * (p.ed - ep);  // t_tr, the trial deviatoric force state
   const Expr trial_norm2 = law.sum("trial_deviatoric_norm2", trial * trial * law.V());
-  const Expr psi0 = c * c / (dim == 2 ? 48.0 : 90.0) * q * sigma_y * sigma_y / (m * m);
+  const Expr psi0 = p.c * p.c / (dim == 2 ? 48.0 : 90.0) * p.q * sigma_y * sigma_y / (p.m * p.m);
   // Exactly 1 on the elastic branch (not 2 psi0 / 2 psi0 rounded), so that an elastic step
   // leaves e_p unchanged to the bit; the max keeps the unused branch finite at zero strain.
   const Expr scale = select(trial_norm2 - 2 * psi0, sqrt(2 * psi0 / max(trial_norm2, 2 * psi0)), Expr(1.0));
-  law.force((wa / m * n * kappa * theta * r + scale * trial) * law.Y() / l);
-  law.update(ep, ep + (1 - scale) * (ed - ep));
+  law.force((p.dilatation_force + scale * trial) * law.Y() / p.l);
+  law.update(ep, ep + (1 - scale) * (p.ed - ep));
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   // The elastic response is Silling's (an unyielded body, e_p = 0): the same space.
   law.reproducing_terms(3, 4, 2);
@@ -70,6 +62,9 @@ Law elastic_plastic(const std::string& name, int dim, const std::string& summary
   // so "yielding" is 1 on or beyond the surface, within a relative 1e-8.
   law.output("yield_ratio", sqrt(trial_norm2 / (2 * psi0)));
   law.output("yielding", select(trial_norm2 - (1 - 1e-8) * 2 * psi0, Expr(1.0), Expr(0.0)));
+  // The plastic extension's size at the particle: the rms plastic bond strain e_p / |xi|
+  // over the family, weighted as m weights the bonds (0 in a virgin body).
+  law.output("plastic_strain", sqrt(law.sum("plastic_moment", p.wa * ep * ep * law.V()) / p.m));
   return law;
 }
 }  // namespace

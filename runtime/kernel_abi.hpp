@@ -53,6 +53,10 @@ struct Family {
   // runtime commits only once the step has converged. Null: every bond at the law's
   // initial values (LawDescriptor::history_initial), a virgin body.
   const double* history = nullptr;
+  // The center particle's committed internal variables (LawDescriptor::n_particle_history >
+  // 0), [n_particle_history]: read-only, as `history`. Null: the law's initial values
+  // (LawDescriptor::particle_history_initial).
+  const double* particle_history = nullptr;
 };
 
 // Factored tangent of one family. With T_ik = d t_i / d Y_k (bond i's force state
@@ -88,10 +92,12 @@ using FormKernel = void (*)(const Family&, const TangentFactors& factors, double
 using EnergyKernel = double (*)(const Family&);
 // Per-particle derived quantities for output (dilatation, strain, ...).
 using OutputsKernel = void (*)(const Family&, double* outputs);
-// The history at the end of the step, [L*n_history] bond-major, from Family::history (the
-// committed values) and the current deformation: the law's update (plastic return map,
-// viscous update). Null when the law has no history.
-using UpdateKernel = void (*)(const Family&, double* history_out);
+// The history at the end of the step from the committed values (Family::history,
+// Family::particle_history) and the current deformation: the law's update (plastic return
+// map, viscous update). Writes history_out [L*n_history] bond-major and
+// particle_history_out [n_particle_history] (each may be null when its count is 0). Null
+// when the law has no history.
+using UpdateKernel = void (*)(const Family&, double* history_out, double* particle_history_out);
 
 struct OpCounts {
   int adds = 0, muls = 0, divs = 0, calls = 0;  // calls: sqrt, pow, exp, log, ...
@@ -105,7 +111,7 @@ struct KernelVariant {
   FormKernel form = nullptr;                    // may be null (hand-written laws)
   EnergyKernel energy = nullptr;                // may be null
   OutputsKernel outputs = nullptr;              // may be null when n_outputs == 0
-  UpdateKernel update = nullptr;                // null when n_history == 0
+  UpdateKernel update = nullptr;                // null when the law has no history
   OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
 };
 
@@ -124,6 +130,9 @@ struct RadialTerm {
   int power = 0;
 };
 
+// The values a material parameter may take (pdgen ParamRange, in the same order).
+enum class ParamRange : int { any = 0, positive = 1, non_negative = 2 };
+
 struct LawDescriptor {
   const char* name = "";
   const char* summary = "";
@@ -133,6 +142,9 @@ struct LawDescriptor {
   // [n_params] the value the automatic law tests give each parameter; NaN where the
   // law declares none (elastic names are derived from the material instead).
   const double* param_test_values = nullptr;
+  // [n_params] the range each parameter's value must lie in; the scene reader refuses a
+  // material outside it. Null: every parameter may take any value.
+  const ParamRange* param_ranges = nullptr;
   int n_moments = 0;
   int n_states = 0;  // scalar state components (the s index of TangentFactors)
   int n_outputs = 0;
@@ -142,6 +154,10 @@ struct LawDescriptor {
   int n_history = 0;
   const char* const* history_names = nullptr;
   const double* history_initial = nullptr;
+  // Per-particle internal variables (Family::particle_history), likewise; 0: none.
+  int n_particle_history = 0;
+  const char* const* particle_history_names = nullptr;
+  const double* particle_history_initial = nullptr;
   int scratch_per_bond = 0;  // doubles per bond of Family::scratch any kernel of the law uses
   // The law claims sum_k Y_k x t_k = 0 (angular momentum balance) for every deformation.
   bool balances_angular_momentum = false;
@@ -180,6 +196,9 @@ struct LawDescriptor {
 
 // The pair means a law's pair parameters use (paper 001 eq. 2.4 and the arithmetic one).
 // Equal values give that value exactly, so a body of one material is unchanged to the bit.
+// A law with memory: it carries per-bond or per-particle internal variables.
+inline bool has_history(const LawDescriptor& d) { return d.n_history > 0 || d.n_particle_history > 0; }
+
 inline double harmonic_mean(double a, double b) { return a == b ? a : 2.0 * a * b / (a + b); }
 inline double arithmetic_mean(double a, double b) { return a == b ? a : 0.5 * (a + b); }
 

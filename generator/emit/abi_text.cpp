@@ -32,7 +32,9 @@ Signature signature(Kernel k) {
     case Kernel::Outputs:
       return {"void", {kFamily, "double* outputs"}, {"fam", "outputs"}};
     case Kernel::Update:
-      return {"void", {kFamily, "double* history_out"}, {"fam", "history_out"}};
+      return {"void",
+              {kFamily, "double* history_out", "double* particle_history_out"},
+              {"fam", "history_out", "particle_history_out"}};
     case Kernel::Influence:
       return {"double", {"double r", "double delta"}, {"r", "delta"}};
   }
@@ -60,6 +62,11 @@ std::string history_input(int i, int n_history, double initial) {
 std::string history_output(int i, int n_history) {
   return "history_out[k * " + str(n_history) + " + " + str(i) + "]";
 }
+std::string particle_history_input(int i, double initial) {
+  return "(fam.particle_history != nullptr ? fam.particle_history[" + str(i) + "] : " + cpp_double(initial) +
+         ")";
+}
+std::string particle_history_output(int i) { return "particle_history_out[" + str(i) + "]"; }
 std::string bond_count() { return "fam.n_bonds"; }
 std::string scratch() { return "fam.scratch"; }
 
@@ -90,6 +97,7 @@ std::string output(int i) { return "outputs[" + str(i) + "]"; }
 
 std::string abi_include() { return "#include \"kernel_abi.hpp\"\n"; }
 std::string law_descriptor_type() { return "pd::abi::LawDescriptor"; }
+std::string param_range_type() { return "pd::abi::ParamRange"; }
 std::string monomial_group_type() { return "pd::abi::MonomialGroup"; }
 std::string radial_term_type() { return "pd::abi::RadialTerm"; }
 

@@ -32,6 +32,10 @@ std::string moment_input(int i);
 // and the update kernel's store of its new value.
 std::string history_input(int i, int n_history, double initial);
 std::string history_output(int i, int n_history);
+// The center's committed value of per-particle history variable i (Family::particle_history;
+// null: `initial`), and the update kernel's store of its new value.
+std::string particle_history_input(int i, double initial);
+std::string particle_history_output(int i);
 std::string bond_count();  // L
 std::string scratch();     // the per-bond cache's storage
 
@@ -54,6 +58,7 @@ std::string output(int i);
 
 // Generated files: the header every generated file includes, and descriptor types.
 std::string abi_include();
+std::string param_range_type();  // the ABI's enum of parameter ranges
 std::string law_descriptor_type();
 std::string monomial_group_type();
 std::string radial_term_type();

@@ -71,11 +71,26 @@ std::string descriptor_head(const Law& law) {
   for (double v : law.param_test_values())
     desc << (std::isnan(v) ? std::string("std::numeric_limits<double>::quiet_NaN()") : cpp_double(v)) << ", ";
   desc << "0.0};\n";
+  const std::string range_type = abi_text::param_range_type();
+  desc << "  static const " << range_type << " ranges[] = {";
+  for (ParamRange r : law.param_ranges())
+    desc << range_type << "::"
+         << (r == ParamRange::positive       ? "positive"
+             : r == ParamRange::non_negative ? "non_negative"
+                                             : "any")
+         << ", ";
+  desc << range_type << "::any};\n";
   desc << "  static const char* const history_names[] = {";
   for (auto& h : law.history()) desc << quoted(h.name) << ", ";
   desc << "nullptr};\n";
   desc << "  static const double history_initial[] = {";
   for (auto& h : law.history()) desc << cpp_double(h.initial) << ", ";
+  desc << "0.0};\n";
+  desc << "  static const char* const particle_history_names[] = {";
+  for (auto& h : law.particle_history()) desc << quoted(h.name) << ", ";
+  desc << "nullptr};\n";
+  desc << "  static const double particle_history_initial[] = {";
+  for (auto& h : law.particle_history()) desc << cpp_double(h.initial) << ", ";
   desc << "0.0};\n";
   desc << "  static const char* const outputs[] = {";
   for (auto& o : law.outputs()) desc << quoted(o.name) << ", ";
@@ -83,9 +98,12 @@ std::string descriptor_head(const Law& law) {
   desc << "  " << abi_text::law_descriptor_type() << " d;\n  d.name = " << quoted(n)
        << ";\n  d.summary = " << quoted(law.summary()) << ";\n  d.dim = " << law.dim()
        << ";\n  d.n_params = " << names.size() << ";\n  d.param_names = params;\n";
-  desc << "  d.param_test_values = test_values;\n";
+  desc << "  d.param_test_values = test_values;\n  d.param_ranges = ranges;\n";
   desc << "  d.n_history = " << law.history().size()
        << ";\n  d.history_names = history_names;\n  d.history_initial = history_initial;\n";
+  desc << "  d.n_particle_history = " << law.particle_history().size()
+       << ";\n  d.particle_history_names = particle_history_names;\n"
+          "  d.particle_history_initial = particle_history_initial;\n";
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
   if (law.has_dilatation_sum()) desc << "  d.has_dilatation_sum = true;\n";

@@ -109,6 +109,11 @@ class Builder {
       const HistoryDef& h = law_.history()[static_cast<std::size_t>(i)];
       b[symbol_index(h.committed)] = {"H_" + h.name, abi_text::history_input(i, n_history, h.initial), true};
     }
+    for (std::size_t i = 0; i < law_.particle_history().size(); ++i) {
+      const HistoryDef& h = law_.particle_history()[i];
+      b[symbol_index(h.committed)] = {
+          "PH_" + h.name, abi_text::particle_history_input(static_cast<int>(i), h.initial), false};
+    }
     return b;
   }
 
@@ -277,20 +282,31 @@ class Builder {
     return p;
   }
 
-  // The history update: every variable's value at the end of the step, per bond, from the
-  // committed values and the current deformation (through the states it reads).
+  // The history update: every variable's value at the end of the step, per bond and for the
+  // center particle, from the committed values and the current deformation (through the
+  // states it reads).
   KernelProgram update_kernel() const {
     KernelProgram p = program("update", abi_text::Kernel::Update, true);
     std::vector<Expr> roots;
     for (const HistoryDef& h : law_.history()) roots.push_back(h.updated);
+    for (const HistoryDef& h : law_.particle_history()) roots.push_back(h.updated);
     sum_loops(p, needed(roots, true));
-    Segment seg;
-    seg.loop = true;
     const auto n_history = static_cast<int>(law_.history().size());
-    for (int i = 0; i < n_history; ++i)
-      seg.stores.push_back({abi_text::history_output(i, n_history),
-                            law_.history()[static_cast<std::size_t>(i)].updated, StoreMode::Set, ""});
-    p.segments.push_back(seg);
+    if (n_history > 0) {
+      Segment seg;
+      seg.loop = true;
+      for (int i = 0; i < n_history; ++i)
+        seg.stores.push_back({abi_text::history_output(i, n_history),
+                              law_.history()[static_cast<std::size_t>(i)].updated, StoreMode::Set, ""});
+      p.segments.push_back(seg);
+    }
+    if (!law_.particle_history().empty()) {
+      Segment seg;  // the center's values: per-particle expressions, outside the bond loop
+      for (std::size_t i = 0; i < law_.particle_history().size(); ++i)
+        seg.stores.push_back({abi_text::particle_history_output(static_cast<int>(i)),
+                              law_.particle_history()[i].updated, StoreMode::Set, ""});
+      p.segments.push_back(seg);
+    }
     return p;
   }
 

@@ -53,6 +53,7 @@ Expr Law::param(const std::string& name) {
   param_names_.push_back(name);
   params_.push_back(symbol(name, SymbolKind::Param));
   param_test_values_.push_back(std::numeric_limits<double>::quiet_NaN());
+  param_ranges_.push_back(ParamRange::any);
   return params_.back();
 }
 
@@ -62,6 +63,18 @@ Expr Law::param(const std::string& name, double test_value) {
   const Expr p = param(name);
   for (std::size_t i = 0; i < param_names_.size(); ++i)
     if (param_names_[i] == name) param_test_values_[i] = test_value;
+  return p;
+}
+
+Expr Law::param(const std::string& name, double test_value, ParamRange range) {
+  const bool inside = range == ParamRange::any || (range == ParamRange::positive && test_value > 0) ||
+                      (range == ParamRange::non_negative && test_value >= 0);
+  if (!inside)
+    throw std::invalid_argument("law " + name_ + ": the test value of parameter '" + name +
+                                "' lies outside the range the law declares for it");
+  const Expr p = param(name, test_value);
+  for (std::size_t i = 0; i < param_names_.size(); ++i)
+    if (param_names_[i] == name) param_ranges_[i] = range;
   return p;
 }
 
@@ -105,27 +118,40 @@ void Law::built_in_kernel(std::string description, std::vector<RadialTermDef> pr
   kernel_profile_ = std::move(profile);
 }
 
-Expr Law::bond_history(const std::string& name, double initial) {
+void Law::check_new_history(const std::string& name, double initial) const {
   check_identifier(name);
   if (!std::isfinite(initial))
     throw std::invalid_argument("law " + name_ + ": initial value of history '" + name + "' must be finite");
-  for (const HistoryDef& h : history_)
-    if (h.name == name)
-      throw std::invalid_argument("law " + name_ + ": history '" + name + "' declared twice");
+  for (const std::vector<HistoryDef>* list : {&history_, &particle_history_})
+    for (const HistoryDef& h : *list)
+      if (h.name == name)
+        throw std::invalid_argument("law " + name_ + ": history '" + name + "' declared twice");
+}
+
+Expr Law::bond_history(const std::string& name, double initial) {
+  check_new_history(name, initial);
   const Expr committed = symbol("history_" + name, SymbolKind::BondInput);
   history_.push_back({name, initial, committed, committed, false});
   return committed;
 }
 
+Expr Law::particle_history(const std::string& name, double initial) {
+  check_new_history(name, initial);
+  const Expr committed = symbol("particle_history_" + name, SymbolKind::ParticleInput);
+  particle_history_.push_back({name, initial, committed, committed, false});
+  return committed;
+}
+
 void Law::update(Expr committed, Expr updated) {
-  for (HistoryDef& h : history_) {
-    if (h.committed != committed) continue;
-    if (h.has_update)
-      throw std::invalid_argument("law " + name_ + ": history '" + h.name + "' updated twice");
-    h.updated = updated;
-    h.has_update = true;
-    return;
-  }
+  for (std::vector<HistoryDef>* list : {&history_, &particle_history_})
+    for (HistoryDef& h : *list) {
+      if (h.committed != committed) continue;
+      if (h.has_update)
+        throw std::invalid_argument("law " + name_ + ": history '" + h.name + "' updated twice");
+      h.updated = updated;
+      h.has_update = true;
+      return;
+    }
   throw std::invalid_argument("law " + name_ + ": update of an expression that is not a declared history");
 }
 
@@ -139,6 +165,7 @@ Expr Law::sum(const std::string& name, Expr body) {
   std::vector<int> y_symbols;
   for (int c = 0; c < dim_; ++c) y_symbols.push_back(symbol_index(Y_[c]));
   for (const HistoryDef& h : history_) y_symbols.push_back(symbol_index(h.committed));
+  for (const HistoryDef& h : particle_history_) y_symbols.push_back(symbol_index(h.committed));
   for (int s : free_symbols(body)) {
     // A sum that reads the deformation or the committed history changes from step to step:
     // a state, evaluated by every kernel; the others are moments, computed once at setup.
@@ -199,6 +226,7 @@ Law Law::with_alpha_folded() const {
   if (has_energy_) r.energy_ = substitute(energy_, one);
   for (OutputDef& o : r.outputs_) o.value = substitute(o.value, one);
   for (HistoryDef& h : r.history_) h.updated = substitute(h.updated, one);
+  for (HistoryDef& h : r.particle_history_) h.updated = substitute(h.updated, one);
   return r;
 }
 

@@ -64,6 +64,8 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.collocation = options.collocation;
   inputs_.history = options.history;
   inputs_.n_history = law.n_history;
+  inputs_.particle_history = options.particle_history;
+  inputs_.n_particle_history = law.n_particle_history;
   inputs_.cache_max_bonds();
   update_moments();
   const Coupling coupling = options.coupling.value_or(coupling_of_law(law.n_states));
@@ -294,14 +296,31 @@ std::vector<double> FamilyAssembler::particle_outputs(const double* u) const {
 
 namespace pd {
 
-std::vector<double> FamilyAssembler::updated_history(const double* u) const {
-  const int n = inputs_.size(), nh = law_.n_history;
+namespace {
+// The committed values, or the law's initial ones where none are given: [count * n].
+std::vector<double> committed_or_initial(const double* committed, std::size_t count, int n,
+                                         const double* initial) {
+  std::vector<double> out(count * static_cast<std::size_t>(n));
+  for (std::size_t j = 0; j < count; ++j)
+    for (int i = 0; i < n; ++i) out[j * n + i] = committed ? committed[j * n + i] : initial[i];
+  return out;
+}
+
+bool all_finite(const double* v, int n) {
+  for (int j = 0; j < n; ++j)
+    if (!std::isfinite(v[j])) return false;
+  return true;
+}
+}  // namespace
+
+LawHistory FamilyAssembler::updated_history(const double* u) const {
+  const int n = inputs_.size(), nh = law_.n_history, np = law_.n_particle_history;
   const Bonds& B = *inputs_.bonds;
-  std::vector<double> out(B.neighbor.size() * static_cast<std::size_t>(nh));
-  if (nh == 0) return out;
-  for (std::size_t b = 0; b < B.neighbor.size(); ++b)
-    for (int i = 0; i < nh; ++i)
-      out[b * nh + i] = inputs_.history ? inputs_.history[b * nh + i] : law_.history_initial[i];
+  LawHistory out;
+  if (!abi::has_history(law_)) return out;
+  out.bond = committed_or_initial(inputs_.history, B.neighbor.size(), nh, law_.history_initial);
+  out.particle = committed_or_initial(inputs_.particle_history, static_cast<std::size_t>(n), np,
+                                      law_.particle_history_initial);
   int first_bad = -1;
   // Each family writes only its own bonds' slice: no colouring needed.
 #pragma omp parallel num_threads(thread_count())
@@ -311,14 +330,13 @@ std::vector<double> FamilyAssembler::updated_history(const double* u) const {
     for (int p = 0; p < n; ++p) {
       const abi::Family fam = g.gather(p, u);
       if (!has_intact_bond(fam)) continue;
-      double* slice = out.data() + static_cast<std::ptrdiff_t>(B.offsets[p]) * nh;
-      variant_.update(fam, slice);
-      for (int j = 0; j < fam.n_bonds * nh; ++j)
-        if (!std::isfinite(slice[j])) {
+      double* bond_slice = out.bond.data() + static_cast<std::ptrdiff_t>(B.offsets[p]) * nh;
+      double* particle_slice = out.particle.data() + static_cast<std::ptrdiff_t>(p) * np;
+      variant_.update(fam, nh > 0 ? bond_slice : nullptr, np > 0 ? particle_slice : nullptr);
+      if (!all_finite(bond_slice, fam.n_bonds * nh) || !all_finite(particle_slice, np)) {
 #pragma omp critical(pd_history_nan)
-          if (first_bad < 0 || p < first_bad) first_bad = p;
-          break;
-        }
+        if (first_bad < 0 || p < first_bad) first_bad = p;
+      }
     }
   }
   if (first_bad >= 0)

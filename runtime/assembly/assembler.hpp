@@ -34,6 +34,16 @@ struct AssemblerOptions {
   // families read, [bonds * n_history] in bond order, owned by the caller (Model) and read
   // only; null: every bond at the law's initial values. Must outlive the assembler.
   const double* history = nullptr;
+  // Likewise the committed per-particle history, [particles * n_particle_history].
+  const double* particle_history = nullptr;
+};
+
+// A law's internal variables (LawDescriptor::n_history, n_particle_history): per bond in
+// bond order, [bonds * n_history], and per particle, [particles * n_particle_history].
+struct LawHistory {
+  std::vector<double> bond;
+  std::vector<double> particle;
+  bool empty() const { return bond.empty() && particle.empty(); }
 };
 
 // One code path, assemble(), fills forces, K, or both: families are visited colour by
@@ -80,11 +90,11 @@ class FamilyAssembler final : public ForceOperator {
   std::vector<double> particle_outputs(const double* u) const override;
   std::vector<double> stresses(const double* u) const override;
   // The history at the end of a step to displacement u: the law's update kernel on every
-  // family, [bonds * n_history] in bond order (a family with no intact bond keeps its
-  // committed values). The committed history (options.history) is not touched: the caller
-  // commits the result once the step has converged. Throws std::runtime_error naming the
-  // particle when the update gives a NaN or Inf; empty for a law without history.
-  std::vector<double> updated_history(const double* u) const;
+  // family (a family with no intact bond keeps its committed values). The committed history
+  // (options.history, options.particle_history) is not touched: the caller commits the
+  // result once the step has converged. Throws std::runtime_error naming the particle when
+  // the update gives a NaN or Inf; empty for a law without history.
+  LawHistory updated_history(const double* u) const;
 
   // Throws if options.matrix was false.
   const SparsityPattern& pattern() const override;

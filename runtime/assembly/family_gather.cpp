@@ -66,6 +66,9 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   f.force_factor = B.surface_force.empty() ? nullptr : B.surface_force.data() + b0;
   f.history =
       in_->history == nullptr ? nullptr : in_->history + static_cast<std::ptrdiff_t>(b0) * in_->n_history;
+  f.particle_history = in_->particle_history == nullptr
+                           ? nullptr
+                           : in_->particle_history + static_cast<std::ptrdiff_t>(p) * in_->n_particle_history;
   return f;
 }
 

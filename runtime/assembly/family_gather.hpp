@@ -28,6 +28,10 @@ struct FamilyInputs {
   // (Family::history of particle p starts at bond offsets[p]); null: every bond virgin.
   const double* history = nullptr;
   int n_history = 0;
+  // The committed per-particle history, [n * n_particle_history] (particle p's at
+  // [p * n_particle_history]); null: every particle at the law's initial values.
+  const double* particle_history = nullptr;
+  int n_particle_history = 0;
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }

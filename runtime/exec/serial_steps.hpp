@@ -16,6 +16,7 @@ class SerialSteps final : public StepExecutor {
   }
   void forces(double t, std::vector<double>& f, std::vector<double>& g) override;
   bool after_step() override;
+  void commit_history() override { s_.model.commit_history(s_.u.data()); }
   void sync() override {}
   void gather(const std::vector<std::vector<double>*>&) override {}
   double sum(double local) const override { return local; }

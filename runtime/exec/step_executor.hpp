@@ -36,6 +36,9 @@ class StepExecutor {
   // when an effect changed the model on this process (no communication: the dynamic loops
   // go on either way, and a rank's later gather brings the owners' changes to rank 0).
   virtual bool after_step() = 0;
+  // A law with memory: commits the history at the current u (Model::commit_history), every
+  // time step of explicit dynamics, where each step stands. Nothing for an elastic law.
+  virtual void commit_history() = 0;
   // Brings u at the ghosts up to date after this process moved its own dofs.
   virtual void sync() = 0;
   // Root's u, v and bond factors become the whole body's (before a series row, snapshot,

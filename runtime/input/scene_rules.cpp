@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "material/law_history.hpp"
+
 namespace pd {
 
 namespace {
@@ -32,21 +34,50 @@ Findings unused_law_parameters(const SceneReading& r) {
   return out;
 }
 
-// A law with memory (LawDescriptor::n_history > 0) is evaluated from its committed
-// history, which the serial static driver keeps in the model and commits after every
-// converged load step (Model::commit_history). The other paths do not carry it yet and would
-// evaluate every step from the virgin body, silently wrong after the first: they are refused.
+// Every parameter the law takes has a value (given, or derived from the elastic constants)
+// inside the range the law declares (a yield stress > 0): the first that does not is named
+// at its key, or at the material when the value is derived.
+Findings law_parameter_values(const SceneReading& r) {
+  const YamlAt mats = r.section("materials");
+  for (std::size_t i = 0; i < r.s.materials.size(); ++i) {
+    const MaterialSpec& m = r.s.materials[i];
+    const YamlAt material = mats.element(mats.node[i], i);
+    std::vector<double> values;
+    try {
+      values = law_parameters(*r.law, m.elastic, m.plane, m.parameters);
+    } catch (const std::invalid_argument& e) {
+      return one(material, e.what());
+    }
+    for (int p = 0; p < r.law->n_params; ++p) {
+      const std::string why = parameter_range_violation(*r.law, p, values[static_cast<std::size_t>(p)]);
+      if (why.empty()) continue;
+      const std::string name = r.law->param_names[p];
+      if (!m.parameters.count(name)) return one(material, why);
+      return one(material.child(material.node["parameters"], "parameters")
+                     .child(material.node["parameters"][name], name),
+                 why);
+    }
+  }
+  return {};
+}
+
+// A law with memory (abi::has_history) is evaluated from its committed
+// history, which the model keeps and the serial drivers commit: the static one after every
+// converged load step, explicit dynamics every time step (Model::commit_history). The
+// other paths do not carry it yet and would evaluate every step from the virgin body,
+// silently wrong after the first: they are refused.
 Findings history_refusals(const SceneReading& r) {
-  if (r.law->n_history == 0) return {};
-  std::string names;
-  for (int i = 0; i < r.law->n_history; ++i) names += (i ? ", " : "") + std::string(r.law->history_names[i]);
-  const std::string why = "law " + r.s.law + " carries history (" + names + " per bond), ";
-  if (r.s.dynamics)
+  if (!abi::has_history(*r.law)) return {};
+  const std::string why = "law " + r.s.law + " carries history (" + describe_history(*r.law) + "), ";
+  const YamlAt solver = r.section("solver");
+  if (r.s.dynamics && r.s.dynamics->method == DynamicsMethod::relaxation)
     return one(r.section("dynamics"),
                why +
-                   "which only the static driver commits between steps yet: solve it with load_steps "
-                   "(and load_path) instead");
-  const YamlAt solver = r.section("solver");
+                   "which dynamic relaxation does not commit between load steps yet: solve it statically "
+                   "with load_steps (and load_path), or with method: explicit");
+  if (r.s.dynamics && r.s.solver.backend == Backend::petsc)
+    return one(solver.child(solver.node["backend"], "backend"),
+               why + "which the PETSc backend does not carry between time steps yet: use the serial backend");
   if (r.s.solver.backend == Backend::petsc && r.s.solver.load_steps > 1)
     return one(solver.child(solver.node["backend"], "backend"),
                why +
@@ -106,17 +137,8 @@ const std::vector<SceneRule> kRules{
                             "short-horizon preconditioner keeps")
                   : Findings{};
      }},
-    {"every material gives the law its parameters", Section::materials, false,
-     [](const SceneReading& r) {
-       const YamlAt mats = r.section("materials");
-       for (std::size_t i = 0; i < r.s.materials.size(); ++i) try {
-           const MaterialSpec& m = r.s.materials[i];
-           law_parameters(*r.law, m.elastic, m.plane, m.parameters);
-         } catch (const std::invalid_argument& e) {
-           return one(mats.element(mats.node[i], i), e.what());
-         }
-       return Findings{};
-     }},
+    {"every material gives the law its parameters, in their ranges", Section::materials, false,
+     law_parameter_values},
     {"a material parameter is one the law takes", Section::materials, true, unused_law_parameters},
     {"the particle file's materials are the scene's", Section::materials, false,
      [](const SceneReading& r) {

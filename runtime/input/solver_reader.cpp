@@ -67,6 +67,12 @@ SolverSpec read_solver(const YamlAt& at) {
   }
   s.tolerance = sv.number("tolerance", 1e-10);
   s.max_iterations = sv.integer("max_iterations", 30);
+  s.max_step_cuts = sv.integer("max_step_cuts", 0);
+  if (s.max_step_cuts < 0 || s.max_step_cuts > 30)
+    sv.get("max_step_cuts").fail("max_step_cuts must be between 0 and 30 (each halves the step)");
+  if (s.max_step_cuts > 0 && s.backend == Backend::petsc)
+    sv.get("max_step_cuts")
+        .fail("the PETSc backend does not cut load steps: use the serial backend, or more load_steps");
   s.increment_tolerance = sv.number("increment_tolerance", 1e-9);
   s.krylov_tolerance = sv.number("krylov_tolerance", 1e-12);
   s.krylov_max_iterations = sv.integer("krylov_max_iterations", 0);

@@ -66,6 +66,9 @@ struct SolverSpec {
   double tolerance = 1e-10;           // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
   int max_iterations = 30;
+  // solver.max_step_cuts: bisections of a load step whose Newton iterations fail
+  // (NewtonSettings::max_step_cuts); serial backend only. 0: a failed step ends the solve.
+  int max_step_cuts = 0;
   double krylov_tolerance = 1e-12;
   int krylov_max_iterations = 0;  // 0: 2 x unknowns for assembled Krylov, 20000 matrix-free
   // auto: the assembled tangent (a direct solver) up to this many estimated nonzeros,

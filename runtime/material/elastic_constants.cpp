@@ -1,6 +1,8 @@
 // Conversions between isotropic elastic constants and law parameters.
 #include "material/elastic_constants.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -77,6 +79,15 @@ std::vector<double> law_parameters(const abi::LawDescriptor& law, const Isotropi
     }
   }
   return out;
+}
+
+std::string parameter_range_violation(const abi::LawDescriptor& law, int index, double value) {
+  const abi::ParamRange range = law.param_ranges ? law.param_ranges[index] : abi::ParamRange::any;
+  const bool inside = range == abi::ParamRange::any || (range == abi::ParamRange::positive && value > 0) ||
+                      (range == abi::ParamRange::non_negative && value >= 0);
+  if (inside) return {};
+  return fmt::format("law {} needs parameter '{}' {}, got {:g}", law.name, law.param_names[index],
+                     range == abi::ParamRange::positive ? "> 0" : ">= 0", value);
 }
 
 }  // namespace pd

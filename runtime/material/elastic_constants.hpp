@@ -23,16 +23,20 @@ struct IsotropicElastic {
   IsotropicElastic plane_stress_equivalent() const;
 };
 
+// The names in `extra` (a material's `parameters`) that the law does not take.
+std::vector<std::string> unused_parameters(const abi::LawDescriptor& law,
+                                           const std::map<std::string, double>& extra);
+
 // Parameter values in the law's order. Elastic names are derived from `elastic`
 // (after the plane-stress substitution when `plane` is Stress and the law is 2D):
 // E, nu, K (3D bulk), G, mu (= G), lambda, kappa2 (plane-strain 2D bulk, lambda + G).
 // Any other name must be in `extra`; a missing one throws std::invalid_argument
 // naming the law and the parameter.
-// The names in `extra` (a material's `parameters`) that the law does not take.
-std::vector<std::string> unused_parameters(const abi::LawDescriptor& law,
-                                           const std::map<std::string, double>& extra);
-
 std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
                                    PlaneAssumption plane, const std::map<std::string, double>& extra);
+
+// Why `value` lies outside the range the law declares for its parameter `index`
+// (LawDescriptor::param_ranges), or empty when it lies inside.
+std::string parameter_range_violation(const abi::LawDescriptor& law, int index, double value);
 
 }  // namespace pd

@@ -144,6 +144,9 @@ Model::Model(const Scene& scene, const Planner& planner) : DiscretizedBody(scene
   const ModelPlan plan = planner(*this);
   for (std::size_t b = 0; law->n_history > 0 && b < bonds.neighbor.size(); ++b)
     bond_history.insert(bond_history.end(), law->history_initial, law->history_initial + law->n_history);
+  for (int p = 0; law->n_particle_history > 0 && p < particles.size(); ++p)
+    particle_history.insert(particle_history.end(), law->particle_history_initial,
+                            law->particle_history_initial + law->n_particle_history);
   // The short horizon first: the damage effect breaks its bonds with the real ones.
   if (plan.short_delta) build_short_horizon(scene, *plan.short_delta);
   build_assembler(scene, plan);
@@ -152,12 +155,14 @@ Model::Model(const Scene& scene, const Planner& planner) : DiscretizedBody(scene
 }
 
 void Model::commit_history(const double* u) {
-  if (bond_history.empty()) return;
+  if (!has_history()) return;
   const FamilyAssembler* families = assembler->bond_families();
   if (families == nullptr)
     throw std::logic_error("commit_history: a law with history needs the bond-family assembler");
-  const std::vector<double> updated = families->updated_history(u);
-  std::copy(updated.begin(), updated.end(), bond_history.begin());  // in place: the assembler points here
+  const LawHistory updated = families->updated_history(u);
+  // In place: the assembler points into these arrays.
+  std::copy(updated.bond.begin(), updated.bond.end(), bond_history.begin());
+  std::copy(updated.particle.begin(), updated.particle.end(), particle_history.begin());
 }
 
 void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
@@ -169,6 +174,7 @@ void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
   options.collocation = collocation.get();
   options.gauss_points = gauss_points.get();
   options.history = bond_history.empty() ? nullptr : bond_history.data();
+  options.particle_history = particle_history.empty() ? nullptr : particle_history.data();
   assembler = make_force_operator(particles, bonds, *law, params, options);
   assembler_options = options;
 }

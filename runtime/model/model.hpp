@@ -89,6 +89,9 @@ struct Model : DiscretizedBody {
   // every bond at the law's initial values until commit_history; the assembler reads it
   // (AssemblerOptions::history). Empty for a law without history.
   std::vector<double> bond_history;
+  // Likewise per particle, [particles * law.n_particle_history] (AssemblerOptions::particle_history).
+  std::vector<double> particle_history;
+  bool has_history() const { return !bond_history.empty() || !particle_history.empty(); }
   // Commits a converged step: the history becomes the law's update at displacement u
   // (FamilyAssembler::updated_history). Call only with a converged solution: a failed or
   // trial state must never reach the history. No-op for a law without history.

@@ -87,6 +87,12 @@ bool RankSteps::after_step() {
   return changes > 0;
 }
 
+void RankSteps::commit_history() {
+  if (s_.model.has_history())
+    throw std::logic_error(
+        "RankSteps: a law with history under the PETSc backend (the scene rules refuse it)");
+}
+
 void RankSteps::gather(const std::vector<std::vector<double>*>& extra) {
   const Model& model = s_.model;
   const int d = model.particles.dim;

@@ -31,6 +31,9 @@ class RankSteps final : public StepExecutor {
                        const std::string& global_sums) const override;
   void forces(double t, std::vector<double>& f, std::vector<double>& g) override;
   bool after_step() override;
+  // Each rank holds the whole model but current u only on its own and ghost dofs: the scene
+  // rules refuse a law with history on this backend (input/scene_rules.cpp).
+  void commit_history() override;
   void sync() override;
   void gather(const std::vector<std::vector<double>*>& extra) override;
   double sum(double local) const override;

@@ -1,6 +1,7 @@
 // The dynamic run's outputs: time-series rows, checkpoints and restarts, snapshots, result files.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -77,6 +78,15 @@ void DynamicRun::restore(const std::string& path, int& step, std::vector<double>
   u = array("u", u.size());
   if (!v.empty()) v = array("v", v.size());
   model.bonds.alpha = array("alpha", model.bonds.alpha.size());
+  if (!model.bond_history.empty()) {
+    // In place: the assembler reads the history through a pointer into this vector.
+    const std::vector<double>& h = array("history", model.bond_history.size());
+    std::copy(h.begin(), h.end(), model.bond_history.begin());
+  }
+  if (!model.particle_history.empty()) {
+    const std::vector<double>& h = array("particle_history", model.particle_history.size());
+    std::copy(h.begin(), h.end(), model.particle_history.begin());
+  }
   scalars = c.arrays.count("scalars") ? c.arrays.at("scalars") : std::vector<double>{};
   series.clear();
   if (const auto it = c.arrays.find("series"); it != c.arrays.end()) {
@@ -109,6 +119,8 @@ void DynamicRun::save_checkpoint(int step, const std::vector<double>& scalars) {
   c.arrays["u"] = u;
   if (!v.empty()) c.arrays["v"] = v;
   c.arrays["alpha"] = model.bonds.alpha;
+  if (!model.bond_history.empty()) c.arrays["history"] = model.bond_history;
+  if (!model.particle_history.empty()) c.arrays["particle_history"] = model.particle_history;
   c.arrays["scalars"] = scalars;
   std::vector<double> s;
   for (const SeriesRow& r : series) {

@@ -25,6 +25,9 @@ class DynamicSimulation {
   const Bonds& bonds() const { return model_.bonds; }
   const std::vector<double>& displacement() const { return run_.u; }
   const std::vector<double>& velocity() const { return run_.v; }
+  // A law with memory: the committed per-bond history (Model::bond_history); empty otherwise.
+  const std::vector<double>& bond_history() const { return model_.bond_history; }
+  const std::vector<double>& particle_history() const { return model_.particle_history; }
   const std::vector<SeriesRow>& series() const { return run_.series; }
   const ForceOperator& assembler() const { return *model_.assembler; }
   const CriticalStretchDamage* damage() const { return model_.damage; }

@@ -87,6 +87,10 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   Progress progress(run.log, write ? dyn.progress_seconds : 0.0, step, last);
   for (int s = step + 1; s <= last; ++s) {
     exec.check_interrupt(fmt::format("at time step {} of {}", s, last));
+    // The previous step stands: its history is committed before u moves, so the forces
+    // of this step are the return map of u_s from h_(s-1), and a checkpoint written in
+    // this step holds (u_s, h_(s-1)), from which a restart recomputes the same forces.
+    exec.commit_history();
     u_old = u;
     g_old = g;
     verlet.first_half(u, run.v, f);
@@ -111,6 +115,7 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   }
   exec.gather();
   exec.check_finite(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
+  exec.commit_history();  // the last step stands too: the output fields read its history
   rep.last_step = last;
   rep.time = last * dt;
   rep.external_work = exec.sum(work.value());

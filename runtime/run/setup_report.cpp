@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "material/law_history.hpp"
+
 namespace pd {
 
 void describe_model(RunSummary& summary, const Model& model, const Scene& scene) {
@@ -11,13 +13,11 @@ void describe_model(RunSummary& summary, const Model& model, const Scene& scene)
   summary.variant = model.assembler_options.intact ? "intact (alpha folded to 1)" : "damaged (reads alpha)";
   summary.effects.push_back(fmt::format("elasticity: law {} ({} kernels), influence {}", model.law->name,
                                         summary.variant, model.influence->name));
-  if (model.law->n_history > 0) {
-    std::string names;
-    for (int i = 0; i < model.law->n_history; ++i)
-      names += (i ? ", " : "") + std::string(model.law->history_names[i]);
+  if (model.has_history()) {
+    const std::size_t values = model.bond_history.size() + model.particle_history.size();
     summary.effects.push_back(
-        fmt::format("history: {} per bond ({} values, {:.3g} MB), committed after each converged load step",
-                    names, model.bond_history.size(), 8e-6 * static_cast<double>(model.bond_history.size())));
+        fmt::format("history: {} ({} values, {:.3g} MB), committed after each converged step",
+                    describe_history(*model.law), values, 8e-6 * static_cast<double>(values)));
   }
   for (const auto& e : model.effects) summary.effects.push_back(e->describe());
 }

@@ -32,6 +32,7 @@ class Simulation {
   const std::vector<double>& displacement() const { return run_.u; }
   // A law with memory: the committed per-bond history after the run (Model::bond_history).
   const std::vector<double>& bond_history() const { return model_.bond_history; }
+  const std::vector<double>& particle_history() const { return model_.particle_history; }
   // The displacement smoothed by output.smoothing (empty without it).
   const std::vector<double>& smoothed_displacement() const { return run_.u_smooth; }
   const Scene& scene() const { return scene_; }

@@ -1,4 +1,6 @@
 // write_static_outputs: a static run's result files.
+#include <fmt/core.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -9,6 +11,22 @@
 #include "stopwatch.hpp"
 
 namespace pd {
+
+namespace {
+// step, load and one column per probe (named as in the scene), one row per standing step;
+// doubles to 17 significant digits, so the file is the run's values.
+std::string load_steps_csv(const StaticRun& run, const Scene& scene) {
+  std::string out = "step,load";
+  for (const Probe& p : scene.probes) out += "," + p.name;
+  out += "\n";
+  for (const StaticRun::LoadStepRow& row : run.load_step_rows) {
+    out += fmt::format("{},{:.17g}", row.step, row.load);
+    for (double v : row.probes) out += fmt::format(",{:.17g}", v);
+    out += "\n";
+  }
+  return out;
+}
+}  // namespace
 
 void write_static_outputs(StaticRun& run, const Model& model, const Scene& scene) {
   const auto t1 = std::chrono::steady_clock::now();
@@ -21,6 +39,10 @@ void write_static_outputs(StaticRun& run, const Model& model, const Scene& scene
   // run already renamed into place go too (a result without its summary is partial).
   try {
     write_result_files(dir, model.particles, run.u, fields, scene.output, summary.files);
+    if (!run.load_step_rows.empty()) {
+      summary.files.push_back(dir + "/load_steps.csv");  // listed first: an interrupt removes it
+      write_file_atomically(dir + "/load_steps.csv", load_steps_csv(run, scene));
+    }
     summary.files.push_back(dir + "/summary.json");
     summary.output_seconds = seconds_since(t1);
     write_file_atomically(dir + "/summary.json", summary.json());

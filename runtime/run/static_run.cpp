@@ -27,6 +27,7 @@ NewtonSettings newton_settings(const SolverSpec& sv, const SolverPlan& plan) {
   s.load_steps = sv.load_steps;
   s.load_path = sv.load_path;
   s.max_iterations = sv.max_iterations;
+  s.max_step_cuts = sv.max_step_cuts;
   s.relative_tolerance = sv.tolerance;
   s.increment_tolerance = sv.increment_tolerance;
   s.matrix_free = plan.matrix_free();
@@ -80,16 +81,32 @@ bool has_load(StaticRun& run, const Model& model, const Scene& scene, const RunL
   return loaded;
 }
 
+// A standing load step's probes (StaticRun::load_step_rows), with several steps and probes.
+// Evaluated after the history commit, as the final probes are.
+void record_load_step(StaticRun& run, const Model& model, const Scene& scene, int step, double load,
+                      const Eigen::VectorXd& u) {
+  if (scene.solver.load_steps < 2 || scene.probes.empty()) return;
+  const std::vector<double> at(u.data(), u.data() + u.size());
+  const std::vector<double> stress =
+      wants_stress(scene) ? model.assembler->stresses(at.data()) : std::vector<double>{};
+  StaticRun::LoadStepRow row{step, load, {}};
+  for (const ProbeResult& p :
+       evaluate_probes(scene, model.particles, probe_particles(scene, model.particles), at, &stress))
+    row.probes.push_back(p.value);
+  run.load_step_rows.push_back(std::move(row));
+}
+
 // After a converged load step every effect may change the model (damage evolution
 // breaks bonds and updates the moments: effects/damage_evolution.cpp); any change
 // means the step is solved again on the changed system. A step that stands commits the
 // law's history (a law with memory): only converged, final states reach it.
-long long after_load_step(Model& model, const Scene& scene, const RunLog& log, int step, double load,
-                          const Eigen::VectorXd& u) {
+long long after_load_step(StaticRun& run, Model& model, const Scene& scene, const RunLog& log, int step,
+                          double load, const Eigen::VectorXd& u) {
   long long changes = 0;
   for (const auto& e : model.effects) changes += e->after_step(u.data(), FamilyScope{});
   if (changes == 0) {
     model.commit_history(u.data());
+    record_load_step(run, model, scene, step, load, u);
     return 0;
   }
   log(fmt::format("  load {:.3g} (step {}/{}): {} bonds broke ({} broken in all); solving the step again",
@@ -163,7 +180,7 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
   if (loaded) {
     NewtonSettings settings = newton_settings(scene.solver, run.plan);
     settings.after_step = [&](int step, double load, const Eigen::VectorXd& v) {
-      return after_load_step(model, scene, log, step, load, v);
+      return after_load_step(run, model, scene, log, step, load, v);
     };
     if (scene.damage) settings.max_resolves = scene.damage->max_resolves;
     if (run.plan.backend == Backend::petsc) {

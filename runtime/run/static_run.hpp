@@ -23,6 +23,15 @@ struct StaticRun {
   std::vector<double> u;         // the displacement (zero until run_static)
   std::vector<double> u_smooth;  // smoothed by output.smoothing (empty without it)
   std::vector<double> stress;    // peridynamic stress [n*dim*dim], when wants_stress(scene)
+  // With several load steps and probes: after every load step that stands, its load factor
+  // and each probe's value there (the path a load_path traces: a stress-strain loop),
+  // written to load_steps.csv.
+  struct LoadStepRow {
+    int step = 0;
+    double load = 0;
+    std::vector<double> probes;
+  };
+  std::vector<LoadStepRow> load_step_rows;
 };
 
 // Plans the solver for the discretized body (plan_solver): the run with its plan, nothing solved.
@@ -43,7 +52,8 @@ void describe_static_run(StaticRun& run, const Model& model, const Scene& scene,
 // smoothing and J-integrals into run.summary. Throws on failure.
 void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& log);
 
-// result.vtu, result.csv and summary.json in output.directory (all or none).
+// result.vtu, result.csv, load_steps.csv (when run.load_step_rows has rows) and summary.json
+// in output.directory (all or none).
 void write_static_outputs(StaticRun& run, const Model& model, const Scene& scene);
 
 }  // namespace pd

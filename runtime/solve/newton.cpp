@@ -147,6 +147,7 @@ class LoadStepIterations {
     double norm = dofs_.restrict_free(r_).norm();
     reference_ = std::max(reference_, norm);
     NewtonRecord rec{step, 0, round, load, norm, 0.0, 0.0, 0, 0.0};
+    const std::size_t first = res_.history.size();  // this step's first record
     bool done = false;
     std::string above_floor;   // why the increment or stagnation rule did not end the step
     int negligible_steps = 0;  // consecutive full steps below the increment tolerance, above the ceiling
@@ -183,12 +184,25 @@ class LoadStepIterations {
       say(res_.message);
       return false;
     }
+    say(convergence_rate_line(first));
     return true;
   }
 
  private:
   void say(const std::string& line) const {
     if (log_) log_(line);
+  }
+
+  // The step's residual ratios |r_i+1| / |r_i|: under the exact (algorithmic) tangent they
+  // fall like the residual itself in the last iterations (quadratic convergence); ratios
+  // that stay level mean a linear rate (an inexact tangent).
+  std::string convergence_rate_line(std::size_t first) const {
+    std::string line = fmt::format("  converged in {} iterations", res_.history.size() - 1 - first);
+    for (std::size_t i = first + 1; i < res_.history.size(); ++i)
+      line += fmt::format(
+          "{}{:.2e}", i == first + 1 ? "; residual ratios " : ", ",
+          res_.history[i - 1].residual > 0 ? res_.history[i].residual / res_.history[i - 1].residual : 0.0);
+    return line;
   }
 
   // The increment and stagnation rules end the step only on the rounding floor: below
@@ -323,25 +337,50 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
         return rounding_floor(sys, dofs, at, load, r, reference);
       });
 
-  for (int step = 1; step <= s_.load_steps; ++step) {
-    const double load = s_.load_at(step);
-    dofs.apply_prescribed(u, load);
+  // The load from `from` (where u has converged) to `to`: iterations, then after_step and
+  // re-solves while it changes the system. A first solve that fails is cut: u goes back to
+  // the converged start and the two halves are solved in turn (cuts_left more times).
+  const std::function<bool(int, double, double, int)> advance = [&](int step, double from, double to,
+                                                                    int cuts_left) {
+    const Eigen::VectorXd start = u;
+    dofs.apply_prescribed(u, to);
     for (int round = 0;; ++round) {
-      if (!iterations.run(step, load, round)) return res;
-      if (!s_.after_step) break;
-      const long long changes = s_.after_step(step, load, u);
-      if (changes == 0) break;
+      if (!iterations.run(step, to, round)) {
+        if (round > 0 || cuts_left == 0) return false;
+        u = start;
+        ++res.step_cuts;
+        const double mid = 0.5 * (from + to);
+        say(fmt::format("  cutting load step {}/{}: load {:.6g} -> {:.6g} in two ({} more cuts allowed)",
+                        step, s_.load_steps, from, to, cuts_left - 1));
+        return advance(step, from, mid, cuts_left - 1) && advance(step, mid, to, cuts_left - 1);
+      }
+      if (!s_.after_step) return true;
+      const long long changes = s_.after_step(step, to, u);
+      if (changes == 0) return true;
       if (round == s_.max_resolves) {
         res.message = fmt::format(
             "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more "
             "load steps",
-            changes, s_.max_resolves, load, step, s_.load_steps);
+            changes, s_.max_resolves, to, step, s_.load_steps);
         say(res.message);
-        return res;
+        return false;
       }
       ++res.resolves;
     }
+  };
+  double load = 0.0;
+  for (int step = 1; step <= s_.load_steps; ++step) {
+    const double next = s_.load_at(step);
+    if (!advance(step, load, next, s_.max_step_cuts)) {
+      if (s_.max_step_cuts > 0 && res.step_cuts > 0)
+        res.message +=
+            fmt::format(" (after cutting the step {} times, at most {} deep: solver.max_step_cuts)",
+                        res.step_cuts, s_.max_step_cuts);
+      return res;
+    }
+    load = next;
   }
+  res.message.clear();  // a failure a cut recovered from
   res.converged = true;
   return res;
 }

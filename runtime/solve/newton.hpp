@@ -53,7 +53,13 @@ struct NewtonSettings {
   // the factor at i / load_steps. Empty: proportional loading, factor i / load_steps.
   std::vector<double> load_path;
   double load_at(int step) const;
-  int max_iterations = 25;            // per load step
+  int max_iterations = 25;  // per load step
+  // solver.max_step_cuts: a load step whose iterations fail (not converged, a residual
+  // that is not finite, a failed linear solve) is solved again from the step's converged
+  // start in two halves, each cut again if it fails, down to 2^-max_step_cuts of the step.
+  // after_step (history commits, damage) sees only the halves that converged. 0: a failed
+  // step ends the solve.
+  int max_step_cuts = 0;
   double relative_tolerance = 1e-10;  // |r_f| <= rtol * reference (the largest initial |r_f| of a step)
   double absolute_tolerance = 0.0;    // ... or |r_f| <= atol
   // ... or a full step with |du| <= increment_tolerance |u|: the residual of a small-
@@ -119,6 +125,7 @@ struct NewtonResult {
   std::int64_t unknowns = 0;    // free dofs
   std::int64_t nonzeros = 0;    // of the reduced tangent (0 when matrix-free)
   int resolves = 0;             // load steps solved again after after_step changed the system
+  int step_cuts = 0;            // load steps (or parts) bisected after failing (max_step_cuts)
   double assembly_seconds = 0;  // forming tangents (or diagonals, matrix-free)
   double linear_seconds = 0;    // factorisations and linear solves
   int iterations() const { return history.empty() ? 0 : static_cast<int>(history.size()) - 1; }

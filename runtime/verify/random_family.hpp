@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "kernel_abi.hpp"
@@ -24,6 +26,8 @@ struct TestFamily {
   // [L*n_history] the committed history (Family::history), the law's initial values until
   // commit_update; empty for a law without history (Family::history null).
   std::vector<double> history;
+  // [n_particle_history] the center's committed history (Family::particle_history), likewise.
+  std::vector<double> particle_history;
   mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
   const abi::LawDescriptor* law = nullptr;
@@ -45,10 +49,19 @@ struct TestFamily {
     f.nbr_params = nbr_params.empty() ? nullptr : nbr_params.data();
     f.moments = moments.data();
     f.history = history.empty() ? nullptr : history.data();
+    f.particle_history = particle_history.empty() ? nullptr : particle_history.data();
     const auto need = static_cast<std::size_t>(bonds() * (law ? law->scratch_per_bond : 0));
     if (kernel_scratch.size() < need) kernel_scratch.resize(need);  // once: a family's bond count is fixed
     f.scratch = kernel_scratch.data();
     return f;
+  }
+  std::pair<std::vector<double>, std::vector<double>> update(const abi::KernelVariant& v) const {
+    std::pair<std::vector<double>, std::vector<double>> out{std::vector<double>(history.size()),
+                                                            std::vector<double>(particle_history.size())};
+    if (v.update != nullptr)
+      v.update(view(), out.first.empty() ? nullptr : out.first.data(),
+               out.second.empty() ? nullptr : out.second.data());
+    return out;
   }
   void set_positions(const std::vector<double>& positions) {
     y = positions;
@@ -59,14 +72,12 @@ struct TestFamily {
     moments.assign(static_cast<std::size_t>(law->n_moments) + 1, 0.0);
     v.moments(view(), moments.data());
   }
-  // The history at the end of a step to the current positions (the update kernel).
-  std::vector<double> updated_history(const abi::KernelVariant& v) const {
-    std::vector<double> out(history.size());
-    if (v.update != nullptr) v.update(view(), out.data());
-    return out;
-  }
+  // The history at the end of a step to the current positions (the update kernel): per
+  // bond, and the center's.
+  std::vector<double> updated_history(const abi::KernelVariant& v) const { return update(v).first; }
+  std::vector<double> updated_particle_history(const abi::KernelVariant& v) const { return update(v).second; }
   // Commits a step to the current positions: the updated history becomes the committed one.
-  void commit_update(const abi::KernelVariant& v) { history = updated_history(v); }
+  void commit_update(const abi::KernelVariant& v) { std::tie(history, particle_history) = update(v); }
   // Gives every parameter the law declares a test value that value (law.param(name, v)),
   // at the center and at the neighbours: e.g. a yield stress the random strains exceed.
   void use_declared_test_values() {
@@ -208,6 +219,8 @@ inline TestFamily make_family(const abi::LawDescriptor& law, const FamilyOptions
   f.update_moments(law.damaged);
   for (int k = 0; k < L; ++k)
     for (int i = 0; i < law.n_history; ++i) f.history.push_back(law.history_initial[i]);
+  f.particle_history.assign(law.particle_history_initial,
+                            law.particle_history_initial + law.n_particle_history);
   return f;
 }
 

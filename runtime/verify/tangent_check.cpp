@@ -126,7 +126,7 @@ std::vector<FamilyCheck> check_law(const abi::LawDescriptor& law, unsigned seed)
   for (int c = 0; c < collapsed.dim; ++c) y[collapsed.dim + c] = y[c];
   collapsed.set_positions(y);
   out.push_back(check_family(law, collapsed, "collapsed bond", false));
-  if (law.n_history > 0) add_history_checks(law, base, out);
+  if (abi::has_history(law)) add_history_checks(law, base, out);
   return out;
 }
 

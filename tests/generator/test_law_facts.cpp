@@ -66,3 +66,18 @@ TEST(LawFacts, AKernelContradictingTheUseOfWIsRefused) {
   }
   EXPECT_THROW(spring(false).reproducing_terms(4, 3, 2), std::invalid_argument);
 }
+
+// A parameter's declared range is written into the descriptor in parameter order, and a
+// test value outside it is refused where the law is written.
+TEST(LawFacts, ParameterRangesAreCopiedInOrderAndTestValuesMustLieInThem) {
+  Law law = spring(false);
+  law.param("yield", 0.5, ParamRange::positive);
+  law.param("hardening", 0.0, ParamRange::non_negative);
+  const std::string text = descriptor_text(law);
+  EXPECT_NE(text.find("ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::positive, "
+                      "pd::abi::ParamRange::non_negative, "),
+            std::string::npos)
+      << text;
+  EXPECT_THROW(law.param("tau", 0.0, ParamRange::positive), std::invalid_argument);
+  EXPECT_THROW(law.param("weight", -1.0, ParamRange::non_negative), std::invalid_argument);
+}

@@ -55,7 +55,8 @@ TEST(Newton, LinearProblemConvergesInOneStep) {
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_EQ(r.iterations(), 1);
   EXPECT_EQ(r.linear_solver, "cholmod");
-  EXPECT_EQ(log.size(), 3u);  // the solver choice and two iterations
+  EXPECT_EQ(log.size(), 4u);  // the solver choice, two iterations and the step's convergence line
+  EXPECT_NE(log.back().find("converged in 1 iterations; residual ratios"), std::string::npos) << log.back();
   EXPECT_LT(r.history[1].residual, 1e-10 * r.history[0].residual);
   // The pulled edge moved by the prescribed amount, the interior in between.
   for (int p = 0; p < pb.body.particles.size(); ++p) {
@@ -106,6 +107,51 @@ TEST(Newton, LoadSteppingReachesTheSameSolution) {
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_EQ(r.history.back().step, 3);
   EXPECT_LT((u1 - u3).norm(), 1e-9 * u1.norm());
+}
+
+// A load step too large for the iterations allowed is cut in halves from its converged
+// start; the cut path reaches the answer of the uncut solve (the problem is elastic, so
+// path-independent), and without cuts the same settings fail.
+TEST(Newton, AFailedLoadStepIsCutAndReachesTheSameSolution) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd reference, u;
+  const pd::NewtonResult full = run(sys, pb.dofs, reference, {});
+  ASSERT_TRUE(full.converged);
+  // One iteration fewer than the whole step needs: the whole step must fail, and
+  // smaller steps, being closer to linear, must get there within that budget.
+  const int needed = static_cast<int>(full.history.size()) - 1;
+  ASSERT_GE(needed, 2) << "the test needs a step that takes more than one iteration";
+  pd::NewtonSettings st;
+  st.max_iterations = needed - 1;
+  const pd::NewtonResult uncut = run(sys, pb.dofs, u, st);
+  ASSERT_FALSE(uncut.converged);
+  EXPECT_EQ(uncut.step_cuts, 0);
+  st.max_step_cuts = 6;
+  std::vector<std::string> log;
+  const pd::NewtonResult cut = run(sys, pb.dofs, u, st, &log);
+  ASSERT_TRUE(cut.converged) << cut.message;
+  EXPECT_TRUE(cut.message.empty()) << cut.message;
+  EXPECT_GT(cut.step_cuts, 0);
+  EXPECT_LT((u - reference).norm(), 1e-9 * reference.norm());
+  int cut_lines = 0;
+  for (const std::string& line : log) cut_lines += line.find("cutting load step 1/1") != std::string::npos;
+  EXPECT_EQ(cut_lines, cut.step_cuts);
+  // Every part that converged ended at a load of the bisection, the last at the full load.
+  EXPECT_EQ(cut.history.back().load, 1.0);
+}
+
+TEST(Newton, CutsThatRunOutNameTheLimit) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  pd::NewtonSettings st;
+  st.max_iterations = 1;
+  st.max_step_cuts = 1;
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st);
+  ASSERT_FALSE(r.converged);
+  EXPECT_GT(r.step_cuts, 0);
+  EXPECT_NE(r.message.find("solver.max_step_cuts"), std::string::npos) << r.message;
 }
 
 TEST(Newton, MatrixFreeNewtonKrylovMatchesAssembledNewton) {

@@ -29,16 +29,26 @@ struct OutputDef {
   Expr value;  // per-particle expression
 };
 
-// A per-bond internal variable (Law::bond_history): `committed` is the value at the start
-// of the step, a per-bond input the kernels read from Family::history; `updated` is its
-// value after the step, a function of the committed values and the current deformation,
-// which the update kernel writes and the runtime commits once a step has converged.
+// An internal variable (Law::bond_history, Law::particle_history): `committed` is the value
+// at the start of the step, an input the kernels read (Family::history per bond,
+// Family::particle_history for the center particle); `updated` is its value after the step,
+// a function of the committed values and the current deformation, which the update kernel
+// writes and the runtime commits once a step has converged.
 struct HistoryDef {
-  std::string name;  // C identifier, unique in the law
+  std::string name;  // C identifier, unique in the law (bond and particle variables together)
   double initial = 0.0;
-  Expr committed;  // per-bond input symbol
-  Expr updated;    // per-bond expression (the committed value until Law::update sets it)
+  Expr committed;  // input symbol: per bond, or per particle (the family's center)
+  Expr updated;    // same kind of expression (the committed value until Law::update sets it)
   bool has_update = false;
+};
+
+// The values a material parameter may take (Law::param). The runtime refuses a scene whose
+// material gives one outside them, naming the key, before anything runs (a yield stress of
+// 0 would divide by zero in the return map; a negative relaxation time grows without bound).
+enum class ParamRange {
+  any,
+  positive,      // > 0: a yield stress, a relaxation time
+  non_negative,  // >= 0: a hardening modulus, a viscous weight
 };
 
 // How a bond's pair parameter p_ij is formed from its two particles' values; each
@@ -82,6 +92,8 @@ class Law {
   // (patch test, check-law) give it.
   Expr param(const std::string& name);
   Expr param(const std::string& name, double test_value);
+  // ... whose values are restricted to `range` (the test value must lie in it).
+  Expr param(const std::string& name, double test_value, ParamRange range);
   // The bond's pair value of parameter `name` (declared as by param(name) if it is not
   // yet): the mean of the center's and the neighbour's value (Family::nbr_params), so a
   // bond across a material interface sees one value from both of its families. Where the
@@ -114,9 +126,14 @@ class Law {
   // at the end of the step. The kernels' tangent is then the algorithmic (consistent)
   // tangent of the incremental problem: the committed values are inputs, held fixed.
   Expr bond_history(const std::string& name, double initial);
+  // A per-particle internal variable (an equivalent plastic strain, a hardening variable):
+  // one value for the family's center. Its update is a per-particle expression: per-bond
+  // quantities reach it only through horizon sums.
+  Expr particle_history(const std::string& name, double initial);
   void update(Expr committed, Expr updated);
-  const std::vector<HistoryDef>& history() const { return history_; }
-  bool has_history() const { return !history_.empty(); }
+  const std::vector<HistoryDef>& history() const { return history_; }  // per bond
+  const std::vector<HistoryDef>& particle_history() const { return particle_history_; }
+  bool has_history() const { return !history_.empty() || !particle_history_.empty(); }
 
   // Horizon sums. Names must be C identifiers; vector and matrix sums get one
   // scalar sum per component, named name_i or name_i_j.
@@ -169,6 +186,7 @@ class Law {
   const std::vector<std::string>& param_names() const { return param_names_; }
   const std::vector<Expr>& params() const { return params_; }
   const std::vector<double>& param_test_values() const { return param_test_values_; }  // NaN: none declared
+  const std::vector<ParamRange>& param_ranges() const { return param_ranges_; }
   const std::vector<PairParamDef>& pair_params() const { return pair_params_; }
   bool balances_angular_momentum() const { return balances_angular_momentum_; }
   bool has_fixed_poisson_ratio() const { return has_fixed_poisson_ratio_; }
@@ -186,6 +204,8 @@ class Law {
   Law with_alpha_folded() const;
 
  private:
+  void check_new_history(const std::string& name, double initial) const;
+
   std::string name_, summary_;
   int dim_;
   Vec xi_, Y_;
@@ -194,6 +214,7 @@ class Law {
   std::vector<std::string> param_names_;
   std::vector<Expr> params_;
   std::vector<double> param_test_values_;
+  std::vector<ParamRange> param_ranges_;
   std::vector<PairParamDef> pair_params_;
   bool balances_angular_momentum_ = false;
   bool has_fixed_poisson_ratio_ = false;
@@ -208,6 +229,7 @@ class Law {
   bool has_energy_ = false;
   std::vector<OutputDef> outputs_;
   std::vector<HistoryDef> history_;
+  std::vector<HistoryDef> particle_history_;
 };
 
 // An influence function w(r, delta).
