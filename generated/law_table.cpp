@@ -11,6 +11,7 @@
 #include "lps.hpp"
 #include "oterkus.hpp"
 #include "silling.hpp"
+#include "viscoelastic.hpp"
 
 namespace pd::abi {
 
@@ -43,8 +44,10 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::oterkus_paper_d_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
+      pd::generated::viscoelastic_plane_strain_descriptor(),
+      pd::generated::viscoelastic_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 27);
+  return std::span<const LawDescriptor>(table, 29);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

@@ -29,6 +29,10 @@ struct Family {
   const double* V = nullptr;       // [L] neighbour volumes
   double V0 = 0.0;                 // center volume
   double delta = 0.0;              // horizon of the center particle
+  // The duration of the current step (physical time), read by a rate-dependent law's force and
+  // update (LawDescriptor::uses_time_step): the time step of explicit dynamics, or the time a
+  // static load step spans (solver.duration). 0 for a law that does not read it.
+  double time_step = 0.0;
   const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
   // [L*n_params] the neighbours' material parameters, bond-major (bond k's at [k*n_params]),
   // read by a law with pair parameters (LawDescriptor::uses_pair_params). Null: every
@@ -131,7 +135,7 @@ struct RadialTerm {
 };
 
 // The values a material parameter may take (pdgen ParamRange, in the same order).
-enum class ParamRange : int { any = 0, positive = 1, non_negative = 2 };
+enum class ParamRange : int { any = 0, positive = 1, non_negative = 2, unit_interval = 3 };
 
 struct LawDescriptor {
   const char* name = "";
@@ -172,6 +176,9 @@ struct LawDescriptor {
   // The law marks a dilatation sum (pdgen Law::dilatation_sum) that reads
   // Family::dilatation_factor; false: only Family::force_factor acts.
   bool has_dilatation_sum = false;
+  // The law reads Family::time_step (pdgen Law::time_step): its answer depends on how long a
+  // step lasts, so a scene must give physical time (dynamics, or solver.duration).
+  bool uses_time_step = false;
   // The force never reads Family::w (bond-based laws, a kernel built into the law): the
   // scene's influence function does not change the law's forces.
   bool ignores_influence = false;

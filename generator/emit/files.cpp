@@ -77,6 +77,7 @@ std::string descriptor_head(const Law& law) {
     desc << range_type << "::"
          << (r == ParamRange::positive       ? "positive"
              : r == ParamRange::non_negative ? "non_negative"
+             : r == ParamRange::unit_interval ? "unit_interval"
                                              : "any")
          << ", ";
   desc << range_type << "::any};\n";
@@ -107,6 +108,7 @@ std::string descriptor_head(const Law& law) {
   desc << "  d.n_outputs = " << law.outputs().size() << ";\n  d.output_names = outputs;\n";
   if (law.balances_angular_momentum()) desc << "  d.balances_angular_momentum = true;\n";
   if (law.has_dilatation_sum()) desc << "  d.has_dilatation_sum = true;\n";
+  if (law.reads_time_step()) desc << "  d.uses_time_step = true;\n";
   if (!law.reads_influence()) desc << "  d.ignores_influence = true;\n";
   if (!law.pair_params().empty()) desc << "  d.uses_pair_params = true;\n";
   if (law.has_fixed_poisson_ratio())

@@ -91,6 +91,7 @@ class Builder {
     b[symbol_index(law_.force_factor())] = {"sf", abi_text::optional_bond_scalar("force_factor"), true};
     b[symbol_index(law_.V0())] = {"V0", abi_text::family_scalar("V0"), false};
     b[symbol_index(law_.delta())] = {"delta", abi_text::family_scalar("delta"), false};
+    b[symbol_index(law_.time_step_symbol())] = {"dt", abi_text::family_scalar("time_step"), false};
     for (std::size_t i = 0; i < law_.params().size(); ++i)
       b[symbol_index(law_.params()[i])] = {"P_" + law_.param_names()[i], abi_text::param(static_cast<int>(i)),
                                            false};

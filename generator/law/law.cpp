@@ -42,6 +42,7 @@ Law::Law(std::string name, int dim, std::string summary)
   V_ = symbol("V", SymbolKind::BondInput);
   V0_ = symbol("V0", SymbolKind::ParticleInput);
   delta_ = symbol("delta", SymbolKind::ParticleInput);
+  time_step_ = symbol("time_step", SymbolKind::ParticleInput);
   dilatation_factor_ = symbol("dilatation_factor", SymbolKind::BondInput);
   force_factor_ = symbol("force_factor", SymbolKind::BondInput);
 }
@@ -68,7 +69,8 @@ Expr Law::param(const std::string& name, double test_value) {
 
 Expr Law::param(const std::string& name, double test_value, ParamRange range) {
   const bool inside = range == ParamRange::any || (range == ParamRange::positive && test_value > 0) ||
-                      (range == ParamRange::non_negative && test_value >= 0);
+                      (range == ParamRange::non_negative && test_value >= 0) ||
+                      (range == ParamRange::unit_interval && test_value >= 0 && test_value <= 1);
   if (!inside)
     throw std::invalid_argument("law " + name_ + ": the test value of parameter '" + name +
                                 "' lies outside the range the law declares for it");

@@ -66,6 +66,7 @@ FamilyAssembler::FamilyAssembler(const Particles& particles, const Bonds& bonds,
   inputs_.n_history = law.n_history;
   inputs_.particle_history = options.particle_history;
   inputs_.n_particle_history = law.n_particle_history;
+  inputs_.time_step = options.time_step;
   inputs_.cache_max_bonds();
   update_moments();
   const Coupling coupling = options.coupling.value_or(coupling_of_law(law.n_states));

@@ -36,6 +36,9 @@ struct AssemblerOptions {
   const double* history = nullptr;
   // Likewise the committed per-particle history, [particles * n_particle_history].
   const double* particle_history = nullptr;
+  // A rate-dependent law (LawDescriptor::uses_time_step): the duration of the current step,
+  // read at every evaluation (the caller sets it before each step); null: 0. Must outlive it.
+  const double* time_step = nullptr;
 };
 
 // A law's internal variables (LawDescriptor::n_history, n_particle_history): per bond in

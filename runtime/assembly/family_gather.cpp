@@ -69,6 +69,7 @@ abi::Family FamilyGather::gather(int p, const double* u) {
   f.particle_history = in_->particle_history == nullptr
                            ? nullptr
                            : in_->particle_history + static_cast<std::ptrdiff_t>(p) * in_->n_particle_history;
+  f.time_step = in_->time_step == nullptr ? 0.0 : *in_->time_step;
   return f;
 }
 

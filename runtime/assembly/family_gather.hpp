@@ -32,6 +32,9 @@ struct FamilyInputs {
   // [p * n_particle_history]); null: every particle at the law's initial values.
   const double* particle_history = nullptr;
   int n_particle_history = 0;
+  // A rate-dependent law (LawDescriptor::uses_time_step): the duration of the current step
+  // every family reads (Family::time_step), owned by the caller (Model::step_duration); null: 0.
+  const double* time_step = nullptr;
 
   int dim() const { return particles->dim; }
   int size() const { return particles->size(); }

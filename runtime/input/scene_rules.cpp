@@ -83,6 +83,14 @@ Findings history_refusals(const SceneReading& r) {
                why +
                    "which the PETSc backend does not carry between load steps yet: use the serial backend "
                    "(or load_steps: 1)");
+  // A rate-dependent law (viscoelastic) reads the duration of each step; a static solve has
+  // no physical time to give it yet, and a step of 0 would silently freeze the law in its
+  // instantaneous response.
+  if (r.law->uses_time_step && !r.s.dynamics)
+    return one(r.section("law"),
+               why +
+                   "and reads the time step, which a static solve does not give yet: run it with dynamics "
+                   "(method: explicit)");
   if (r.s.gauss_points > 0) {
     const YamlAt domain = r.section("domain");
     return one(domain.child(domain.node["gauss_points"], "gauss_points"),

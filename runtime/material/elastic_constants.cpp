@@ -84,10 +84,14 @@ std::vector<double> law_parameters(const abi::LawDescriptor& law, const Isotropi
 std::string parameter_range_violation(const abi::LawDescriptor& law, int index, double value) {
   const abi::ParamRange range = law.param_ranges ? law.param_ranges[index] : abi::ParamRange::any;
   const bool inside = range == abi::ParamRange::any || (range == abi::ParamRange::positive && value > 0) ||
-                      (range == abi::ParamRange::non_negative && value >= 0);
+                      (range == abi::ParamRange::non_negative && value >= 0) ||
+                      (range == abi::ParamRange::unit_interval && value >= 0 && value <= 1);
   if (inside) return {};
-  return fmt::format("law {} needs parameter '{}' {}, got {:g}", law.name, law.param_names[index],
-                     range == abi::ParamRange::positive ? "> 0" : ">= 0", value);
+  const char* wanted = range == abi::ParamRange::positive       ? "> 0"
+                       : range == abi::ParamRange::non_negative ? ">= 0"
+                                                                : "in [0, 1]";
+  return fmt::format("law {} needs parameter '{}' {}, got {:g}", law.name, law.param_names[index], wanted,
+                     value);
 }
 
 }  // namespace pd

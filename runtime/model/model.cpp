@@ -175,6 +175,7 @@ void Model::build_assembler(const Scene& scene, const ModelPlan& plan) {
   options.gauss_points = gauss_points.get();
   options.history = bond_history.empty() ? nullptr : bond_history.data();
   options.particle_history = particle_history.empty() ? nullptr : particle_history.data();
+  options.time_step = &step_duration;
   assembler = make_force_operator(particles, bonds, *law, params, options);
   assembler_options = options;
 }

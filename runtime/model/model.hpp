@@ -91,6 +91,10 @@ struct Model : DiscretizedBody {
   std::vector<double> bond_history;
   // Likewise per particle, [particles * law.n_particle_history] (AssemblerOptions::particle_history).
   std::vector<double> particle_history;
+  // The duration of the current step, which a rate-dependent law reads
+  // (LawDescriptor::uses_time_step, AssemblerOptions::time_step): the driver sets it before
+  // each step (explicit dynamics: dt). 0 until then, the instantaneous response.
+  double step_duration = 0.0;
   bool has_history() const { return !bond_history.empty() || !particle_history.empty(); }
   // Commits a converged step: the history becomes the law's update at displacement u
   // (FamilyAssembler::updated_history). Call only with a converged solution: a failed or

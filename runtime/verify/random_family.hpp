@@ -30,6 +30,9 @@ struct TestFamily {
   std::vector<double> particle_history;
   mutable std::vector<double> kernel_scratch;  // the kernels' Family::scratch, sized on first view()
   double V0 = 1.0, delta = 3.0;
+  // Family::time_step: a step a rate-dependent law's test relaxation time (0.7) makes neither
+  // instantaneous nor fully relaxed.
+  double time_step = 0.3;
   const abi::LawDescriptor* law = nullptr;
 
   int bonds() const { return static_cast<int>(w.size()); }
@@ -45,6 +48,7 @@ struct TestFamily {
     f.V = V.data();
     f.V0 = V0;
     f.delta = delta;
+    f.time_step = time_step;
     f.params = params.data();
     f.nbr_params = nbr_params.empty() ? nullptr : nbr_params.data();
     f.moments = moments.data();

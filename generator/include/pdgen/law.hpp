@@ -48,7 +48,8 @@ struct HistoryDef {
 enum class ParamRange {
   any,
   positive,      // > 0: a yield stress, a relaxation time
-  non_negative,  // >= 0: a hardening modulus, a viscous weight
+  non_negative,   // >= 0: a hardening modulus
+  unit_interval,  // in [0, 1]: a viscous weight
 };
 
 // How a bond's pair parameter p_ij is formed from its two particles' values; each
@@ -106,6 +107,15 @@ class Law {
   Expr V() const { return V_; }
   Expr V0() const { return V0_; }
   Expr delta() const { return delta_; }
+  // The duration of the current step (Family::time_step): the time a rate-dependent law's
+  // update integrates over (a viscous back-extension). A law that reads it is marked
+  // LawDescriptor::uses_time_step, and the runtime refuses it in a scene that gives no time.
+  Expr time_step() {
+    reads_time_step_ = true;
+    return time_step_;
+  }
+  Expr time_step_symbol() const { return time_step_; }
+  bool reads_time_step() const { return reads_time_step_; }
   // Surface correction (paper 003 eq. 19, runtime/assembly/surface_correction.hpp):
   // per-bond factors the runtime passes in abi::Family (null: 1). The force factor
   // multiplies every bond's force state (the builders apply it; a law does not use it).
@@ -209,7 +219,8 @@ class Law {
   std::string name_, summary_;
   int dim_;
   Vec xi_, Y_;
-  Expr w_, alpha_, V_, V0_, delta_, dilatation_factor_, force_factor_;
+  Expr w_, alpha_, V_, V0_, delta_, time_step_, dilatation_factor_, force_factor_;
+  bool reads_time_step_ = false;
   bool has_dilatation_sum_ = false;
   std::vector<std::string> param_names_;
   std::vector<Expr> params_;
