@@ -48,10 +48,11 @@ Law viscoelastic(const std::string& name, int dim, const std::string& summary) {
 }  // namespace
 
 PDGEN_LAW(viscoelastic_plane_strain) {
-  return viscoelastic("viscoelastic_plane_strain", 2,
-                      "Mitchell's ordinary state-based viscoelastic law, a standard linear solid per bond "
-                      "(SAND2011-8064; Peridigm's Viscoelastic), plane strain; params K (3D bulk), G, lambda_i, "
-                      "tau_b; history back_extension and deviatoric_extension per bond; reads the time step");
+  return viscoelastic(
+      "viscoelastic_plane_strain", 2,
+      "Mitchell's ordinary state-based viscoelastic law, a standard linear solid per bond "
+      "(SAND2011-8064; Peridigm's Viscoelastic), plane strain; params K (3D bulk), G, lambda_i, "
+      "tau_b; history back_extension and deviatoric_extension per bond; reads the time step");
 }
 
 PDGEN_LAW(viscoelastic_3d) {

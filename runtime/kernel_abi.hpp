@@ -21,14 +21,14 @@ namespace pd::abi {
 // Inputs of one family. Arrays are bond-major: component c of bond k of a vector
 // quantity is at [k*dim + c].
 struct Family {
-  int n_bonds = 0;                 // L
-  const double* xi = nullptr;      // [L*dim] reference bonds  x_k - x_0
-  const double* Y = nullptr;       // [L*dim] deformed bonds   y_k - y_0
-  const double* w = nullptr;       // [L] influence weights
-  const double* alpha = nullptr;   // [L] bond factors, 1 intact, 0 broken (unused by the intact variant)
-  const double* V = nullptr;       // [L] neighbour volumes
-  double V0 = 0.0;                 // center volume
-  double delta = 0.0;              // horizon of the center particle
+  int n_bonds = 0;                // L
+  const double* xi = nullptr;     // [L*dim] reference bonds  x_k - x_0
+  const double* Y = nullptr;      // [L*dim] deformed bonds   y_k - y_0
+  const double* w = nullptr;      // [L] influence weights
+  const double* alpha = nullptr;  // [L] bond factors, 1 intact, 0 broken (unused by the intact variant)
+  const double* V = nullptr;      // [L] neighbour volumes
+  double V0 = 0.0;                // center volume
+  double delta = 0.0;             // horizon of the center particle
   // The duration of the current step (physical time), read by a rate-dependent law's force and
   // update (LawDescriptor::uses_time_step): the time step of explicit dynamics, or the time a
   // static load step spans (solver.duration). 0 for a law that does not read it.

@@ -75,10 +75,10 @@ std::string descriptor_head(const Law& law) {
   desc << "  static const " << range_type << " ranges[] = {";
   for (ParamRange r : law.param_ranges())
     desc << range_type << "::"
-         << (r == ParamRange::positive       ? "positive"
-             : r == ParamRange::non_negative ? "non_negative"
+         << (r == ParamRange::positive        ? "positive"
+             : r == ParamRange::non_negative  ? "non_negative"
              : r == ParamRange::unit_interval ? "unit_interval"
-                                             : "any")
+                                              : "any")
          << ", ";
   desc << range_type << "::any};\n";
   desc << "  static const char* const history_names[] = {";

@@ -60,7 +60,7 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   const DynamicsSpec& dyn = *run.scene.dynamics;
   DynamicsReport& rep = run.start_report();
   const double dt = run.dt();
-  run.model.step_duration = dt;  // a rate-dependent law integrates its update over dt
+  run.model.step_duration = dt;         // a rate-dependent law integrates its update over dt
   exec.check_agrees(dt, "time steps");  // the set-up ran on every process from the same scene
   run.add_effect_line(exec.describe("velocity Verlet", "step", ""));
   rep.dt = dt, rep.dt_stable = model.inertia->dt_stable, rep.damping = dyn.damping;

@@ -112,4 +112,3 @@ TEST(ViscoelasticDynamics, TheTimeStepReachesTheLawAndTheViscousArmActs) {
     apart = std::max(apart, std::fabs(viscous.displacement()[i] - spring.displacement()[i]));
   EXPECT_GT(apart, 1e-2 * largest(spring.displacement()));
 }
-

@@ -47,7 +47,7 @@ struct HistoryDef {
 // 0 would divide by zero in the return map; a negative relaxation time grows without bound).
 enum class ParamRange {
   any,
-  positive,      // > 0: a yield stress, a relaxation time
+  positive,       // > 0: a yield stress, a relaxation time
   non_negative,   // >= 0: a hardening modulus
   unit_interval,  // in [0, 1]: a viscous weight
 };
