@@ -30,8 +30,8 @@ struct Family {
   double V0 = 0.0;                // center volume
   double delta = 0.0;             // horizon of the center particle
   // The duration of the current step (physical time), read by a rate-dependent law's force and
-  // update (LawDescriptor::uses_time_step): the time step of explicit dynamics, or the time a
-  // static load step spans (solver.duration). 0 for a law that does not read it.
+  // update (LawDescriptor::uses_time_step): the time step of explicit dynamics (static scenes
+  // refuse such a law: they have no physical time yet). 0 for a law that does not read it.
   double time_step = 0.0;
   const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
   // [L*n_params] the neighbours' material parameters, bond-major (bond k's at [k*n_params]),
@@ -177,7 +177,7 @@ struct LawDescriptor {
   // Family::dilatation_factor; false: only Family::force_factor acts.
   bool has_dilatation_sum = false;
   // The law reads Family::time_step (pdgen Law::time_step): its answer depends on how long a
-  // step lasts, so a scene must give physical time (dynamics, or solver.duration).
+  // step lasts, so it runs only where the scene gives physical time (explicit dynamics).
   bool uses_time_step = false;
   // The force never reads Family::w (bond-based laws, a kernel built into the law): the
   // scene's influence function does not change the law's forces.
