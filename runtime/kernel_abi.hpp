@@ -30,8 +30,9 @@ struct Family {
   double V0 = 0.0;                // center volume
   double delta = 0.0;             // horizon of the center particle
   // The duration of the current step (physical time), read by a rate-dependent law's force and
-  // update (LawDescriptor::uses_time_step): the time step of explicit dynamics (static scenes
-  // refuse such a law: they have no physical time yet). 0 for a law that does not read it.
+  // update (LawDescriptor::uses_time_step): the time step of explicit dynamics, or a static
+  // increment's share of solver.duration (NewtonSettings::duration). 0 for a law that does not
+  // read it.
   double time_step = 0.0;
   const double* params = nullptr;  // [n_params] material parameters, in LawDescriptor::param_names order
   // [L*n_params] the neighbours' material parameters, bond-major (bond k's at [k*n_params]),

@@ -83,14 +83,15 @@ Findings history_refusals(const SceneReading& r) {
                why +
                    "which the PETSc backend does not carry between load steps yet: use the serial backend "
                    "(or load_steps: 1)");
-  // A rate-dependent law (viscoelastic) reads the duration of each step; a static solve has
-  // no physical time to give it yet, and a step of 0 would silently freeze the law in its
-  // instantaneous response.
-  if (r.law->uses_time_step && !r.s.dynamics)
+  // A rate-dependent law (viscoelastic) reads the duration of each step; a static solve
+  // without solver.duration has no physical time to give it, and a step of 0 would silently
+  // freeze the law in its instantaneous response.
+  if (r.law->uses_time_step && !r.s.dynamics && r.s.solver.duration == 0)
     return one(r.section("law"),
                why +
-                   "and reads the time step, which a static solve does not give yet: run it with dynamics "
-                   "(method: explicit)");
+                   "and reads the time step, which a static solve without physical time does not give: "
+                   "give the load path its time with solver.duration, or run it with dynamics (method: "
+                   "explicit)");
   if (r.s.gauss_points > 0) {
     const YamlAt domain = r.section("domain");
     return one(domain.child(domain.node["gauss_points"], "gauss_points"),
@@ -190,6 +191,21 @@ const std::vector<SceneRule> kRules{
      }},
     {"a law with history runs where its history is committed", Section::dynamics, false,
      [](const SceneReading& r) { return history_refusals(r); }},
+    {"solver.duration times a static path of a rate-dependent law", Section::dynamics, false,
+     [](const SceneReading& r) {
+       if (r.s.solver.duration == 0) return Findings{};
+       const YamlAt solver = r.section("solver");
+       const YamlAt at = solver.child(solver.node["duration"], "duration");
+       if (r.s.dynamics)
+         return one(at,
+                    "duration is the physical time of a static load path; a dynamics section keeps its "
+                    "own time (dynamics.dt and steps): remove solver.duration");
+       if (!r.law->uses_time_step)
+         return one(at, "law " + r.s.law +
+                            " does not read the time step (it is rate-independent), so solver.duration would "
+                            "change nothing: remove it");
+       return Findings{};
+     }},
     {"damage.max_resolves belongs to static runs", Section::damage, false,
      [](const SceneReading& r) {
        return r.s.dynamics && r.s.damage && !r.s.damage->max_resolves_where.empty()

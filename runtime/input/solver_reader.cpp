@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "input/enum_choice.hpp"
 
 namespace pd {
@@ -54,16 +56,22 @@ SolverSpec read_solver(const YamlAt& at) {
   if (s.load_steps < 1) sv.get("load_steps").fail("load_steps must be at least 1");
   if (sv.has("load_path")) {
     s.load_path = sv.numbers("load_path");
-    const YamlAt at = sv.get("load_path");
+    const YamlAt path = sv.get("load_path");
     const auto segments = static_cast<int>(s.load_path.size()) - 1;
-    if (segments < 1) at.fail("load_path needs at least two values (the load factor at 0 and at 1)");
+    if (segments < 1) path.fail("load_path needs at least two values (the load factor at 0 and at 1)");
     if (s.load_path.front() != 0.0)
-      at.fail("load_path starts from the unloaded body: its first value must be 0");
+      path.fail("load_path starts from the unloaded body: its first value must be 0");
     if (s.load_steps % segments != 0)
-      at.fail(
+      path.fail(
           fmt::format("load_steps ({}) must be a multiple of the path's {} segments, so that every turning "
                       "point is a load step",
                       s.load_steps, segments));
+  }
+  if (sv.has("duration")) {
+    s.duration = sv.number("duration");
+    if (!(s.duration > 0) || !std::isfinite(s.duration))
+      sv.get("duration")
+          .fail("duration is the physical time of the load path: it must be positive and finite");
   }
   s.tolerance = sv.number("tolerance", 1e-10);
   s.max_iterations = sv.integer("max_iterations", 30);

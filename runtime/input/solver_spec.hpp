@@ -63,6 +63,9 @@ struct SolverSpec {
   // solver.load_path: the load factor at the equally spaced pseudo-times 0, 1/K, ..., 1 (K
   // segments, linear between); it may unload and reverse. Empty: proportional, i / load_steps.
   std::vector<double> load_path;
+  // solver.duration: the physical time the load path takes (NewtonSettings::duration), for a
+  // rate-dependent law in a static scene; 0 (not given): the path has no physical time.
+  double duration = 0.0;
   double tolerance = 1e-10;           // on the residual norm relative to the load
   double increment_tolerance = 1e-9;  // or on the last Newton increment relative to u
   int max_iterations = 30;

@@ -92,8 +92,11 @@ struct Model : DiscretizedBody {
   // Likewise per particle, [particles * law.n_particle_history] (AssemblerOptions::particle_history).
   std::vector<double> particle_history;
   // The duration of the current step, which a rate-dependent law reads
-  // (LawDescriptor::uses_time_step, AssemblerOptions::time_step): the driver sets it before
-  // each step (explicit dynamics: dt). 0 until then, the instantaneous response.
+  // (LawDescriptor::uses_time_step, AssemblerOptions::time_step): the driver sets it for
+  // each step (explicit dynamics: dt; the static driver: each increment's share of
+  // solver.duration). 0 until then, the instantaneous response, and again after the last
+  // commit: the committed state read at a zero duration gives the converged forces, which
+  // the outputs report (at the step's duration the law would relax one step more).
   double step_duration = 0.0;
   bool has_history() const { return !bond_history.empty() || !particle_history.empty(); }
   // Commits a converged step: the history becomes the law's update at displacement u

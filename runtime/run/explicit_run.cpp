@@ -117,6 +117,8 @@ RunSummary run_explicit(DynamicRun& run, bool write, int stop_after) {
   exec.gather();
   exec.check_finite(fmt::format("the displacement is not finite (unstable time step? dt = {:.6g})", dt));
   exec.commit_history();  // the last step stands too: the output fields read its history
+  // ... at a zero duration, so they are the last step's forces (Model::step_duration).
+  run.model.step_duration = 0.0;
   rep.last_step = last;
   rep.time = last * dt;
   rep.external_work = exec.sum(work.value());

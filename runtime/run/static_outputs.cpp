@@ -13,14 +13,17 @@
 namespace pd {
 
 namespace {
-// step, load and one column per probe (named as in the scene), one row per standing step;
-// doubles to 17 significant digits, so the file is the run's values.
+// step, load (and time, with solver.duration) and one column per probe (named as in the
+// scene), one row per standing step; doubles to 17 significant digits, so the file is the
+// run's values.
 std::string load_steps_csv(const StaticRun& run, const Scene& scene) {
-  std::string out = "step,load";
+  const bool timed = scene.solver.duration > 0;
+  std::string out = timed ? "step,load,time" : "step,load";
   for (const Probe& p : scene.probes) out += "," + p.name;
   out += "\n";
   for (const StaticRun::LoadStepRow& row : run.load_step_rows) {
     out += fmt::format("{},{:.17g}", row.step, row.load);
+    if (timed) out += fmt::format(",{:.17g}", row.time);
     for (double v : row.probes) out += fmt::format(",{:.17g}", v);
     out += "\n";
   }

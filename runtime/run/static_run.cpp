@@ -26,6 +26,7 @@ NewtonSettings newton_settings(const SolverSpec& sv, const SolverPlan& plan) {
   NewtonSettings s;
   s.load_steps = sv.load_steps;
   s.load_path = sv.load_path;
+  s.duration = sv.duration;
   s.max_iterations = sv.max_iterations;
   s.max_step_cuts = sv.max_step_cuts;
   s.relative_tolerance = sv.tolerance;
@@ -89,7 +90,7 @@ void record_load_step(StaticRun& run, const Model& model, const Scene& scene, in
   const std::vector<double> at(u.data(), u.data() + u.size());
   const std::vector<double> stress =
       wants_stress(scene) ? model.assembler->stresses(at.data()) : std::vector<double>{};
-  StaticRun::LoadStepRow row{step, load, {}};
+  StaticRun::LoadStepRow row{step, load, run.time, {}};
   for (const ProbeResult& p :
        evaluate_probes(scene, model.particles, probe_particles(scene, model.particles), at, &stress))
     row.probes.push_back(p.value);
@@ -106,6 +107,10 @@ long long after_load_step(StaticRun& run, Model& model, const Scene& scene, cons
   for (const auto& e : model.effects) changes += e->after_step(u.data(), FamilyScope{});
   if (changes == 0) {
     model.commit_history(u.data());
+    // The committed state is the converged one: read at a zero duration it gives the forces
+    // Newton converged on (a rate-dependent law would otherwise relax one more step in the
+    // probes and outputs). The next increment sets its own duration.
+    model.step_duration = 0.0;
     record_load_step(run, model, scene, step, load, u);
     return 0;
   }
@@ -183,11 +188,20 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
       return after_load_step(run, model, scene, log, step, load, v);
     };
     if (scene.damage) settings.max_resolves = scene.damage->max_resolves;
+    // A rate-dependent law integrates its update over each increment's physical duration.
+    settings.begin_increment = [&](double t_start, double t_end) {
+      model.step_duration = t_end - t_start;
+      run.time = t_end;
+    };
     if (run.plan.backend == Backend::petsc) {
       if (dofs.tied_count() > 0)
         throw SceneError(scene.file +
                          ": solver.backend: the PETSc backend does not take fictitious layers "
                          "(multipoint constraints); use the serial backend");
+      // The PETSc loop does not call begin_increment: a law with history runs there in one load
+      // step (scene_rules), so that step lasts the whole duration.
+      model.step_duration = scene.solver.duration / scene.solver.load_steps;
+      run.time = scene.solver.duration;
       const FamilyAssembler& tangent = bond_families(*model.assembler, "backend petsc");
       const FamilyAssembler& pc =
           model.approximation ? bond_families(*model.approximation, "backend petsc") : tangent;

@@ -25,13 +25,15 @@ struct StaticRun {
   std::vector<double> stress;    // peridynamic stress [n*dim*dim], when wants_stress(scene)
   // With several load steps and probes: after every load step that stands, its load factor
   // and each probe's value there (the path a load_path traces: a stress-strain loop),
-  // written to load_steps.csv.
+  // written to load_steps.csv; with solver.duration, the physical time it ends at too.
   struct LoadStepRow {
     int step = 0;
     double load = 0;
+    double time = 0;
     std::vector<double> probes;
   };
   std::vector<LoadStepRow> load_step_rows;
+  double time = 0;  // the end of the increment being solved (solver.duration), 0 without
 };
 
 // Plans the solver for the discretized body (plan_solver): the run with its plan, nothing solved.

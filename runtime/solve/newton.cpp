@@ -337,48 +337,55 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
         return rounding_floor(sys, dofs, at, load, r, reference);
       });
 
-  // The load from `from` (where u has converged) to `to`: iterations, then after_step and
-  // re-solves while it changes the system. A first solve that fails is cut: u goes back to
-  // the converged start and the two halves are solved in turn (cuts_left more times).
+  // The pseudo-time from `from` (where u has converged) to `to`: iterations at the load
+  // there, then after_step and re-solves while it changes the system. A first solve that
+  // fails is cut: u goes back to the converged start and the two halves (in pseudo-time,
+  // so a hold's halves each last half of its duration) are solved in turn (cuts_left more
+  // times).
   const std::function<bool(int, double, double, int)> advance = [&](int step, double from, double to,
                                                                     int cuts_left) {
     const Eigen::VectorXd start = u;
-    dofs.apply_prescribed(u, to);
+    const double load = s_.load_at_pseudo_time(to);
+    if (s_.begin_increment) s_.begin_increment(from * s_.duration, to * s_.duration);
+    dofs.apply_prescribed(u, load);
     for (int round = 0;; ++round) {
-      if (!iterations.run(step, to, round)) {
+      if (!iterations.run(step, load, round)) {
         if (round > 0 || cuts_left == 0) return false;
         u = start;
         ++res.step_cuts;
         const double mid = 0.5 * (from + to);
-        say(fmt::format("  cutting load step {}/{}: load {:.6g} -> {:.6g} in two ({} more cuts allowed)",
-                        step, s_.load_steps, from, to, cuts_left - 1));
+        say(fmt::format("  cutting load step {}/{}: load {:.6g} -> {:.6g}{} in two ({} more cuts allowed)",
+                        step, s_.load_steps, s_.load_at_pseudo_time(from), load,
+                        s_.duration > 0
+                            ? fmt::format(" (time {:.6g} -> {:.6g})", from * s_.duration, to * s_.duration)
+                            : std::string(),
+                        cuts_left - 1));
         return advance(step, from, mid, cuts_left - 1) && advance(step, mid, to, cuts_left - 1);
       }
       if (!s_.after_step) return true;
-      const long long changes = s_.after_step(step, to, u);
+      const long long changes = s_.after_step(step, load, u);
       if (changes == 0) return true;
       if (round == s_.max_resolves) {
         res.message = fmt::format(
             "the system still changed ({} changes) after {} re-solves of load {:.3g} (step {}/{}); try more "
             "load steps",
-            changes, s_.max_resolves, to, step, s_.load_steps);
+            changes, s_.max_resolves, load, step, s_.load_steps);
         say(res.message);
         return false;
       }
       ++res.resolves;
     }
   };
-  double load = 0.0;
   for (int step = 1; step <= s_.load_steps; ++step) {
-    const double next = s_.load_at(step);
-    if (!advance(step, load, next, s_.max_step_cuts)) {
+    const double from = static_cast<double>(step - 1) / s_.load_steps;
+    const double to = static_cast<double>(step) / s_.load_steps;
+    if (!advance(step, from, to, s_.max_step_cuts)) {
       if (s_.max_step_cuts > 0 && res.step_cuts > 0)
         res.message +=
             fmt::format(" (after cutting the step {} times, at most {} deep: solver.max_step_cuts)",
                         res.step_cuts, s_.max_step_cuts);
       return res;
     }
-    load = next;
   }
   res.message.clear();  // a failure a cut recovered from
   res.converged = true;
@@ -386,7 +393,10 @@ NewtonResult NewtonSolver::solve(NonlinearSystem& sys, const DofMap& dofs, Eigen
 }
 
 double NewtonSettings::load_at(int step) const {
-  const double s = static_cast<double>(step) / load_steps;
+  return load_at_pseudo_time(static_cast<double>(step) / load_steps);
+}
+
+double NewtonSettings::load_at_pseudo_time(double s) const {
   if (load_path.size() < 2) return s;
   const auto segments = static_cast<int>(load_path.size()) - 1;
   const double at = s * segments;

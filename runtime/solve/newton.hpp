@@ -53,6 +53,18 @@ struct NewtonSettings {
   // the factor at i / load_steps. Empty: proportional loading, factor i / load_steps.
   std::vector<double> load_path;
   double load_at(int step) const;
+  // The factor at pseudo-time s in [0, 1] (load step i ends at s = i / load_steps).
+  double load_at_pseudo_time(double s) const;
+  // solver.duration: the physical time the whole path takes, for a rate-dependent law
+  // (viscoelastic): pseudo-time s is t = s * duration, so a load step lasts duration /
+  // load_steps, a hold (a flat stretch of load_path) lets the law relax, and a cut step's
+  // halves last half as long each. 0: no physical time (every increment lasts 0).
+  double duration = 0.0;
+  // Called before the iterations of every increment (a load step, or a part of a cut one)
+  // with its physical start and end times, so the system integrates a rate-dependent law
+  // over end - start (run/static_run.cpp sets the model's step duration). A re-solve after
+  // after_step changed the system repeats the same increment.
+  std::function<void(double t_start, double t_end)> begin_increment;
   int max_iterations = 25;  // per load step
   // solver.max_step_cuts: a load step whose iterations fail (not converged, a residual
   // that is not finite, a failed linear solve) is solved again from the step's converged

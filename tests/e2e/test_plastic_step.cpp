@@ -11,6 +11,7 @@
 
 #include "input/scene.hpp"
 #include "kernel_abi.hpp"
+#include "right_reaction.hpp"
 #include "run/simulation.hpp"
 
 namespace {
@@ -91,18 +92,7 @@ TEST(PlasticStep, TheBodyYieldsOnlyWhenTheLoadExceedsTheYield) {
 }
 
 namespace {
-// The x reaction on the right column: minus the internal forces of its particles.
-double right_reaction(const pd::Simulation& sim) {
-  const pd::Particles& P = sim.particles();
-  std::vector<double> f(static_cast<std::size_t>(P.size() * P.dim));
-  sim.assembler().assemble(sim.displacement().data(), f.data(), nullptr);
-  double x_max = -1e300;
-  for (int p = 0; p < P.size(); ++p) x_max = std::max(x_max, P.x[static_cast<std::size_t>(p * P.dim)]);
-  double r = 0;
-  for (int p = 0; p < P.size(); ++p)
-    if (P.x[static_cast<std::size_t>(p * P.dim)] > x_max - 1e-9) r -= f[static_cast<std::size_t>(p * P.dim)];
-  return r;
-}
+using pd::test::right_reaction;
 
 pd::RunSummary run_path(const std::string& path, int steps, double sigma_y, double* reaction,
                         std::vector<double>* history = nullptr) {

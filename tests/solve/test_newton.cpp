@@ -141,6 +141,46 @@ TEST(Newton, AFailedLoadStepIsCutAndReachesTheSameSolution) {
   EXPECT_EQ(cut.history.back().load, 1.0);
 }
 
+// solver.duration: every increment is announced with its physical times before its
+// iterations; the increments that stand tile [0, duration] in order, a cut step's halves
+// each lasting half of what they split, and a hold (a flat load path) lasts as long as a ramp.
+TEST(Newton, IncrementsTileThePhysicalTimeAndCutsHalveIt) {
+  auto pb = nonlinear_problem();
+  auto sys = pb.system();
+  Eigen::VectorXd u;
+  const pd::NewtonResult full = run(sys, pb.dofs, u, {});
+  ASSERT_TRUE(full.converged);
+  pd::NewtonSettings st;
+  st.load_steps = 2;
+  st.load_path = {0.0, 1.0, 1.0};  // a ramp, then a hold at the full load
+  st.duration = 3.0;
+  st.max_iterations = static_cast<int>(full.history.size()) - 2;  // the ramp must be cut
+  st.max_step_cuts = 6;
+  std::vector<std::pair<double, double>> announced, stood;
+  std::vector<double> loads;
+  st.begin_increment = [&](double t0, double t1) { announced.emplace_back(t0, t1); };
+  st.after_step = [&](int, double load, const Eigen::VectorXd&) {
+    stood.push_back(announced.back());
+    loads.push_back(load);
+    return 0LL;
+  };
+  const pd::NewtonResult r = run(sys, pb.dofs, u, st);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_GT(r.step_cuts, 0);
+  EXPECT_GT(announced.size(), stood.size()) << "the failed increments were announced too";
+  ASSERT_GE(stood.size(), 3u);
+  EXPECT_EQ(stood.front().first, 0.0);
+  EXPECT_EQ(stood.back(), std::make_pair(1.5, 3.0)) << "the hold, uncut, lasts duration / load_steps";
+  for (std::size_t k = 1; k < stood.size(); ++k) EXPECT_EQ(stood[k].first, stood[k - 1].second);
+  // The ramp's parts: lengths 1.5 / 2^c; the load follows the path at each part's end.
+  for (std::size_t k = 0; k + 1 < stood.size(); ++k) {
+    const double parts = 1.5 / (stood[k].second - stood[k].first);
+    EXPECT_EQ(parts, std::exp2(std::round(std::log2(parts)))) << k;
+    EXPECT_DOUBLE_EQ(loads[k], stood[k].second / 1.5);
+  }
+  EXPECT_EQ(loads.back(), 1.0);
+}
+
 TEST(Newton, CutsThatRunOutNameTheLimit) {
   auto pb = nonlinear_problem();
   auto sys = pb.system();
