@@ -63,18 +63,21 @@ Findings law_parameter_values(const SceneReading& r) {
 
 // A law with memory (abi::has_history) is evaluated from its committed
 // history, which the model keeps and the serial drivers commit: the static one after every
-// converged load step, explicit dynamics every time step (Model::commit_history). The
-// other paths do not carry it yet and would evaluate every step from the virgin body,
-// silently wrong after the first: they are refused.
+// converged load step, explicit dynamics every time step, dynamic relaxation (one load
+// step) once it has converged (Model::commit_history). The other paths do not carry it yet
+// and would evaluate every step from the virgin body, silently wrong after the first: they
+// are refused.
 Findings history_refusals(const SceneReading& r) {
   if (!abi::has_history(*r.law)) return {};
   const std::string why = "law " + r.s.law + " carries history (" + describe_history(*r.law) + "), ";
   const YamlAt solver = r.section("solver");
-  if (r.s.dynamics && r.s.dynamics->method == DynamicsMethod::relaxation)
+  // Relaxation is one load step from the virgin body (run/relaxation_run.cpp commits its
+  // answer once); it has no physical time for a rate-dependent law.
+  if (r.s.dynamics && r.s.dynamics->method == DynamicsMethod::relaxation && r.law->uses_time_step)
     return one(r.section("dynamics"),
                why +
-                   "which dynamic relaxation does not commit between load steps yet: solve it statically "
-                   "with load_steps (and load_path), or with method: explicit");
+                   "and reads the time step, which dynamic relaxation (pseudo-time) does not give: solve "
+                   "it statically with solver.duration, or with method: explicit");
   if (r.s.dynamics && r.s.solver.backend == Backend::petsc)
     return one(solver.child(solver.node["backend"], "backend"),
                why + "which the PETSc backend does not carry between time steps yet: use the serial backend");

@@ -128,6 +128,10 @@ RunSummary run_relaxation(DynamicRun& run, bool write, int stop_after) {
   rep.last_step = s;
   rep.time = s;
   rep.converged = ratio <= dyn.tolerance;
+  // A law with memory: relaxation is one load step from the virgin body, so every iterate
+  // read the committed (initial) history, as Newton's single step does; the converged
+  // answer stands and is committed once, for the outputs.
+  if (rep.converged) exec.commit_history();
   rep.residual_ratio = ratio;
   rep.damping = adr.damping();
   rep.strain_available = model.assembler->has_energy();

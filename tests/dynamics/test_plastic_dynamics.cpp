@@ -1,7 +1,8 @@
 // A law with memory in explicit dynamics (issue 29): the history is committed every time
 // step, a pulse past yield leaves plastic extension where an elastic one leaves the history
 // exactly at its initial value, and a run stopped and restarted from a checkpoint (which
-// carries the history) ends bit for bit like the uninterrupted one.
+// carries the history) ends bit for bit like the uninterrupted one. Dynamic relaxation, one
+// load step, commits its converged answer once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 
 #include "input/scene.hpp"
 #include "run/dynamic_simulation.hpp"
+#include "run/simulation.hpp"
 #include "temp_files.hpp"
 
 namespace {
@@ -111,4 +113,51 @@ TEST(ViscoelasticDynamics, TheTimeStepReachesTheLawAndTheViscousArmActs) {
   for (std::size_t i = 0; i < viscous.displacement().size(); ++i)
     apart = std::max(apart, std::fabs(viscous.displacement()[i] - spring.displacement()[i]));
   EXPECT_GT(apart, 1e-2 * largest(spring.displacement()));
+}
+
+namespace {
+// The static bar of tests/e2e/test_plastic_step.cpp, pulled past yield (a uniaxial strain
+// of 2.5e-3 against a yield strain of about 1.3e-3), solved by relaxation or by Newton.
+pd::Scene yielding_bar(bool relaxation) {
+  std::string text = R"(dimension: 2
+domain:
+  box: {min: [0, 0], max: [4, 1]}
+  count: 24
+horizon: {ratio: 3.0}
+law: elastic_plastic_plane_strain
+materials: [{E: 200, nu: 0.3, density: 1, parameters: {sigma_y: 0.25}}]
+boundary:
+  - region: {side: left}
+    fixed: [x, y]
+  - region: {side: right}
+    displacement: {x: 0.01}
+solver: {tolerance: 1e-12, increment_tolerance: 0}
+)";
+  if (relaxation) text += "dynamics: {method: relaxation, steps: 200000, tolerance: 1.0e-11, threads: 1}\n";
+  pd::Scene s = pd::parse_scene(text, "bar.yaml");
+  s.output.directory =
+      pd::test::scratch_path(relaxation ? "pd_plastic_relaxation" : "pd_plastic_newton").string();
+  return s;
+}
+
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double num = 0, den = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) num += (a[i] - b[i]) * (a[i] - b[i]), den += b[i] * b[i];
+  return std::sqrt(num / den);
+}
+}  // namespace
+
+// Dynamic relaxation is one load step from the virgin body: its iterates read the initial
+// history, as Newton's single step does, and the converged answer is committed once. So
+// u and the committed plastic extension are Newton's to the relaxation tolerance; without
+// the commit the history would stay 0.
+TEST(PlasticRelaxation, ReachesNewtonsOneStepAnswerAndCommitsItsHistory) {
+  pd::Simulation newton(yielding_bar(false), [](const std::string&) {});
+  ASSERT_TRUE(newton.run(false).newton.converged);
+  pd::DynamicSimulation relaxed(yielding_bar(true), [](const std::string&) {});
+  const pd::RunSummary r = relaxed.run(false);
+  ASSERT_TRUE(r.dynamics->converged);
+  ASSERT_GT(largest(newton.bond_history()), 1e-4) << "the bar yields";
+  EXPECT_LT(relative_difference(relaxed.displacement(), newton.displacement()), 1e-7);
+  EXPECT_LT(relative_difference(relaxed.bond_history(), newton.bond_history()), 1e-6);
 }
