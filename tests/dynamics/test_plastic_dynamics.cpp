@@ -10,6 +10,7 @@
 #include <string>
 
 #include "input/scene.hpp"
+#include "relative_difference.hpp"
 #include "run/dynamic_simulation.hpp"
 #include "run/simulation.hpp"
 #include "temp_files.hpp"
@@ -140,11 +141,7 @@ solver: {tolerance: 1e-12, increment_tolerance: 0}
   return s;
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) num += (a[i] - b[i]) * (a[i] - b[i]), den += b[i] * b[i];
-  return std::sqrt(num / den);
-}
+using pd::test::relative_difference;
 }  // namespace
 
 // Dynamic relaxation is one load step from the virgin body: its iterates read the initial

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "input/scene.hpp"
+#include "relative_difference.hpp"
 #include "right_reaction.hpp"
 #include "run/simulation.hpp"
 
@@ -74,11 +75,7 @@ Answer elastic(double shear) {
   return solve(s);
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) num += (a[i] - b[i]) * (a[i] - b[i]), den += b[i] * b[i];
-  return std::sqrt(num / den);
-}
+using pd::test::relative_difference;
 }  // namespace
 
 TEST(ViscoelasticStatic, AFastRampMeetsTheUnrelaxedBody) {

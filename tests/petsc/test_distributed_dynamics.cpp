@@ -16,6 +16,7 @@
 #include "input/scene.hpp"
 #include "model/model.hpp"
 #include "petsc/partition.hpp"
+#include "relative_difference.hpp"
 #include "run/dynamic_run.hpp"
 
 namespace pd {
@@ -47,11 +48,7 @@ Scene on_ranks(Scene scene) {
   return scene;
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double diff = 0, norm = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) diff += std::pow(a[i] - b[i], 2), norm += a[i] * a[i];
-  return norm > 0 ? std::sqrt(diff / norm) : INFINITY;
-}
+using pd::test::relative_difference;
 
 // Runs `make()` serially and over the ranks; checks the bonds and the state agree.
 template <class MakeScene>
