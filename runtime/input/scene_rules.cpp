@@ -63,8 +63,9 @@ Findings law_parameter_values(const SceneReading& r) {
 
 // A law with memory (abi::has_history) is evaluated from its committed
 // history, which the model keeps and the serial drivers commit: the static one after every
-// converged load step, explicit dynamics every time step, dynamic relaxation (one load
-// step) once it has converged (Model::commit_history). The other paths do not carry it yet
+// converged load step (on the PETSc backend too: every rank commits from the gathered u),
+// explicit dynamics every time step, dynamic relaxation (one load step) once it has
+// converged (Model::commit_history). The other paths do not carry it yet
 // and would evaluate every step from the virgin body, silently wrong after the first: they
 // are refused.
 Findings history_refusals(const SceneReading& r) {
@@ -81,11 +82,6 @@ Findings history_refusals(const SceneReading& r) {
   if (r.s.dynamics && r.s.solver.backend == Backend::petsc)
     return one(solver.child(solver.node["backend"], "backend"),
                why + "which the PETSc backend does not carry between time steps yet: use the serial backend");
-  if (r.s.solver.backend == Backend::petsc && r.s.solver.load_steps > 1)
-    return one(solver.child(solver.node["backend"], "backend"),
-               why +
-                   "which the PETSc backend does not carry between load steps yet: use the serial backend "
-                   "(or load_steps: 1)");
   // A rate-dependent law (viscoelastic) reads the duration of each step; a static solve
   // without solver.duration has no physical time to give it, and a step of 0 would silently
   // freeze the law in its instantaneous response.

@@ -208,6 +208,9 @@ void solve_load_steps(const DistributedProblem& pb, const SnesHandles& h, SnesCo
   Eigen::VectorXd target(u.size());
   for (int step = 1; step <= s.load_steps && result.message.empty(); ++step) {
     c.step = step, c.load = s.load_at(step), c.round = 0;
+    // A rate-dependent law integrates over the step's share of solver.duration (no cuts here).
+    if (s.begin_increment)
+      s.begin_increment(s.duration * (step - 1) / s.load_steps, s.duration * step / s.load_steps);
     target = u;
     pb.dofs->apply_prescribed(target, c.load);
     c.target_full.assign(target.data(), target.data() + target.size());

@@ -198,10 +198,6 @@ void run_static(StaticRun& run, Model& model, const Scene& scene, const RunLog& 
         throw SceneError(scene.file +
                          ": solver.backend: the PETSc backend does not take fictitious layers "
                          "(multipoint constraints); use the serial backend");
-      // The PETSc loop does not call begin_increment: a law with history runs there in one load
-      // step (scene_rules), so that step lasts the whole duration.
-      model.step_duration = scene.solver.duration / scene.solver.load_steps;
-      run.time = scene.solver.duration;
       const FamilyAssembler& tangent = bond_families(*model.assembler, "backend petsc");
       const FamilyAssembler& pc =
           model.approximation ? bond_families(*model.approximation, "backend petsc") : tangent;
