@@ -1,4 +1,4 @@
-// The four benchmarked laws written by hand, templated on the scalar type: the residual
+// The benchmarked laws written by hand, templated on the scalar type: the residual
 // that the forward-AD baselines differentiate over all family dofs (Trilinos Sacado's
 // DFad, as Peridigm does for its elastic models, and Eigen's AutoDiffScalar). Intact bonds only
 // (alpha = 1), like the generated `intact` kernels the benchmark compares with.
@@ -9,8 +9,9 @@
 // calls, so Eigen's lazy derivative expressions are evaluated into existing storage
 // (no allocation per operation, also with a heap-allocated derivative vector).
 //
-// The same formulas as laws/silling.cpp, oterkus.cpp, correspondence.cpp and
-// bond_based.cpp, including deformed_length() = sqrt(|Y|^2 + 1e-16 |xi|^2); the
+// The same formulas as laws/silling.cpp, oterkus.cpp, correspondence.cpp,
+// bond_based.cpp and elastic_plastic.cpp (the incremental residual of a law with memory, from
+// the family's committed history), including deformed_length() = sqrt(|Y|^2 + 1e-16 |xi|^2); the
 // benchmark checks residual and tangent against the generated kernels before timing.
 #pragma once
 
@@ -29,6 +30,7 @@ struct Workspace {
   std::vector<S> Y, len, a, b;  // [L*dim], [L], [L], [L]
   S t0, t1, t2;
   S N[9], P[9];
+  double yield_ratio = 0;  // elastic_plastic: ||t_trial||^2 / (2 psi0) of the last call
   void resize(int L, int dim) {
     Y.resize(static_cast<std::size_t>(L) * dim);
     len.resize(static_cast<std::size_t>(L));
@@ -81,6 +83,16 @@ void scatter(const abi::Family& fam, int d, S* f, Workspace<S>& w, const std::ve
       f[c] += w.t0;
       f[(k + 1) * d + c] -= w.t0;
     }
+}
+
+template <class S>
+double value(const S& x) {
+  if constexpr (std::is_same_v<S, double>)
+    return x;
+  else if constexpr (requires { x.fastAccessDx(0); })
+    return x.val();
+  else
+    return x.value();
 }
 
 inline double norm(const double* x, int d) {
@@ -220,6 +232,50 @@ void correspondence(const abi::Family& fam, int d, const S* y, S* f, Workspace<S
       f[(k + 1) * d + i] -= w.t0;
     }
   }
+}
+
+// laws/elastic_plastic.cpp (Mitchell's elastic-perfectly-plastic law); params K (3D bulk), G,
+// sigma_y; fam.history[k] the committed plastic extension e_p of bond k. The trial
+// deviatoric state t_tr = alpha w (e_d - e_p) from it, the closed-form return
+// s = sqrt(2 psi0 / ||t_tr||^2) on the plastic branch (1 on the elastic one), and
+// t = (w / m) n kappa theta |xi| + s t_tr along Y/|Y|: the step's incremental residual.
+template <class S>
+void elastic_plastic(const abi::Family& fam, int d, const S* y, S* f, Workspace<S>& w) {
+  const int L = fam.n_bonds;
+  detail::bonds(fam, d, y, f, w);
+  const double K = fam.params[0], G = fam.params[1], sigma_y = fam.params[2], n = d;
+  double m = 0, q = 0;
+  for (int k = 0; k < L; ++k) {
+    const double r = detail::norm(fam.xi + k * d, d);
+    m += fam.w[k] * r * r * fam.V[k];
+    q += fam.w[k] * fam.w[k] * r * r * fam.V[k];
+  }
+  detail::zero(w.t1, y[0]);  // theta
+  for (int k = 0; k < L; ++k) {
+    const double r = detail::norm(fam.xi + k * d, d);
+    w.t1 += (n / m * fam.w[k] * r * fam.V[k]) * (w.len[k] - r);
+  }
+  const double kappa = d == 2 ? K + G / 3 : K, c = d == 2 ? 8.0 : 15.0, alpha = c * G / m;
+  const double psi0 = c * c / (d == 2 ? 48.0 : 90.0) * q * sigma_y * sigma_y / (m * m);
+  detail::zero(w.t2, y[0]);  // ||t_tr||^2
+  for (int k = 0; k < L; ++k) {
+    const double r = detail::norm(fam.xi + k * d, d);
+    w.b[k] = (alpha * fam.w[k]) * (w.len[k] - (r / n) * w.t1 - (r + fam.history[k]));
+    w.t2 += fam.V[k] * (w.b[k] * w.b[k]);
+  }
+  w.yield_ratio = detail::value(w.t2) / (2 * psi0);
+  using std::sqrt;
+  if (w.yield_ratio > 1) {
+    w.t0 = sqrt((2 * psi0) / w.t2);
+  } else {
+    detail::zero(w.t0, y[0]);
+    w.t0 += 1.0;
+  }
+  for (int k = 0; k < L; ++k) {
+    const double r = detail::norm(fam.xi + k * d, d), v = fam.V0 * fam.V[k];
+    w.a[k] = ((v * fam.w[k] / m * n * kappa * r) * w.t1 + v * (w.t0 * w.b[k])) / w.len[k];
+  }
+  detail::scatter(fam, d, f, w, w.a);
 }
 
 }  // namespace pd::bench
