@@ -144,3 +144,48 @@ TEST(PlasticStep, AnElasticPathLeavesTheHistoryUnchangedToTheBit) {
   for (double h : plastic) largest = std::max(largest, std::fabs(h));
   EXPECT_GT(largest, 1e-4) << "a yielding path leaves plastic extension";
 }
+
+namespace {
+// The bar under Mitchell's law with linear isotropic hardening (H = 50, E / 4) along `path`:
+// the displacement and the committed equivalent plastic strain lambda of every particle.
+struct HardeningAnswer {
+  std::vector<double> u, lambda;
+};
+HardeningAnswer hardening_path(const std::vector<double>& path, int steps) {
+  pd::Scene s = pd::parse_scene(std::string(kBar), "bar.yaml");
+  s.law = "elastic_plastic_hardening_plane_strain";
+  s.materials[0].parameters = {{"sigma_y", 0.25}, {"H", 50.0}};
+  s.solver.load_steps = steps;
+  s.solver.load_path = path;
+  pd::Simulation sim(s, [](const std::string&) {});
+  EXPECT_TRUE(sim.run(false).newton.converged);
+  return {sim.displacement(), sim.particle_history()};
+}
+}  // namespace
+
+// The hardening law's per-particle history in the static driver: lambda is committed after
+// each load step, so it grows with every yielding branch (pulled, then pushed back past
+// reverse yield), and an elastic unloading and reloading to the same end leaves the state
+// of the monotonic path: the same u and the same lambda.
+TEST(PlasticStep, TheHardeningLawCommitsItsEquivalentPlasticStrain) {
+  const HardeningAnswer pulled = hardening_path({0, 1}, 4);
+  const HardeningAnswer reloaded = hardening_path({0, 1, 0.8, 1}, 12);
+  const HardeningAnswer reversed = hardening_path({0, 1, -1}, 8);
+  ASSERT_EQ(pulled.lambda.size(), pulled.u.size() / 2) << "one lambda per particle";
+  double largest = 0, u_scale = 0, u_apart = 0, lambda_apart = 0;
+  int grew = 0;
+  for (std::size_t p = 0; p < pulled.lambda.size(); ++p) {
+    largest = std::max(largest, pulled.lambda[p]);
+    lambda_apart = std::max(lambda_apart, std::fabs(reloaded.lambda[p] - pulled.lambda[p]));
+    EXPECT_GE(reversed.lambda[p], pulled.lambda[p]) << "particle " << p << ": lambda never decreases";
+    grew += reversed.lambda[p] > pulled.lambda[p] + 1e-6;
+  }
+  for (std::size_t i = 0; i < pulled.u.size(); ++i) {
+    u_scale = std::max(u_scale, std::fabs(pulled.u[i]));
+    u_apart = std::max(u_apart, std::fabs(reloaded.u[i] - pulled.u[i]));
+  }
+  EXPECT_GT(largest, 1e-4) << "the bar yields";
+  EXPECT_GT(grew, static_cast<int>(pulled.lambda.size()) / 2) << "reverse yield adds to lambda";
+  EXPECT_LT(u_apart, 1e-9 * u_scale) << "an elastic unload and reload returns to the monotonic state";
+  EXPECT_LT(lambda_apart, 1e-9 * largest);
+}
