@@ -324,13 +324,28 @@ void viscoelastic_plane_strain_damaged_jvp(const pd::abi::Family& fam, const dou
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// viscoelastic_plane_strain_damaged_outputs: per bond 4 add, 11 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// viscoelastic_plane_strain_damaged_outputs: per bond 4 add, 15 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
+  double s_back_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_back_extension * H_back_extension * V * alpha * w;
+    }
+  }
+  s_back_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -347,11 +362,13 @@ void viscoelastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, doubl
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double p4 = std::sqrt(s_back_moment * (1.0 / s_m));
   outputs[0] = s_theta;
+  outputs[1] = p4;
 }
 
 // viscoelastic_plane_strain_damaged_update: per bond 9 add, 15 mul, 0 div, 2 call; per family 7 add, 15 mul, 3 div, 1 call
@@ -806,13 +823,27 @@ void viscoelastic_plane_strain_intact_jvp(const pd::abi::Family& fam, const doub
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
-// viscoelastic_plane_strain_intact_outputs: per bond 4 add, 10 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// viscoelastic_plane_strain_intact_outputs: per bond 4 add, 13 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
+  double s_back_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_back_extension * H_back_extension * V * w;
+    }
+  }
+  s_back_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 2.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -828,11 +859,13 @@ void viscoelastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double p4 = std::sqrt(s_back_moment * (1.0 / s_m));
   outputs[0] = s_theta;
+  outputs[1] = p4;
 }
 
 // viscoelastic_plane_strain_intact_update: per bond 9 add, 14 mul, 0 div, 2 call; per family 7 add, 15 mul, 3 div, 1 call
@@ -984,7 +1017,7 @@ pd::abi::LawDescriptor viscoelastic_plane_strain_descriptor() {
   static const double history_initial[] = {0.0, 0.0, 0.0};
   static const char* const particle_history_names[] = {nullptr};
   static const double particle_history_initial[] = {0.0};
-  static const char* const outputs[] = {"dilatation", nullptr};
+  static const char* const outputs[] = {"dilatation", "back_strain", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "viscoelastic_plane_strain";
   d.summary = "Mitchell's ordinary state-based viscoelastic law, a standard linear solid per bond (SAND2011-8064; Peridigm's Viscoelastic), plane strain; params K (3D bulk), G, lambda_i, tau_b; history back_extension and deviatoric_extension per bond; reads the time step";
@@ -999,7 +1032,7 @@ pd::abi::LawDescriptor viscoelastic_plane_strain_descriptor() {
   d.n_particle_history = 0;
   d.particle_history_names = particle_history_names;
   d.particle_history_initial = particle_history_initial;
-  d.n_outputs = 1;
+  d.n_outputs = 2;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;
@@ -1394,13 +1427,28 @@ void viscoelastic_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// viscoelastic_3d_damaged_outputs: per bond 6 add, 13 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// viscoelastic_3d_damaged_outputs: per bond 6 add, 17 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
+  double s_back_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_back_extension * H_back_extension * V * alpha * w;
+    }
+  }
+  s_back_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -1419,11 +1467,13 @@ void viscoelastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double p4 = std::sqrt(s_back_moment * (1.0 / s_m));
   outputs[0] = s_theta;
+  outputs[1] = p4;
 }
 
 // viscoelastic_3d_damaged_update: per bond 11 add, 17 mul, 0 div, 2 call; per family 7 add, 15 mul, 3 div, 1 call
@@ -1992,13 +2042,27 @@ void viscoelastic_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, do
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
-// viscoelastic_3d_intact_outputs: per bond 6 add, 12 mul, 0 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
+// viscoelastic_3d_intact_outputs: per bond 6 add, 15 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
   const double s_m = fam.moments[0];
+  double s_back_moment = 0.0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += H_back_extension * H_back_extension * V * w;
+    }
+  }
+  s_back_moment += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   double s_theta = 0.0;
   const double p0 = 3.0 * (1.0 / s_m);
-  double lane0[4] = {};
+  double lane1[4] = {};
   for (int k_group = 0; k_group < L; k_group += 4) {
     const int n_lanes = L - k_group < 4 ? L - k_group : 4;
 #pragma omp simd
@@ -2016,11 +2080,13 @@ void viscoelastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs)
     const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
     const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
     const double b3 = std::sqrt(b1);
-    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    lane1[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
     }
   }
-  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  const double p4 = std::sqrt(s_back_moment * (1.0 / s_m));
   outputs[0] = s_theta;
+  outputs[1] = p4;
 }
 
 // viscoelastic_3d_intact_update: per bond 11 add, 16 mul, 0 div, 2 call; per family 7 add, 15 mul, 3 div, 1 call
@@ -2242,7 +2308,7 @@ pd::abi::LawDescriptor viscoelastic_3d_descriptor() {
   static const double history_initial[] = {0.0, 0.0, 0.0};
   static const char* const particle_history_names[] = {nullptr};
   static const double particle_history_initial[] = {0.0};
-  static const char* const outputs[] = {"dilatation", nullptr};
+  static const char* const outputs[] = {"dilatation", "back_strain", nullptr};
   pd::abi::LawDescriptor d;
   d.name = "viscoelastic_3d";
   d.summary = "Mitchell's ordinary state-based viscoelastic law, a standard linear solid per bond (SAND2011-8064; Peridigm's Viscoelastic), 3D; params K, G, lambda_i, tau_b; history back_extension and deviatoric_extension per bond; reads the time step";
@@ -2257,7 +2323,7 @@ pd::abi::LawDescriptor viscoelastic_3d_descriptor() {
   d.n_particle_history = 0;
   d.particle_history_names = particle_history_names;
   d.particle_history_initial = particle_history_initial;
-  d.n_outputs = 1;
+  d.n_outputs = 2;
   d.output_names = outputs;
   d.balances_angular_momentum = true;
   d.has_dilatation_sum = true;

@@ -41,6 +41,10 @@ Law viscoelastic(const std::string& name, int dim, const std::string& summary) {
   law.force((p.dilatation_force + deviatoric) * law.Y() / p.l);
   law.update(eb, eb_new);
   law.update(ed_n, p.ed);
+  // Output, from the committed history: the size of the viscous arm's back extension at the
+  // particle, the rms back strain e_b / |xi| over the family, weighted as m weights the bonds
+  // (0 in a virgin body; it approaches the deviatoric strain as a held body relaxes).
+  law.output("back_strain", sqrt(law.sum("back_moment", p.wa * eb * eb * law.V()) / p.m));
   law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
   law.reproducing_terms(3, 4, 2);        // Silling's law's space, as the plastic laws
   return law;

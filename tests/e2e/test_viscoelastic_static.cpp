@@ -12,6 +12,7 @@
 #include <string>
 
 #include "input/scene.hpp"
+#include "kernel_abi.hpp"
 #include "relative_difference.hpp"
 #include "right_reaction.hpp"
 #include "run/simulation.hpp"
@@ -42,13 +43,22 @@ using pd::test::right_reaction;
 struct Answer {
   double reaction = 0;
   std::vector<double> u;
+  double back_strain = 0;  // the largest of the law's output back_strain (0 for other laws)
 };
 
 Answer solve(pd::Scene s) {
   pd::Simulation sim(s, [](const std::string&) {});
   const pd::RunSummary r = sim.run(false);
   EXPECT_TRUE(r.newton.converged) << r.newton.message;
-  return {right_reaction(sim), sim.displacement()};
+  Answer a{right_reaction(sim), sim.displacement(), 0.0};
+  const pd::abi::LawDescriptor& law = *pd::abi::find_law(s.law);
+  const std::vector<double> out = sim.assembler().particle_outputs(sim.displacement().data());
+  for (int i = 0; i < law.n_outputs; ++i)
+    if (std::string(law.output_names[i]) == "back_strain")
+      for (std::size_t p = static_cast<std::size_t>(i); p < out.size();
+           p += static_cast<std::size_t>(law.n_outputs))
+        a.back_strain = std::max(a.back_strain, out[p]);
+  return a;
 }
 
 // The ramp in one step of ramp_time, then `holds` steps sharing hold_time.
@@ -84,6 +94,8 @@ TEST(ViscoelasticStatic, AFastRampMeetsTheUnrelaxedBody) {
   const Answer unrelaxed = elastic(kShear);
   EXPECT_LT(relative_difference(fast.u, unrelaxed.u), 1e-8);
   EXPECT_NEAR(fast.reaction, unrelaxed.reaction, 1e-8 * unrelaxed.reaction);
+  // The output back_strain: the viscous arm has barely moved (beta ~ 5e-10 of the strain).
+  EXPECT_LT(fast.back_strain, 1e-8 * 0.01 / 4);
 }
 
 TEST(ViscoelasticStatic, ALongHoldEndsOnTheRelaxedBody) {
@@ -95,6 +107,10 @@ TEST(ViscoelasticStatic, ALongHoldEndsOnTheRelaxedBody) {
   ASSERT_LT(relaxed.reaction, 0.95 * unrelaxed.reaction) << "the test needs a visible relaxation";
   EXPECT_LT(relative_difference(held.u, relaxed.u), 1e-9);
   EXPECT_NEAR(held.reaction, relaxed.reaction, 1e-9 * relaxed.reaction);
+  // Relaxed, the back extension is the deviatoric extension: a back strain of the order of
+  // the bar's strain 0.01 / 4 (its deviatoric part, concentrated at the held ends).
+  EXPECT_GT(held.back_strain, 0.1 * 0.01 / 4);
+  EXPECT_LT(held.back_strain, 10 * 0.01 / 4);
 }
 
 // What the run reports is the state Newton converged on: read after the last commit, the
