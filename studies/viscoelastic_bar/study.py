@@ -101,7 +101,10 @@ def run(pd, out, name, lam, path, duration):
         f.write(SCENE.format(E=E, NU=NU, lam=lam, TAU=TAU, PULL=PULL, steps=len(path) - 1,
                              path=", ".join(repr(v) for v in path), duration=duration, directory=directory))
     started = time.time()
-    subprocess.run([pd, "run", scene], check=True, stdout=subprocess.DEVNULL)
+    try:
+        subprocess.run([pd, "run", scene], check=True, stdout=subprocess.DEVNULL)
+    except (OSError, subprocess.CalledProcessError) as e:
+        sys.exit(f"study.py: `{pd} run {scene}` failed ({e}); build pd first (./scripts/build.sh) or pass --pd")
     seconds = time.time() - started
     with open(os.path.join(directory, "load_steps.csv")) as f:
         rows = list(csv.DictReader(f))
