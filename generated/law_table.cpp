@@ -5,6 +5,7 @@
 #include "kernel_abi.hpp"
 #include "bond_based.hpp"
 #include "correspondence.hpp"
+#include "correspondence_plastic.hpp"
 #include "elastic_plastic.hpp"
 #include "elastic_plastic_hardening.hpp"
 #include "influence.hpp"
@@ -27,6 +28,8 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::correspondence_silling_3d_descriptor(),
       pd::generated::correspondence_littlewood_plane_strain_descriptor(),
       pd::generated::correspondence_littlewood_3d_descriptor(),
+      pd::generated::correspondence_plastic_plane_strain_descriptor(),
+      pd::generated::correspondence_plastic_3d_descriptor(),
       pd::generated::elastic_plastic_plane_strain_descriptor(),
       pd::generated::elastic_plastic_3d_descriptor(),
       pd::generated::elastic_plastic_hardening_plane_strain_descriptor(),
@@ -47,7 +50,7 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::viscoelastic_plane_strain_descriptor(),
       pd::generated::viscoelastic_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 29);
+  return std::span<const LawDescriptor>(table, 31);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

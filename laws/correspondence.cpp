@@ -26,6 +26,7 @@
 //   not the derivative of an energy (the law declares none; its tangent is not symmetric).
 #include <cmath>
 
+#include "correspondence_kinematics.hpp"
 #include "pdgen/dsl.hpp"
 
 using namespace pdgen;
@@ -36,25 +37,20 @@ enum class Stabilisation { None, Silling, Littlewood };
 Law correspondence(const std::string& name, int dim, Stabilisation stab, const std::string& summary) {
   Law law(name, dim, summary);
   const Expr Kb = law.param("K"), G = law.param("G");
-  const Expr wa = law.w() * law.alpha();
-  const Mat K = law.sum("shape", wa * law.V() * outer(law.xi(), law.xi()));
-  const Mat N = law.sum("deformed_shape", wa * law.V() * outer(law.Y(), law.xi()));
-  const Mat Kinv = inverse(K);
-  const Mat F = N * Kinv;
-  const Mat eps = Expr(0.5) * (F + transpose(F)) - identity(dim);
+  const CorrespondenceKinematics kin = correspondence_kinematics(law, dim, Kb, G);
+  const Expr wa = kin.wa;
+  const Mat &Kinv = kin.Kinv, &F = kin.F, &eps = kin.eps;
   const Expr lambda = Kb - 2 * G / 3;
   const Mat sigma = lambda * trace(eps) * identity(dim) + 2 * G * eps;
   Vec t = wa * (sigma * (Kinv * law.xi()));
   Expr W = lambda / 2 * trace(eps) * trace(eps) + G * ddot(eps, eps);
   if (stab != Stabilisation::None) {
-    const Expr delta = law.delta(), r = norm(law.xi());
-    const Expr c = dim == 2 ? 12 * (Kb + G / 3) / (M_PI * pow(delta, 3)) : 18 * Kb / (M_PI * pow(delta, 4));
+    const Expr r = norm(law.xi());
+    const Expr c = kin.bulk;
     const Vec z = law.Y() - F * law.xi();
     if (stab == Stabilisation::Silling) {
-      const Expr w_bar =
-          law.sum("influence_volume", wa * law.V()) / law.sum("intact_volume", law.alpha() * law.V());
-      const Expr k = law.param("stab", 1.0) * c / (w_bar * delta);
-      t = t + wa * k * z;
+      Expr k;
+      t = t + silling_stabilisation(law, kin, &k);
       W = W + k / 2 * law.sum("nonaffine_energy", wa * dot(z, z) * law.V());
     } else {
       const Expr l = law.deformed_length();

@@ -12,11 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "history_law_cases.hpp"
 #include "kernel_abi.hpp"
 #include "verify/random_family.hpp"
 #include "verify/tangent_check.hpp"
 
 namespace {
+using pd::test::max_abs;
+using pd::test::max_diff;
+using pd::test::scale_deformation;
 using pd::verify::FamilyOptions;
 using pd::verify::TestFamily;
 using pd::verify::Truncation;
@@ -88,36 +92,7 @@ ReturnMap return_map(const TestFamily& f) {
   return out;
 }
 
-double max_abs(const std::vector<double>& v) {
-  double m = 0;
-  for (double x : v) m = std::max(m, std::fabs(x));
-  return m;
-}
-double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
-  double m = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
-  return m;
-}
-
-// y = x + lambda (y - x): the family's deformation scaled back toward the reference.
-void scale_deformation(TestFamily& f, const std::vector<double>& y_full, double lambda) {
-  std::vector<double> y(y_full.size());
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] = f.x[i] + lambda * (y_full[i] - f.x[i]);
-  f.set_positions(y);
-}
-
-struct Case {
-  const char* law;
-  Truncation truncation;
-  bool broken;
-};
-std::string case_name(const testing::TestParamInfo<Case>& info) {
-  const char* t[] = {"Interior", "Edge", "Corner"};
-  return std::string(info.param.law) + "_" + t[static_cast<int>(info.param.truncation)] +
-         (info.param.broken ? "_Broken" : "");
-}
-
-class PlasticLaw : public testing::TestWithParam<Case> {
+class PlasticLaw : public testing::TestWithParam<pd::test::HistoryCase> {
  protected:
   const pd::abi::LawDescriptor& law() const {
     const auto* d = pd::abi::find_law(GetParam().law);
@@ -135,13 +110,6 @@ class PlasticLaw : public testing::TestWithParam<Case> {
     TestFamily f = pd::verify::make_family(law(), o);
     f.params[2] = sigma_y;
     return f;
-  }
-  void expect_tangent_matches_differences(TestFamily& f, const char* state) const {
-    const auto M = f.tangent_matrix(law().damaged);
-    const auto err = pd::verify::block_errors(f, M, f.fd_matrix(law().damaged, 1e-6 * f.delta));
-    EXPECT_LT(err.worst(), 1e-6) << state << ": center " << err.center << ", on-diagonal " << err.on_diagonal
-                                 << ", off-diagonal " << err.off_diagonal << ", coupling "
-                                 << err.center_coupling;
   }
 };
 
@@ -194,23 +162,7 @@ TEST_P(PlasticLaw, AnElasticStepLeavesTheHistoryUnchangedToTheBit) {
 // with the committed history fixed (the incremental residual), in each state.
 TEST_P(PlasticLaw, AlgorithmicTangentMatchesDifferencesOnYieldingAndUnloadingStates) {
   TestFamily f = family(5, 0.01);
-  const std::vector<double> y1 = f.y;
-  const ReturnMap loading = return_map(f);
-  ASSERT_LT(loading.scale, 1.0) << "the first step must yield";
-  expect_tangent_matches_differences(f, "yielding from virgin");
-  f.commit_update(law().damaged);
-  const double s1 = loading.scale;
-  // With e_d - e_p = s1 e_d after the first step, scaling the deformation by lambda gives a
-  // trial norm ((lambda - 1 + s1) / s1)^2 times the yield value (up to the nonlinearity of |Y|).
-  scale_deformation(f, y1, 1 - 0.5 * s1);
-  ASSERT_EQ(return_map(f).scale, 1.0) << "the partial unloading must be elastic";
-  expect_tangent_matches_differences(f, "elastic unloading");
-  scale_deformation(f, y1, 1 - 3 * s1);
-  ASSERT_LT(return_map(f).scale, 1.0) << "the full unloading must yield in reverse";
-  expect_tangent_matches_differences(f, "reverse yielding");
-  scale_deformation(f, y1, 1.5);
-  ASSERT_LT(return_map(f).scale, 1.0) << "the reloading must yield";
-  expect_tangent_matches_differences(f, "reloading past the committed state");
+  pd::test::check_tangent_along_a_reversal(law(), f, [](const TestFamily& g) { return return_map(g).scale; });
 }
 
 // The plastic work of each step, sum over bonds of V0 V t_d (e_p,n+1 - e_p,n), is never
@@ -241,15 +193,15 @@ TEST_P(PlasticLaw, DissipationIsNeverNegativeOverARandomPath) {
   EXPECT_GT(total, 0.0);
 }
 
-std::vector<Case> cases() {
-  std::vector<Case> out;
+std::vector<pd::test::HistoryCase> cases() {
+  std::vector<pd::test::HistoryCase> out;
   for (const char* law : {"elastic_plastic_plane_strain", "elastic_plastic_3d",
                           "elastic_plastic_hardening_plane_strain", "elastic_plastic_hardening_3d"})
     for (Truncation t : {Truncation::Interior, Truncation::Corner})
       for (bool broken : {false, true}) out.push_back({law, t, broken});
   return out;
 }
-INSTANTIATE_TEST_SUITE_P(ElasticPlastic, PlasticLaw, testing::ValuesIn(cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(ElasticPlastic, PlasticLaw, testing::ValuesIn(cases()), pd::test::history_case_name);
 
 // With H = 0 the hardening law is Mitchell's perfectly plastic law: the same forces and plastic
 // extensions on a yielding step, whatever the equivalent plastic strain it carries.
