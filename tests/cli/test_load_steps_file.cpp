@@ -95,3 +95,35 @@ TEST(LoadStepsFile, OneLoadStepWritesNone) {
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "summary.json"));
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "load_steps.csv"));
 }
+
+// With solver.duration the file gains a time column: load step i of K ends at i / K of the
+// duration (pseudo-time is spread evenly over the steps). A viscoelastic bar ramped in the
+// first step and held for three: the held end's load stays 1 while the reaction of the
+// pulled face relaxes, so the mean stress falls step after step at constant load.
+TEST(LoadStepsFile, ADurationAddsTheTimeOfEveryStep) {
+  const std::string scene =
+      "dimension: 2\ndomain: {box: {min: [0, 0], max: [2, 0.5]}, count: 12}\n"
+      "horizon: {ratio: 3.0}\nlaw: viscoelastic_plane_strain\n"
+      "materials: [{E: 200, nu: 0.3, parameters: {lambda_i: 0.6, tau_b: 1.0}}]\n"
+      "boundary:\n"
+      "  - {region: {side: left}, fixed: [x, y]}\n"
+      "  - {region: {side: right}, displacement: {x: 0.01}}\n"
+      "solver: {load_steps: 4, load_path: [0, 1, 1, 1, 1], duration: 2.5}\n"
+      "probes:\n"
+      "  - {name: mid_stress, quantity: stress, component: xx, region: {box: {min: [0.8, 0], max: [1.2, "
+      "0.5]}}}\n";
+  const auto rows = run_bar("load_steps_time", scene);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"step", "load", "time", "mid_stress"}));
+  for (int k = 0; k < 4; ++k) {
+    const std::vector<std::string>& row = rows[static_cast<std::size_t>(k + 1)];
+    ASSERT_EQ(row.size(), 4u);
+    EXPECT_EQ(std::stoi(row[0]), k + 1);
+    EXPECT_NEAR(std::stod(row[1]), 1.0, 1e-15);  // the ramp fills the first of four segments
+    EXPECT_NEAR(std::stod(row[2]), 2.5 * (k + 1) / 4, 1e-15) << "step " << k + 1;
+    if (k > 0) {  // each hold step relaxes the pulled bar further
+      EXPECT_LT(std::stod(row[3]), std::stod(rows[static_cast<std::size_t>(k)][3]) * (1 - 1e-3))
+          << "step " << k + 1;
+    }
+  }
+}
