@@ -7,8 +7,10 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "input/particle_vtu.hpp"
 
@@ -38,10 +40,20 @@ bool parse_number(const std::string& s, double& v) {
 }
 }  // namespace
 
+bool is_vtu_path(const std::string& path) {
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
+}
+
 ParticleFile read_particle_file(const std::string& path, int dim) {
-  if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0) return read_particle_vtu(path, dim);
-  std::ifstream in(path);
+  if (is_vtu_path(path)) return read_particle_vtu(path, dim);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the particle file");
+  const std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_particle_csv(contents, path, dim);
+}
+
+ParticleFile parse_particle_csv(const std::string& contents, const std::string& path, int dim) {
+  std::istringstream in(contents);
   ParticleFile f;
   f.path = path;
   f.dim = dim;

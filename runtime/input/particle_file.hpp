@@ -36,6 +36,8 @@ struct ParticleFile {
 // that is not a finite number, a non-positive volume, two particles at one position,
 // and a file without rows. A path ending in .vtu is read by read_particle_vtu.
 ParticleFile read_particle_file(const std::string& path, int dim);
+// The same for a CSV file's contents, already read; `path` is only named in messages.
+ParticleFile parse_particle_csv(const std::string& contents, const std::string& path, int dim);
 
 // The material index of every row: a name from `names`, or an index into it. Throws
 // SceneError naming the line of the first row whose material is unknown.

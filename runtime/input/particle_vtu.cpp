@@ -113,15 +113,18 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
         s = vtu::Source{&d.bytes, d.appended + offset, true};
       }
     }
+    const std::size_t size = static_cast<std::size_t>(sizes.at(type));
+    // No array holds more bytes than the file has, times zlib's largest ratio: a count
+    // beyond that is not allocated for.
+    if (count > (d.bytes.size() + 1) * 1032 / size)
+      fail_at(d, a,
+              fmt::format("{}: {} values cannot be held by a file of {} bytes", what, count, d.bytes.size()));
     std::string bytes;
     try {
-      bytes = vtu::block_data(d, s);
+      bytes = vtu::block_data(d, s, static_cast<std::uint64_t>(count * size));
     } catch (const std::exception& e) {
       fail_at(d, a, fmt::format("{}: cannot decode the {} data: {}", what, format, e.what()));
     }
-    const std::size_t size = static_cast<std::size_t>(sizes.at(type));
-    if (bytes.size() % size != 0)
-      fail_at(d, a, fmt::format("{}: {} bytes is not a whole number of {}", what, bytes.size(), type));
     out = vtu::values(bytes, type, size, d.swap);
   } else {
     fail_at(d, a, fmt::format("{}: format=\"{}\" (VTK writes ascii, binary or appended)", what, format));
@@ -223,13 +226,16 @@ ParticleFile to_particles(const Doc& d, int dim, Arrays a, const std::vector<dou
 }  // namespace
 
 ParticleFile read_particle_vtu(const std::string& path, int dim) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open the particle file");
+  return parse_particle_vtu(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+                            path, dim);
+}
+
+ParticleFile parse_particle_vtu(const std::string& contents, const std::string& path, int dim) {
   Doc d;
   d.path = path;
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path + ": cannot open the particle file");
-    d.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
+  d.bytes = contents;
   // Raw appended data is not XML: parse only what comes before it (lines keep their numbers).
   std::string xml = d.bytes;
   d.appended = std::string::npos;

@@ -21,5 +21,7 @@ namespace pd {
 // scene's point with z != 0, more than one Piece, a missing volume array, arrays of the
 // wrong length or type, and data that cannot be decoded (with the reason).
 ParticleFile read_particle_vtu(const std::string& path, int dim);
+// The same for a .vtu file's bytes, already read; `path` is only named in messages.
+ParticleFile parse_particle_vtu(const std::string& contents, const std::string& path, int dim);
 
 }  // namespace pd

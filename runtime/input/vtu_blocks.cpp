@@ -72,24 +72,46 @@ Source Source::after_chars(std::size_t chars) const {
   return Source{text, k, true};
 }
 
-std::string block_data(const BlockFormat& d, const Source& s) {
+std::string block_data(const BlockFormat& d, const Source& s, std::uint64_t expected) {
   const std::size_t hb = static_cast<std::size_t>(d.header_bytes);
+  const auto claims = [expected](std::uint64_t bytes) {
+    return std::runtime_error(
+        fmt::format("the block header claims {} bytes where the array needs {}", bytes, expected));
+  };
   if (!d.zlib) {
     const std::uint64_t n = header_value(d, s.bytes(0, hb), 0);
-    if (n > (1ull << 40)) throw std::runtime_error(fmt::format("a block of {} bytes", n));
+    if (n != expected) throw claims(n);
     return s.bytes(hb, n);
   }
   // [#blocks][block size][last block size][compressed size of each block], then the
   // zlib streams one after the other (in base64 the header is encoded on its own).
   const std::uint64_t blocks = header_value(d, s.bytes(0, hb), 0);
-  if (blocks > (1ull << 30)) throw std::runtime_error(fmt::format("{} compressed blocks", blocks));
+  if (blocks > expected + 1) throw std::runtime_error(fmt::format("{} compressed blocks", blocks));
   const std::size_t header_size = hb * (3 + blocks);
   const std::string header = s.bytes(0, header_size);
   const std::uint64_t block_size = header_value(d, header, 1), last = header_value(d, header, 2);
+  if (blocks > 0) {
+    if (block_size > expected || last > block_size) throw claims(block_size);
+    const std::uint64_t final_block = last != 0 ? last : block_size;
+    if ((blocks - 1) * block_size + final_block != expected)  // no overflow: both are <= expected
+      throw claims((blocks - 1) * block_size + final_block);
+  } else if (expected != 0) {
+    throw claims(0);
+  }
   const Source data = s.base64 ? s.after_chars(base64_chars(header_size))
                                : Source{s.text, s.start + header_size, false, s.end};
+  // zlib cannot pack more than 1032 bytes into one (deflate's longest match per code), so
+  // the compressed sizes bound the output: a block claiming more is damaged.
+  constexpr std::uint64_t kZlibRatio = 1032, kZlibOverhead = 64;
   std::uint64_t total = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b) total += header_value(d, header, 3 + b);
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t csize = header_value(d, header, 3 + b);
+    const std::uint64_t size = (b + 1 == blocks && last != 0) ? last : block_size;
+    if (csize > s.text->size() || size > kZlibRatio * csize + kZlibOverhead)
+      throw std::runtime_error(
+          fmt::format("zlib block {}: {} compressed bytes cannot hold {} bytes", b, csize, size));
+    total += csize;  // at most blocks * the file's size: no overflow
+  }
   const std::string packed = data.bytes(0, total);
   std::string out;
   std::size_t at = 0;
@@ -104,6 +126,9 @@ std::string block_data(const BlockFormat& d, const Source& s) {
     out += chunk;
     at += csize;
   }
+  if (out.size() != expected)
+    throw std::runtime_error(
+        fmt::format("the zlib blocks hold {} bytes where the array needs {}", out.size(), expected));
   return out;
 }
 

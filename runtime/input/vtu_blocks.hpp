@@ -36,8 +36,11 @@ struct Source {
   Source after_chars(std::size_t chars) const;
 };
 
-// The bytes of a binary or appended array, after the block header and decompression.
-std::string block_data(const BlockFormat& d, const Source& s);
+// The bytes of a binary or appended array, after the block header and decompression. The
+// array needs `expected` bytes: a header that claims another size is refused before
+// anything is allocated for it (a block header is outside input, and so is its size), and
+// so is a zlib block claiming more than zlib's largest ratio (1032:1) allows.
+std::string block_data(const BlockFormat& d, const Source& s, std::uint64_t expected);
 
 // Decoded bytes as doubles: values of `size` bytes of VTK type `type` (Float32, ..., UInt64;
 // integers exact up to 2^53), byte-swapped when `swap`.

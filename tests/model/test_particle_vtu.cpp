@@ -148,6 +148,44 @@ TEST(ParticleVtu, MalformedFilesNameTheKeyTheLineAndThePoint) {
                 "body.vtu:5: Points: cannot decode the appended data: the data ends before the array does"),
             std::string::npos)
       << error_of(truncated);
+  // Block headers are outside input: a size they claim is checked against the array before
+  // anything is allocated for it (the fuzzer's first find: 2^59 bytes asked of the allocator).
+  const auto appended_points = [](const std::string& header_type, const std::string& compressor,
+                                  const std::string& block) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" byte_order=\"LittleEndian\" "
+           "header_type=\"" +
+           header_type + "\"" + compressor +
+           ">\n"
+           "<UnstructuredGrid><Piece NumberOfPoints=\"2\">\n<Points>\n"
+           "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" "
+           "offset=\"0\"/>\n</Points>\n"
+           "<PointData><DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">1 "
+           "1</DataArray></PointData>\n"
+           "</Piece></UnstructuredGrid>\n<AppendedData encoding=\"raw\">_" +
+           block + "</AppendedData></VTKFile>\n";
+  };
+  const std::string huge_raw = appended_points("UInt64", "", std::string("\0\0\0\0\0\0\0\x08\x01\x02", 10));
+  EXPECT_NE(error_of(huge_raw).find("body.vtu:5: Points: cannot decode the appended data: the block header "
+                                    "claims 576460752303423488 bytes where the array needs 48"),
+            std::string::npos)
+      << error_of(huge_raw);
+  // zlib: one block of 2^24 bytes claimed where the array needs 48.
+  const std::string huge_zlib =
+      appended_points("UInt32", " compressor=\"vtkZLibDataCompressor\"",
+                      std::string("\x01\0\0\0\0\0\0\x01\0\0\0\0\x04\0\0\0xxxx", 20));
+  EXPECT_NE(error_of(huge_zlib).find("body.vtu:5: Points: cannot decode the appended data: the block header "
+                                     "claims 16777216 bytes where the array needs 48"),
+            std::string::npos)
+      << error_of(huge_zlib);
+  // The right block size from 4 compressed bytes that are not a zlib stream: zlib's refusal.
+  const std::string bad_stream =
+      appended_points("UInt32", " compressor=\"vtkZLibDataCompressor\"",
+                      std::string("\x01\0\0\0\x30\0\0\0\0\0\0\0\x04\0\0\0xxxx", 20));
+  EXPECT_NE(error_of(bad_stream)
+                .find("body.vtu:5: Points: cannot decode the appended data: zlib block 0 does "
+                      "not decompress"),
+            std::string::npos)
+      << error_of(bad_stream);
   // No volume array: the PointData element's line.
   std::string no_volume = ascii_vtu("0 0 0  1 0 0", "1 1", "");
   no_volume.replace(no_volume.find("Name=\"volume\""), 13, "Name=\"vol\"");
