@@ -27,6 +27,11 @@ struct EmittedVariant {
   std::vector<NamedKernel> kernels;
 };
 
+// Stages 1-5 for one variant of a law ("damaged", or "intact" for law.with_alpha_folded()):
+// its kernel programs (generator/law/kernels.cpp), then C++ for each and the dense form.
+// Throws std::exception with the reason when a stage refuses the law.
+EmittedVariant emit_variant(const Law& law, const std::string& variant);
+
 // Collects laws and influence functions; files() formats them. Deterministic: the same
 // additions give the same bytes.
 class GeneratedFiles {
