@@ -57,7 +57,7 @@ TEST(HoleCutWeights, IntegrateTheSpaceOverTheBallPastTheHole) {
 }
 
 // The Fig. 1 solve with the reweighed families: every family the hole cut is reweighed
-// at 24^2 (none left with too few bonds), and the answer differs from the whole-ball one.
+// at 24^2 (none left with too few bonds), and the answer is closer than the whole-ball one.
 TEST(HoleCutWeights, TheHoleSolveReweighsEveryCutFamily) {
   pd::MichellHole hole;
   hole.T = 1, hole.a = 0.2, hole.x0 = 0.5, hole.y0 = 0.5, hole.lambda = 0.5, hole.mu = 0.5;
@@ -75,5 +75,8 @@ TEST(HoleCutWeights, TheHoleSolveReweighsEveryCutFamily) {
   const pd::ManufacturedResult cut = pd::solve_manufactured(field, s);
   EXPECT_GT(cut.cut_weight_families, 100);  // measured 125
   EXPECT_EQ(cut.cut_weight_fallbacks, 0);
-  EXPECT_GT(std::fabs(cut.rms_error - whole.rms_error), 0.05 * whole.rms_error);  // 7.6e-3 against 9.9e-3
+  // The reweighed families integrate their monomials over the ball minus the hole exactly,
+  // where the whole-ball weights count the hole: the error must fall, not merely change
+  // (measured 7.6e-3 against 9.9e-3, a ratio of 0.77).
+  EXPECT_LT(cut.rms_error, 0.9 * whole.rms_error);
 }

@@ -39,7 +39,7 @@ TEST(LpsPaperSolve, WithoutBrokenBondsObqMakesTheAnalyticVolumeTheDiscreteOne) {
 }
 
 // The hole of Fig. 1 (perturbed 24^2): the families that lost bonds keep m(delta), so the
-// error differs from the discrete-m law's (measured 9.91e-3 against 5.69e-3 at lambda = mu),
+// error is worse than the discrete-m law's (measured 9.91e-3 against 5.69e-3 at lambda = mu),
 // and with lambda != mu the corrected dilatation changes it again.
 TEST(LpsPaperSolve, BondsBrokenByTheHoleMakeTheAnalyticVolumeAndTheCorrectionAct) {
   pd::ManufacturedSetup s;
@@ -48,11 +48,15 @@ TEST(LpsPaperSolve, BondsBrokenByTheHoleMakeTheAnalyticVolumeAndTheCorrectionAct
   s.hole_radius = 0.2;
   const double discrete = solve_with("lps_plane_strain", michell_field(0.5, 0.5), s).rms_error;
   const double paper = solve_with("lps_paper_plane_strain", michell_field(0.5, 0.5), s).rms_error;
-  EXPECT_GT(std::fabs(paper - discrete), 0.2 * discrete);
+  // m(delta) over-counts every family the hole cut (its bonds into the hole are gone), so
+  // the analytic volume must be worse there, not merely different: measured 1.74 times.
+  EXPECT_GT(paper, 1.5 * discrete);
   s.lambda = 1.7, s.mu = 0.3;
   const double plain = solve_with("lps_paper_plane_strain", michell_field(1.7, 0.3), s).rms_error;
   const double corrected =
       solve_with("lps_paper_corrected_plane_strain", michell_field(1.7, 0.3), s).rms_error;
+  // No direction is claimed for the correction at nu = 0.425 (paper 001 motivates M+ in
+  // theta by near-incompressibility): it must act (measured 9.86e-3 -> 1.06e-2, +7.5 %).
   EXPECT_GT(std::fabs(plain - corrected), 0.05 * plain);
 }
 

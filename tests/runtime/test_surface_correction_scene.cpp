@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "assembly/surface_correction.hpp"
 #include "input/scene.hpp"
 #include "input/yaml_keys.hpp"
 #include "model/model.hpp"
@@ -62,6 +63,28 @@ TEST(SurfaceCorrectionScene, TheBodyPutsTheBondMeansOnTheBonds) {
           ASSERT_DOUBLE_EQ(on.bonds.surface_force[f], on.bonds.surface_force[e]);
         }
     }
+  // ... and that factor is the mean of its two ends' (paper 003 eq. 19): the particles'
+  // factors computed here from the uncorrected body, with the inputs the model gives.
+  const pd::SurfaceCorrectionInputs in{
+      off.law, &off.params, 3.0, 1.0, pd::Quadrature::Volume, off.influence->weight, pd::SurfaceMatch::Terms};
+  const pd::SurfaceFactors ends = pd::surface_correction_factors(off.particles, off.bonds, in);
+  int whole = 0;
+  for (int i = 0; i < on.particles.size(); ++i)
+    for (int e = on.bonds.offsets[i]; e < on.bonds.offsets[i + 1]; ++e) {
+      const auto j = static_cast<std::size_t>(on.bonds.neighbor[e]), k = static_cast<std::size_t>(i);
+      ASSERT_NEAR(on.bonds.surface_force[e], 0.5 * (ends.force[k] + ends.force[j]), 1e-15);
+      ASSERT_NEAR(on.bonds.surface_dilatation[e], 0.5 * (ends.dilatation[k] + ends.dilatation[j]), 1e-15);
+      // Two ends whose families the surface did not cut (cell centres 3.5 and 4.5 on the 8 x 8
+      // plate at delta 3) keep the bond as it is: the factors of a whole family are 1.
+      const double* p = on.particles.position(i);
+      const double* q = on.particles.position(on.bonds.neighbor[e]);
+      if (std::min({p[0], p[1], q[0], q[1]}) >= 3 && std::max({p[0], p[1], q[0], q[1]}) <= 5) {
+        EXPECT_NEAR(on.bonds.surface_force[e], 1.0, 1e-12);
+        EXPECT_NEAR(on.bonds.surface_dilatation[e], 1.0, 1e-12);
+        ++whole;
+      }
+    }
+  EXPECT_EQ(whole, 4 * 3);  // the 2 x 2 whole families and their bonds to each other
   // A law without a dilatation sum gets the force factor only.
   const pd::DiscretizedBody bb(
       pd::parse_scene(plate("  surface_correction: terms\n", "bond_based_constant_2d"), "s.yaml"));
