@@ -3,7 +3,9 @@
 // sums level by level, the force state per bond, the energy density, the outputs and the
 // history updates -- are evaluated in plain double arithmetic on random families, with no
 // lowering, CSE, hoisting or scheduling. The generated moments, residual, energy, outputs
-// and update kernels must agree to rounding. A bug in emit/ (a wrong common subexpression,
+// and update kernels must agree to rounding, and so must the JVP kernel and the dense
+// tangent formed from the tangent kernel's factors, against the chain rule through the
+// horizon sums written out here with pdgen::diff's derivatives. A bug in emit/ (a wrong common subexpression,
 // a sum accumulated in the wrong loop, a dropped term) fails here even where a finite-
 // difference check of the tangent is too loose to see it, since both sides of that check
 // would share the wrong residual.
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "kernel_abi.hpp"
+#include "pdgen/diff.hpp"
 #include "pdgen/dsl.hpp"
 #include "pdgen/eval.hpp"
 #include "verify/random_family.hpp"
@@ -56,6 +59,48 @@ class Oracle {
         const double t = f_.V0 * f_.V[k] * pdgen::evaluate(law_.force_state()[c], v);
         out[c] += t;
         out[(k + 1) * d + c] = -t;
+      }
+    }
+    return out;
+  }
+  // The directional derivative of forces() along dy by the chain rule written out here: each
+  // state sum's increment level by level (its body through Y and through the lower states),
+  // then each bond's force state through its own Y and every state. The derivatives are
+  // pdgen::diff's, evaluated by the interpreter: no kernel program, no emitted code.
+  std::vector<double> jvp(const std::vector<double>& dy) const {
+    const int d = f_.dim;
+    const auto dY = [&](int k, int c) { return dy[(k + 1) * d + c] - dy[c]; };
+    std::unordered_map<int, double> dS;  // by state symbol
+    std::vector<const pdgen::SumDef*> states;
+    int top = 0;
+    for (const pdgen::SumDef& s : law_.sums())
+      if (s.is_state) states.push_back(&s), top = std::max(top, s.level);
+    // Bond k's derivative of e along dy, through Y_k and the states already incremented.
+    const auto along = [&](const pdgen::Expr& e, int k, const Values& v) {
+      double total = 0;
+      for (int c = 0; c < d; ++c) total += pdgen::evaluate(pdgen::diff(e, law_.Y()[c]), v) * dY(k, c);
+      for (const auto& [state, increment] : dS)
+        for (const pdgen::SumDef* s : states)
+          if (symbol(s->symbol) == state) total += pdgen::evaluate(pdgen::diff(e, s->symbol), v) * increment;
+      return total;
+    };
+    for (int level = 0; level <= top; ++level) {
+      std::unordered_map<int, double> increments;
+      for (const pdgen::SumDef* s : states) {
+        if (s->level != level) continue;
+        double total = 0;
+        for (int k = 0; k < f_.bonds(); ++k) total += along(s->body, k, bond_values(k));
+        increments[symbol(s->symbol)] = total;
+      }
+      dS.insert(increments.begin(), increments.end());
+    }
+    std::vector<double> out(static_cast<std::size_t>(f_.dofs()), 0.0);
+    for (int k = 0; k < f_.bonds(); ++k) {
+      const Values v = bond_values(k);
+      for (int c = 0; c < d; ++c) {
+        const double dt = f_.V0 * f_.V[k] * along(law_.force_state()[c], k, v);
+        out[c] += dt;
+        out[(k + 1) * d + c] = -dt;
       }
     }
     return out;
@@ -191,6 +236,19 @@ TEST(GeneratedVsInterpreted, EveryLawsKernelsEvaluateItsExpressions) {
         expect_same(std::vector<double>(f.moments.begin(), f.moments.begin() + descriptor->n_moments),
                     moments, "moments");
         expect_same(f.forces(variant.kernels), oracle.forces(), "residual");
+        // The tangent along a random dy: the JVP kernel, and the dense matrix the tangent
+        // kernel's factors form (the law's own form kernel), times dy.
+        std::vector<double> dy(static_cast<std::size_t>(f.dofs()));
+        for (std::size_t i = 0; i < dy.size(); ++i) dy[i] = std::cos(0.7 + 2.3 * static_cast<double>(i));
+        const std::vector<double> expected = oracle.jvp(dy);
+        std::vector<double> df(dy.size());
+        variant.kernels.jvp(f.view(), dy.data(), df.data());
+        expect_same(df, expected, "jvp");
+        const std::vector<double> M = f.tangent_matrix(variant.kernels);
+        std::vector<double> Mdy(dy.size(), 0.0);
+        for (std::size_t i = 0; i < dy.size(); ++i)
+          for (std::size_t j = 0; j < dy.size(); ++j) Mdy[i] += M[i * dy.size() + j] * dy[j];
+        expect_same(Mdy, expected, "tangent (formed) times dy");
         if (law.has_energy()) {
           ASSERT_NE(variant.kernels.energy, nullptr);
           expect_same({variant.kernels.energy(f.view())}, {oracle.energy()}, "energy");
