@@ -38,11 +38,11 @@ bool parse_number(const std::string& s, double& v) {
   const auto r = std::from_chars(s.data(), end, v);
   return r.ec == std::errc() && r.ptr == end && std::isfinite(v);
 }
-}  // namespace
 
 bool is_vtu_path(const std::string& path) {
   return path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
 }
+}  // namespace
 
 ParticleFile read_particle_file(const std::string& path, int dim) {
   if (is_vtu_path(path)) return read_particle_vtu(path, dim);

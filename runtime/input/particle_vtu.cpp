@@ -116,7 +116,7 @@ std::vector<double> read_array(const Doc& d, const xmlNode* a, std::size_t count
     const std::size_t size = static_cast<std::size_t>(sizes.at(type));
     // No array holds more bytes than the file has, times zlib's largest ratio: a count
     // beyond that is not allocated for.
-    if (count > (d.bytes.size() + 1) * 1032 / size)
+    if (count > (d.bytes.size() + 1) * vtu::kZlibMaxRatio / size)
       fail_at(d, a,
               fmt::format("{}: {} values cannot be held by a file of {} bytes", what, count, d.bytes.size()));
     std::string bytes;

@@ -103,17 +103,19 @@ std::string block_data(const BlockFormat& d, const Source& s, std::uint64_t expe
   }
   const Source data = s.base64 ? s.after_chars(base64_chars(header_size))
                                : Source{s.text, s.start + header_size, false, s.end};
-  // zlib cannot pack more than 1032 bytes into one (deflate's longest match per code), so
-  // the compressed sizes bound the output: a block claiming more is damaged.
-  constexpr std::uint64_t kZlibRatio = 1032, kZlibOverhead = 64;
+  // The compressed sizes bound the output (kZlibMaxRatio): a block claiming more is damaged,
+  // and so are blocks that together are longer than the file.
+  constexpr std::uint64_t kZlibOverhead = 64;
   std::uint64_t total = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const std::uint64_t csize = header_value(d, header, 3 + b);
     const std::uint64_t size = (b + 1 == blocks && last != 0) ? last : block_size;
-    if (csize > s.text->size() || size > kZlibRatio * csize + kZlibOverhead)
+    if (csize > s.text->size() || size > kZlibMaxRatio * csize + kZlibOverhead)
       throw std::runtime_error(
           fmt::format("zlib block {}: {} compressed bytes cannot hold {} bytes", b, csize, size));
-    total += csize;  // at most blocks * the file's size: no overflow
+    total += csize;  // each term <= the file's size, and the sum is checked against it: no overflow
+    if (total > s.text->size())
+      throw std::runtime_error(fmt::format("the zlib blocks are longer than the file ({} bytes)", total));
   }
   const std::string packed = data.bytes(0, total);
   std::string out;

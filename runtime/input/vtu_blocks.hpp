@@ -36,6 +36,10 @@ struct Source {
   Source after_chars(std::size_t chars) const;
 };
 
+// zlib cannot pack more than 1032 bytes into one (deflate's longest match per code): what
+// a file of n bytes can hold at most, and what a compressed block of n bytes can inflate to.
+constexpr std::uint64_t kZlibMaxRatio = 1032;
+
 // The bytes of a binary or appended array, after the block header and decompression. The
 // array needs `expected` bytes: a header that claims another size is refused before
 // anything is allocated for it (a block header is outside input, and so is its size), and
