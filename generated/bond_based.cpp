@@ -159,6 +159,44 @@ void bond_based_constant_2d_damaged_jvp(const pd::abi::Family& fam, const double
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
+// bond_based_constant_2d_damaged_sensitivity: per bond 4 add, 13 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_constant_2d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * (p0 * p0 * p0) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sf * V * alpha;
+    const double b6 = b5 * Y_0;
+    const double b7 = b5 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane0[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane1[lane] += b7;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+}
+
 // bond_based_constant_2d_damaged_energy: per bond 4 add, 10 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_2d_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -416,6 +454,43 @@ void bond_based_constant_2d_intact_jvp(const pd::abi::Family& fam, const double*
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
+// bond_based_constant_2d_intact_sensitivity: per bond 4 add, 12 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_constant_2d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = 1.909859317102744 * (p0 * p0 * p0) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    const double b5 = p1 * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sf * V;
+    const double b6 = b5 * Y_0;
+    const double b7 = b5 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane0[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane1[lane] += b7;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+}
+
 // bond_based_constant_2d_intact_energy: per bond 4 add, 9 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_2d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -569,6 +644,8 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.damaged.tangent_ops = {9, 35, 3, 2};
   d.damaged.jvp = &bond_based_constant_2d_damaged_jvp;
   d.damaged.jvp_ops = {11, 35, 3, 2};
+  d.damaged.sensitivity = &bond_based_constant_2d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {4, 13, 2, 2};
   d.damaged.energy = &bond_based_constant_2d_damaged_energy;
   d.damaged.form = &bond_based_constant_2d_damaged_form;
   d.intact.moments = &bond_based_constant_2d_intact_moments;
@@ -578,6 +655,8 @@ pd::abi::LawDescriptor bond_based_constant_2d_descriptor() {
   d.intact.tangent_ops = {9, 31, 3, 2};
   d.intact.jvp = &bond_based_constant_2d_intact_jvp;
   d.intact.jvp_ops = {11, 32, 3, 2};
+  d.intact.sensitivity = &bond_based_constant_2d_intact_sensitivity;
+  d.intact.sensitivity_ops = {4, 12, 2, 2};
   d.intact.energy = &bond_based_constant_2d_intact_energy;
   d.intact.form = &bond_based_constant_2d_intact_form;
   return d;
@@ -735,6 +814,44 @@ void bond_based_conical_2d_damaged_jvp(const pd::abi::Family& fam, const double*
   }
   df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+}
+
+// bond_based_conical_2d_damaged_sensitivity: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_conical_2d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * (p0 * p0 * p0) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * sf * V * alpha;
+    const double b6 = b5 * Y_0;
+    const double b7 = b5 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane0[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane1[lane] += b7;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
 // bond_based_conical_2d_damaged_energy: per bond 5 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -996,6 +1113,43 @@ void bond_based_conical_2d_intact_jvp(const pd::abi::Family& fam, const double* 
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
 }
 
+// bond_based_conical_2d_intact_sensitivity: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_conical_2d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = 7.639437268410976 * (p0 * p0 * p0) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    const double b5 = p1 * (b3 - b4) * (1.0 - p0 * b4) * (1.0 / b3) * (1.0 / b4) * sf * V;
+    const double b6 = b5 * Y_0;
+    const double b7 = b5 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane0[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane1[lane] += b7;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+}
+
 // bond_based_conical_2d_intact_energy: per bond 5 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_2d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -1149,6 +1303,8 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.damaged.tangent_ops = {10, 39, 3, 2};
   d.damaged.jvp = &bond_based_conical_2d_damaged_jvp;
   d.damaged.jvp_ops = {12, 38, 3, 2};
+  d.damaged.sensitivity = &bond_based_conical_2d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {5, 15, 2, 2};
   d.damaged.energy = &bond_based_conical_2d_damaged_energy;
   d.damaged.form = &bond_based_conical_2d_damaged_form;
   d.intact.moments = &bond_based_conical_2d_intact_moments;
@@ -1158,6 +1314,8 @@ pd::abi::LawDescriptor bond_based_conical_2d_descriptor() {
   d.intact.tangent_ops = {10, 35, 3, 2};
   d.intact.jvp = &bond_based_conical_2d_intact_jvp;
   d.intact.jvp_ops = {12, 35, 3, 2};
+  d.intact.sensitivity = &bond_based_conical_2d_intact_sensitivity;
+  d.intact.sensitivity_ops = {5, 14, 2, 2};
   d.intact.energy = &bond_based_conical_2d_intact_energy;
   d.intact.form = &bond_based_conical_2d_intact_form;
   return d;
@@ -1353,6 +1511,52 @@ void bond_based_constant_3d_damaged_jvp(const pd::abi::Family& fam, const double
   df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// bond_based_constant_3d_damaged_sensitivity: per bond 6 add, 16 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_constant_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * (p1 * p1) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b5 = std::sqrt(b3);
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * sf * V * alpha;
+    const double b7 = b6 * Y_0;
+    const double b8 = b6 * Y_1;
+    const double b9 = b6 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b7;
+    lane0[lane] += b7;
+    dfdp[(k + 1) * 3 + 1] = -b8;
+    lane1[lane] += b8;
+    dfdp[(k + 1) * 3 + 2] = -b9;
+    lane2[lane] += b9;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_constant_3d_damaged_energy: per bond 6 add, 12 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -1718,6 +1922,51 @@ void bond_based_constant_3d_intact_jvp(const pd::abi::Family& fam, const double*
   df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// bond_based_constant_3d_intact_sensitivity: per bond 6 add, 15 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_constant_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 2.864788975654116 * (p1 * p1) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b5 = std::sqrt(b3);
+    const double b6 = p2 * (b4 - b5) * (1.0 / b4) * (1.0 / b5) * sf * V;
+    const double b7 = b6 * Y_0;
+    const double b8 = b6 * Y_1;
+    const double b9 = b6 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b7;
+    lane0[lane] += b7;
+    dfdp[(k + 1) * 3 + 1] = -b8;
+    lane1[lane] += b8;
+    dfdp[(k + 1) * 3 + 2] = -b9;
+    lane2[lane] += b9;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
 // bond_based_constant_3d_intact_energy: per bond 6 add, 11 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_constant_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -1937,6 +2186,8 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.damaged.tangent_ops = {15, 46, 3, 2};
   d.damaged.jvp = &bond_based_constant_3d_damaged_jvp;
   d.damaged.jvp_ops = {21, 52, 3, 2};
+  d.damaged.sensitivity = &bond_based_constant_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {6, 16, 2, 2};
   d.damaged.energy = &bond_based_constant_3d_damaged_energy;
   d.damaged.form = &bond_based_constant_3d_damaged_form;
   d.intact.moments = &bond_based_constant_3d_intact_moments;
@@ -1946,6 +2197,8 @@ pd::abi::LawDescriptor bond_based_constant_3d_descriptor() {
   d.intact.tangent_ops = {15, 42, 3, 2};
   d.intact.jvp = &bond_based_constant_3d_intact_jvp;
   d.intact.jvp_ops = {21, 49, 3, 2};
+  d.intact.sensitivity = &bond_based_constant_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {6, 15, 2, 2};
   d.intact.energy = &bond_based_constant_3d_intact_energy;
   d.intact.form = &bond_based_constant_3d_intact_form;
   return d;
@@ -2143,6 +2396,52 @@ void bond_based_conical_3d_damaged_jvp(const pd::abi::Family& fam, const double*
   df[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
   df[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// bond_based_conical_3d_damaged_sensitivity: per bond 7 add, 18 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_conical_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * (p1 * p1) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b5 = std::sqrt(b3);
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * sf * V * alpha;
+    const double b7 = b6 * Y_0;
+    const double b8 = b6 * Y_1;
+    const double b9 = b6 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b7;
+    lane0[lane] += b7;
+    dfdp[(k + 1) * 3 + 1] = -b8;
+    lane1[lane] += b8;
+    dfdp[(k + 1) * 3 + 2] = -b9;
+    lane2[lane] += b9;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
 // bond_based_conical_3d_damaged_energy: per bond 7 add, 14 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
@@ -2510,6 +2809,51 @@ void bond_based_conical_3d_intact_jvp(const pd::abi::Family& fam, const double* 
   df[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// bond_based_conical_3d_intact_sensitivity: per bond 7 add, 17 mul, 2 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
+void bond_based_conical_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 14.32394487827058 * (p1 * p1) * V0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b4 = std::sqrt(1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b5 = std::sqrt(b3);
+    const double b6 = p2 * (b4 - b5) * (1.0 - p0 * b5) * (1.0 / b4) * (1.0 / b5) * sf * V;
+    const double b7 = b6 * Y_0;
+    const double b8 = b6 * Y_1;
+    const double b9 = b6 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b7;
+    lane0[lane] += b7;
+    dfdp[(k + 1) * 3 + 1] = -b8;
+    lane1[lane] += b8;
+    dfdp[(k + 1) * 3 + 2] = -b9;
+    lane2[lane] += b9;
+    }
+  }
+  dfdp[0] += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[1] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[2] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
 // bond_based_conical_3d_intact_energy: per bond 7 add, 13 mul, 1 div, 2 call; per family 0 add, 4 mul, 1 div, 0 call
 double bond_based_conical_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -2729,6 +3073,8 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.damaged.tangent_ops = {16, 50, 3, 2};
   d.damaged.jvp = &bond_based_conical_3d_damaged_jvp;
   d.damaged.jvp_ops = {22, 55, 3, 2};
+  d.damaged.sensitivity = &bond_based_conical_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {7, 18, 2, 2};
   d.damaged.energy = &bond_based_conical_3d_damaged_energy;
   d.damaged.form = &bond_based_conical_3d_damaged_form;
   d.intact.moments = &bond_based_conical_3d_intact_moments;
@@ -2738,6 +3084,8 @@ pd::abi::LawDescriptor bond_based_conical_3d_descriptor() {
   d.intact.tangent_ops = {16, 46, 3, 2};
   d.intact.jvp = &bond_based_conical_3d_intact_jvp;
   d.intact.jvp_ops = {22, 52, 3, 2};
+  d.intact.sensitivity = &bond_based_conical_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {7, 17, 2, 2};
   d.intact.energy = &bond_based_conical_3d_intact_energy;
   d.intact.form = &bond_based_conical_3d_intact_form;
   return d;

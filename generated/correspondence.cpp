@@ -338,6 +338,100 @@ void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const d
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// correspondence_plane_strain_damaged_sensitivity: per bond 4 add, 36 mul, 0 div, 0 call; per family 12 add, 29 mul, 1 div, 0 call
+void correspondence_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p7 * V0;
+  const double p9 = p3 * s_shape_1_1;
+  const double p10 = p3 * s_shape_0_1;
+  const double p11 = p3 * s_shape_0_0;
+  const double p12 = p3 * s_shape_1_0;
+  const double p13 = 0.6666666666666666 * p7;
+  const double p14 = 2.0 * (p5 - 1.0) - p13;
+  const double p15 = p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0;
+  const double p16 = 2.0 * (p6 - 1.0) - p13;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b17 = p9 * xi_0 - p10 * xi_1;
+    const double b18 = p8 * b17 * sf * V * alpha * w;
+    const double b19 = p11 * xi_1 - p12 * xi_0;
+    const double b20 = p8 * b19 * sf * V * alpha * w;
+    const double b21 = V0 * (p14 * b17 + p15 * b19) * sf * V * alpha * w;
+    const double b22 = V0 * (p15 * b17 + p16 * b19) * sf * V * alpha * w;
+    dfdp[(k + 1) * 2 + 0] = -b18;
+    lane4[lane] += b18;
+    dfdp[(k + 1) * 2 + 1] = -b20;
+    lane5[lane] += b20;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b21;
+    lane6[lane] += b21;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b22;
+    lane7[lane] += b22;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+}
+
 // correspondence_plane_strain_damaged_energy: per bond 0 add, 8 mul, 0 div, 0 call; per family 14 add, 30 mul, 1 div, 0 call
 double correspondence_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -868,6 +962,98 @@ void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const do
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// correspondence_plane_strain_intact_sensitivity: per bond 4 add, 31 mul, 0 div, 0 call; per family 12 add, 29 mul, 1 div, 0 call
+void correspondence_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p7 * V0;
+  const double p9 = p3 * s_shape_1_1;
+  const double p10 = p3 * s_shape_0_1;
+  const double p11 = p3 * s_shape_0_0;
+  const double p12 = p3 * s_shape_1_0;
+  const double p13 = 0.6666666666666666 * p7;
+  const double p14 = 2.0 * (p5 - 1.0) - p13;
+  const double p15 = p3 * s_deformed_shape_0_1 * s_shape_0_0 + p3 * s_deformed_shape_1_0 * s_shape_1_1 - p3 * s_deformed_shape_0_0 * s_shape_0_1 - p3 * s_deformed_shape_1_1 * s_shape_1_0;
+  const double p16 = 2.0 * (p6 - 1.0) - p13;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b17 = p9 * xi_0 - p10 * xi_1;
+    const double b18 = p8 * b17 * sf * V * w;
+    const double b19 = p11 * xi_1 - p12 * xi_0;
+    const double b20 = p8 * b19 * sf * V * w;
+    const double b21 = V0 * (p14 * b17 + p15 * b19) * sf * V * w;
+    const double b22 = V0 * (p15 * b17 + p16 * b19) * sf * V * w;
+    dfdp[(k + 1) * 2 + 0] = -b18;
+    lane4[lane] += b18;
+    dfdp[(k + 1) * 2 + 1] = -b20;
+    lane5[lane] += b20;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b21;
+    lane6[lane] += b21;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b22;
+    lane7[lane] += b22;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+}
+
 // correspondence_plane_strain_intact_energy: per bond 0 add, 7 mul, 0 div, 0 call; per family 14 add, 30 mul, 1 div, 0 call
 double correspondence_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -1110,6 +1296,8 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.damaged.tangent_ops = {12, 70, 0, 0};
   d.damaged.jvp = &correspondence_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {16, 66, 0, 0};
+  d.damaged.sensitivity = &correspondence_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {4, 36, 0, 0};
   d.damaged.energy = &correspondence_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_plane_strain_damaged_form;
@@ -1120,6 +1308,8 @@ pd::abi::LawDescriptor correspondence_plane_strain_descriptor() {
   d.intact.tangent_ops = {12, 58, 0, 0};
   d.intact.jvp = &correspondence_plane_strain_intact_jvp;
   d.intact.jvp_ops = {16, 56, 0, 0};
+  d.intact.sensitivity = &correspondence_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {4, 31, 0, 0};
   d.intact.energy = &correspondence_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_plane_strain_intact_outputs;
   d.intact.form = &correspondence_plane_strain_intact_form;
@@ -1747,6 +1937,160 @@ void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy,
   df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
   df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+}
+
+// correspondence_3d_damaged_sensitivity: per bond 12 add, 62 mul, 0 div, 0 call; per family 42 add, 82 mul, 1 div, 0 call
+void correspondence_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p20 * V0;
+  const double p22 = p8 * p5;
+  const double p23 = p12 * p8;
+  const double p24 = p16 * p8;
+  const double p25 = p10 * p8;
+  const double p26 = p13 * p8;
+  const double p27 = p17 * p8;
+  const double p28 = p8 * p4;
+  const double p29 = p14 * p8;
+  const double p30 = p18 * p8;
+  const double p31 = 0.6666666666666666 * p20;
+  const double p32 = 2.0 * (p11 - 1.0) - p31;
+  const double p33 = p23 * s_deformed_shape_0_0 + p26 * s_deformed_shape_0_1 + p29 * s_deformed_shape_0_2 + p22 * s_deformed_shape_1_0 + p25 * s_deformed_shape_1_1 + p28 * s_deformed_shape_1_2;
+  const double p34 = p24 * s_deformed_shape_0_0 + p27 * s_deformed_shape_0_1 + p30 * s_deformed_shape_0_2 + p22 * s_deformed_shape_2_0 + p25 * s_deformed_shape_2_1 + p28 * s_deformed_shape_2_2;
+  const double p35 = 2.0 * (p15 - 1.0) - p31;
+  const double p36 = p24 * s_deformed_shape_1_0 + p27 * s_deformed_shape_1_1 + p30 * s_deformed_shape_1_2 + p23 * s_deformed_shape_2_0 + p26 * s_deformed_shape_2_1 + p29 * s_deformed_shape_2_2;
+  const double p37 = 2.0 * (p19 - 1.0) - p31;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b38 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
+    const double b39 = p21 * b38 * sf * V * alpha * w;
+    const double b40 = p25 * xi_0 + p26 * xi_1 + p27 * xi_2;
+    const double b41 = p21 * b40 * sf * V * alpha * w;
+    const double b42 = p28 * xi_0 + p29 * xi_1 + p30 * xi_2;
+    const double b43 = p21 * b42 * sf * V * alpha * w;
+    const double b44 = V0 * (p32 * b38 + p33 * b40 + p34 * b42) * sf * V * alpha * w;
+    const double b45 = V0 * (p33 * b38 + p35 * b40 + p36 * b42) * sf * V * alpha * w;
+    const double b46 = V0 * (p34 * b38 + p36 * b40 + p37 * b42) * sf * V * alpha * w;
+    dfdp[(k + 1) * 3 + 0] = -b39;
+    lane9[lane] += b39;
+    dfdp[(k + 1) * 3 + 1] = -b41;
+    lane10[lane] += b41;
+    dfdp[(k + 1) * 3 + 2] = -b43;
+    lane11[lane] += b43;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b44;
+    lane12[lane] += b44;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b45;
+    lane13[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b46;
+    lane14[lane] += b46;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
 }
 
 // correspondence_3d_damaged_energy: per bond 0 add, 14 mul, 0 div, 0 call; per family 46 add, 91 mul, 1 div, 0 call
@@ -2798,6 +3142,158 @@ void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, 
   df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
+// correspondence_3d_intact_sensitivity: per bond 12 add, 55 mul, 0 div, 0 call; per family 42 add, 82 mul, 1 div, 0 call
+void correspondence_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p20 * V0;
+  const double p22 = p8 * p5;
+  const double p23 = p12 * p8;
+  const double p24 = p16 * p8;
+  const double p25 = p10 * p8;
+  const double p26 = p13 * p8;
+  const double p27 = p17 * p8;
+  const double p28 = p8 * p4;
+  const double p29 = p14 * p8;
+  const double p30 = p18 * p8;
+  const double p31 = 0.6666666666666666 * p20;
+  const double p32 = 2.0 * (p11 - 1.0) - p31;
+  const double p33 = p23 * s_deformed_shape_0_0 + p26 * s_deformed_shape_0_1 + p29 * s_deformed_shape_0_2 + p22 * s_deformed_shape_1_0 + p25 * s_deformed_shape_1_1 + p28 * s_deformed_shape_1_2;
+  const double p34 = p24 * s_deformed_shape_0_0 + p27 * s_deformed_shape_0_1 + p30 * s_deformed_shape_0_2 + p22 * s_deformed_shape_2_0 + p25 * s_deformed_shape_2_1 + p28 * s_deformed_shape_2_2;
+  const double p35 = 2.0 * (p15 - 1.0) - p31;
+  const double p36 = p24 * s_deformed_shape_1_0 + p27 * s_deformed_shape_1_1 + p30 * s_deformed_shape_1_2 + p23 * s_deformed_shape_2_0 + p26 * s_deformed_shape_2_1 + p29 * s_deformed_shape_2_2;
+  const double p37 = 2.0 * (p19 - 1.0) - p31;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b38 = p22 * xi_0 + p23 * xi_1 + p24 * xi_2;
+    const double b39 = p21 * b38 * sf * V * w;
+    const double b40 = p25 * xi_0 + p26 * xi_1 + p27 * xi_2;
+    const double b41 = p21 * b40 * sf * V * w;
+    const double b42 = p28 * xi_0 + p29 * xi_1 + p30 * xi_2;
+    const double b43 = p21 * b42 * sf * V * w;
+    const double b44 = V0 * (p32 * b38 + p33 * b40 + p34 * b42) * sf * V * w;
+    const double b45 = V0 * (p33 * b38 + p35 * b40 + p36 * b42) * sf * V * w;
+    const double b46 = V0 * (p34 * b38 + p36 * b40 + p37 * b42) * sf * V * w;
+    dfdp[(k + 1) * 3 + 0] = -b39;
+    lane9[lane] += b39;
+    dfdp[(k + 1) * 3 + 1] = -b41;
+    lane10[lane] += b41;
+    dfdp[(k + 1) * 3 + 2] = -b43;
+    lane11[lane] += b43;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b44;
+    lane12[lane] += b44;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b45;
+    lane13[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b46;
+    lane14[lane] += b46;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+}
+
 // correspondence_3d_intact_energy: per bond 0 add, 13 mul, 0 div, 0 call; per family 46 add, 91 mul, 1 div, 0 call
 double correspondence_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -3267,6 +3763,8 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.damaged.tangent_ops = {48, 187, 0, 0};
   d.damaged.jvp = &correspondence_3d_damaged_jvp;
   d.damaged.jvp_ops = {66, 195, 0, 0};
+  d.damaged.sensitivity = &correspondence_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {12, 62, 0, 0};
   d.damaged.energy = &correspondence_3d_damaged_energy;
   d.damaged.outputs = &correspondence_3d_damaged_outputs;
   d.damaged.form = &correspondence_3d_damaged_form;
@@ -3277,6 +3775,8 @@ pd::abi::LawDescriptor correspondence_3d_descriptor() {
   d.intact.tangent_ops = {48, 155, 0, 0};
   d.intact.jvp = &correspondence_3d_intact_jvp;
   d.intact.jvp_ops = {66, 165, 0, 0};
+  d.intact.sensitivity = &correspondence_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {12, 55, 0, 0};
   d.intact.energy = &correspondence_3d_intact_energy;
   d.intact.outputs = &correspondence_3d_intact_outputs;
   d.intact.form = &correspondence_3d_intact_form;
@@ -3679,6 +4179,139 @@ void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam,
   }
   df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+}
+
+// correspondence_silling_plane_strain_damaged_sensitivity: per bond 12 add, 64 mul, 0 div, 0 call; per family 17 add, 48 mul, 3 div, 0 call
+void correspondence_silling_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_stab = fam.params[2];
+  const double s_influence_volume = fam.moments[5];
+  const double s_intact_volume = fam.moments[4];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  const double P_G = fam.params[1];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p3 * s_shape_1_1;
+  const double p9 = p3 * s_shape_0_1;
+  const double p10 = 1.0 / s_influence_volume;
+  const double p11 = 1.0 / delta;
+  const double p12 = p11 * p11;
+  const double p13 = p12 * p12;
+  const double p14 = 3.819718634205488 * P_stab * p10 * s_intact_volume * p13;
+  const double p15 = p3 * s_deformed_shape_0_0;
+  const double p16 = p3 * s_deformed_shape_0_1;
+  const double p17 = p15 * s_shape_1_1 - p16 * s_shape_1_0;
+  const double p18 = p16 * s_shape_0_0;
+  const double p19 = p15 * s_shape_0_1;
+  const double p20 = p18 - p19;
+  const double p21 = p3 * s_shape_0_0;
+  const double p22 = p3 * s_shape_1_0;
+  const double p23 = p3 * s_deformed_shape_1_0;
+  const double p24 = p23 * s_shape_1_1;
+  const double p25 = p3 * s_deformed_shape_1_1;
+  const double p26 = p25 * s_shape_1_0;
+  const double p27 = p24 - p26;
+  const double p28 = p25 * s_shape_0_0 - p23 * s_shape_0_1;
+  const double p29 = 1.2732395447351625 * P_stab * p10 * s_intact_volume * p13;
+  const double p30 = 0.6666666666666666 * p7;
+  const double p31 = 2.0 * (p5 - 1.0) - p30;
+  const double p32 = p18 + p24 - p19 - p26;
+  const double p33 = 2.0 * (p6 - 1.0) - p30;
+  const double p34 = 3.819718634205488 * p10 * s_intact_volume * (P_K + 0.3333333333333333 * P_G) * p13 * V0;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b35 = p8 * xi_0 - p9 * xi_1;
+    const double b36 = Y_0 - (p17 * xi_0 + p20 * xi_1);
+    const double b37 = V0 * (p7 * b35 * alpha * w + p14 * b36 * alpha * w) * sf * V;
+    const double b38 = p21 * xi_1 - p22 * xi_0;
+    const double b39 = Y_1 - (p27 * xi_0 + p28 * xi_1);
+    const double b40 = V0 * (p7 * b38 * alpha * w + p14 * b39 * alpha * w) * sf * V;
+    const double b41 = V0 * (p29 * b36 * alpha * w + (p31 * b35 + p32 * b38) * alpha * w) * sf * V;
+    const double b42 = V0 * (p29 * b39 * alpha * w + (p32 * b35 + p33 * b38) * alpha * w) * sf * V;
+    const double b43 = p34 * b36 * sf * V * alpha * w;
+    const double b44 = p34 * b39 * sf * V * alpha * w;
+    dfdp[(k + 1) * 2 + 0] = -b37;
+    lane4[lane] += b37;
+    dfdp[(k + 1) * 2 + 1] = -b40;
+    lane5[lane] += b40;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b41;
+    lane6[lane] += b41;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b42;
+    lane7[lane] += b42;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b43;
+    lane8[lane] += b43;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b44;
+    lane9[lane] += b44;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
 }
 
 // correspondence_silling_plane_strain_damaged_energy: per bond 5 add, 17 mul, 0 div, 0 call; per family 20 add, 47 mul, 3 div, 0 call
@@ -4315,6 +4948,137 @@ void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, 
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// correspondence_silling_plane_strain_intact_sensitivity: per bond 12 add, 53 mul, 0 div, 0 call; per family 17 add, 48 mul, 3 div, 0 call
+void correspondence_silling_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_stab = fam.params[2];
+  const double s_influence_volume = fam.moments[5];
+  const double s_intact_volume = fam.moments[4];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  const double P_G = fam.params[1];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p3 * s_shape_1_1;
+  const double p9 = p3 * s_shape_0_1;
+  const double p10 = 1.0 / s_influence_volume;
+  const double p11 = 1.0 / delta;
+  const double p12 = p11 * p11;
+  const double p13 = p12 * p12;
+  const double p14 = 3.819718634205488 * P_stab * p10 * s_intact_volume * p13;
+  const double p15 = p3 * s_deformed_shape_0_0;
+  const double p16 = p3 * s_deformed_shape_0_1;
+  const double p17 = p15 * s_shape_1_1 - p16 * s_shape_1_0;
+  const double p18 = p16 * s_shape_0_0;
+  const double p19 = p15 * s_shape_0_1;
+  const double p20 = p18 - p19;
+  const double p21 = p3 * s_shape_0_0;
+  const double p22 = p3 * s_shape_1_0;
+  const double p23 = p3 * s_deformed_shape_1_0;
+  const double p24 = p23 * s_shape_1_1;
+  const double p25 = p3 * s_deformed_shape_1_1;
+  const double p26 = p25 * s_shape_1_0;
+  const double p27 = p24 - p26;
+  const double p28 = p25 * s_shape_0_0 - p23 * s_shape_0_1;
+  const double p29 = 1.2732395447351625 * P_stab * p10 * s_intact_volume * p13;
+  const double p30 = 0.6666666666666666 * p7;
+  const double p31 = 2.0 * (p5 - 1.0) - p30;
+  const double p32 = p18 + p24 - p19 - p26;
+  const double p33 = 2.0 * (p6 - 1.0) - p30;
+  const double p34 = 3.819718634205488 * p10 * s_intact_volume * (P_K + 0.3333333333333333 * P_G) * p13 * V0;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b35 = p8 * xi_0 - p9 * xi_1;
+    const double b36 = Y_0 - (p17 * xi_0 + p20 * xi_1);
+    const double b37 = V0 * (p7 * b35 * w + p14 * b36 * w) * sf * V;
+    const double b38 = p21 * xi_1 - p22 * xi_0;
+    const double b39 = Y_1 - (p27 * xi_0 + p28 * xi_1);
+    const double b40 = V0 * (p7 * b38 * w + p14 * b39 * w) * sf * V;
+    const double b41 = V0 * (p29 * b36 * w + (p31 * b35 + p32 * b38) * w) * sf * V;
+    const double b42 = V0 * (p29 * b39 * w + (p32 * b35 + p33 * b38) * w) * sf * V;
+    const double b43 = p34 * b36 * sf * V * w;
+    const double b44 = p34 * b39 * sf * V * w;
+    dfdp[(k + 1) * 2 + 0] = -b37;
+    lane4[lane] += b37;
+    dfdp[(k + 1) * 2 + 1] = -b40;
+    lane5[lane] += b40;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b41;
+    lane6[lane] += b41;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b42;
+    lane7[lane] += b42;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b43;
+    lane8[lane] += b43;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b44;
+    lane9[lane] += b44;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+}
+
 // correspondence_silling_plane_strain_intact_energy: per bond 5 add, 15 mul, 0 div, 0 call; per family 20 add, 47 mul, 3 div, 0 call
 double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -4594,6 +5358,8 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.damaged.tangent_ops = {22, 89, 0, 0};
   d.damaged.jvp = &correspondence_silling_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {22, 80, 0, 0};
+  d.damaged.sensitivity = &correspondence_silling_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {12, 64, 0, 0};
   d.damaged.energy = &correspondence_silling_plane_strain_damaged_energy;
   d.damaged.outputs = &correspondence_silling_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_silling_plane_strain_damaged_form;
@@ -4604,6 +5370,8 @@ pd::abi::LawDescriptor correspondence_silling_plane_strain_descriptor() {
   d.intact.tangent_ops = {22, 72, 0, 0};
   d.intact.jvp = &correspondence_silling_plane_strain_intact_jvp;
   d.intact.jvp_ops = {22, 66, 0, 0};
+  d.intact.sensitivity = &correspondence_silling_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {12, 53, 0, 0};
   d.intact.energy = &correspondence_silling_plane_strain_intact_energy;
   d.intact.outputs = &correspondence_silling_plane_strain_intact_outputs;
   d.intact.form = &correspondence_silling_plane_strain_intact_form;
@@ -5315,6 +6083,210 @@ void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const dou
   df[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
   df[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
   df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+}
+
+// correspondence_silling_3d_damaged_sensitivity: per bond 24 add, 98 mul, 0 div, 0 call; per family 54 add, 102 mul, 3 div, 0 call
+void correspondence_silling_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_stab = fam.params[2];
+  const double s_influence_volume = fam.moments[10];
+  const double s_intact_volume = fam.moments[9];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p8 * p5;
+  const double p22 = p12 * p8;
+  const double p23 = p16 * p8;
+  const double p24 = 1.0 / s_influence_volume;
+  const double p25 = 1.0 / delta;
+  const double p26 = p25 * p25;
+  const double p27 = p26 * p26 * p25;
+  const double p28 = 5.729577951308232 * P_stab * p24 * s_intact_volume * p27;
+  const double p29 = p10 * p8;
+  const double p30 = p8 * p4;
+  const double p31 = p21 * s_deformed_shape_0_0 + p29 * s_deformed_shape_0_1 + p30 * s_deformed_shape_0_2;
+  const double p32 = p13 * p8;
+  const double p33 = p14 * p8;
+  const double p34 = p22 * s_deformed_shape_0_0 + p32 * s_deformed_shape_0_1 + p33 * s_deformed_shape_0_2;
+  const double p35 = p17 * p8;
+  const double p36 = p18 * p8;
+  const double p37 = p23 * s_deformed_shape_0_0 + p35 * s_deformed_shape_0_1 + p36 * s_deformed_shape_0_2;
+  const double p38 = p21 * s_deformed_shape_1_0;
+  const double p39 = p29 * s_deformed_shape_1_1;
+  const double p40 = p30 * s_deformed_shape_1_2;
+  const double p41 = p38 + p39 + p40;
+  const double p42 = p22 * s_deformed_shape_1_0 + p32 * s_deformed_shape_1_1 + p33 * s_deformed_shape_1_2;
+  const double p43 = p23 * s_deformed_shape_1_0 + p35 * s_deformed_shape_1_1 + p36 * s_deformed_shape_1_2;
+  const double p44 = p21 * s_deformed_shape_2_0;
+  const double p45 = p29 * s_deformed_shape_2_1;
+  const double p46 = p30 * s_deformed_shape_2_2;
+  const double p47 = p44 + p45 + p46;
+  const double p48 = p22 * s_deformed_shape_2_0;
+  const double p49 = p32 * s_deformed_shape_2_1;
+  const double p50 = p33 * s_deformed_shape_2_2;
+  const double p51 = p48 + p49 + p50;
+  const double p52 = p23 * s_deformed_shape_2_0 + p35 * s_deformed_shape_2_1 + p36 * s_deformed_shape_2_2;
+  const double p53 = 0.6666666666666666 * p20;
+  const double p54 = 2.0 * (p11 - 1.0) - p53;
+  const double p55 = p34 + p38 + p39 + p40;
+  const double p56 = p37 + p44 + p45 + p46;
+  const double p57 = 2.0 * (p15 - 1.0) - p53;
+  const double p58 = p43 + p48 + p49 + p50;
+  const double p59 = 2.0 * (p19 - 1.0) - p53;
+  const double p60 = 5.729577951308232 * p24 * s_intact_volume * P_K * p27 * V0;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b61 = p21 * xi_0 + p22 * xi_1 + p23 * xi_2;
+    const double b62 = Y_0 - (p31 * xi_0 + p34 * xi_1 + p37 * xi_2);
+    const double b63 = V0 * (p20 * b61 * alpha * w + p28 * b62 * alpha * w) * sf * V;
+    const double b64 = p29 * xi_0 + p32 * xi_1 + p35 * xi_2;
+    const double b65 = Y_1 - (p41 * xi_0 + p42 * xi_1 + p43 * xi_2);
+    const double b66 = V0 * (p20 * b64 * alpha * w + p28 * b65 * alpha * w) * sf * V;
+    const double b67 = p30 * xi_0 + p33 * xi_1 + p36 * xi_2;
+    const double b68 = Y_2 - (p47 * xi_0 + p51 * xi_1 + p52 * xi_2);
+    const double b69 = V0 * (p20 * b67 * alpha * w + p28 * b68 * alpha * w) * sf * V;
+    const double b70 = V0 * (p54 * b61 + p55 * b64 + p56 * b67) * sf * V * alpha * w;
+    const double b71 = V0 * (p55 * b61 + p57 * b64 + p58 * b67) * sf * V * alpha * w;
+    const double b72 = V0 * (p56 * b61 + p58 * b64 + p59 * b67) * sf * V * alpha * w;
+    const double b73 = p60 * b62 * sf * V * alpha * w;
+    const double b74 = p60 * b65 * sf * V * alpha * w;
+    const double b75 = p60 * b68 * sf * V * alpha * w;
+    dfdp[(k + 1) * 3 + 0] = -b63;
+    lane9[lane] += b63;
+    dfdp[(k + 1) * 3 + 1] = -b66;
+    lane10[lane] += b66;
+    dfdp[(k + 1) * 3 + 2] = -b69;
+    lane11[lane] += b69;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b70;
+    lane12[lane] += b70;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b71;
+    lane13[lane] += b71;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b72;
+    lane14[lane] += b72;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b73;
+    lane15[lane] += b73;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b74;
+    lane16[lane] += b74;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b75;
+    lane17[lane] += b75;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
 }
 
 // correspondence_silling_3d_damaged_energy: per bond 11 add, 29 mul, 0 div, 0 call; per family 66 add, 130 mul, 3 div, 0 call
@@ -6486,6 +7458,208 @@ void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const doub
   df[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
+// correspondence_silling_3d_intact_sensitivity: per bond 24 add, 85 mul, 0 div, 0 call; per family 54 add, 102 mul, 3 div, 0 call
+void correspondence_silling_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_stab = fam.params[2];
+  const double s_influence_volume = fam.moments[10];
+  const double s_intact_volume = fam.moments[9];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p8 * p5;
+  const double p22 = p12 * p8;
+  const double p23 = p16 * p8;
+  const double p24 = 1.0 / s_influence_volume;
+  const double p25 = 1.0 / delta;
+  const double p26 = p25 * p25;
+  const double p27 = p26 * p26 * p25;
+  const double p28 = 5.729577951308232 * P_stab * p24 * s_intact_volume * p27;
+  const double p29 = p10 * p8;
+  const double p30 = p8 * p4;
+  const double p31 = p21 * s_deformed_shape_0_0 + p29 * s_deformed_shape_0_1 + p30 * s_deformed_shape_0_2;
+  const double p32 = p13 * p8;
+  const double p33 = p14 * p8;
+  const double p34 = p22 * s_deformed_shape_0_0 + p32 * s_deformed_shape_0_1 + p33 * s_deformed_shape_0_2;
+  const double p35 = p17 * p8;
+  const double p36 = p18 * p8;
+  const double p37 = p23 * s_deformed_shape_0_0 + p35 * s_deformed_shape_0_1 + p36 * s_deformed_shape_0_2;
+  const double p38 = p21 * s_deformed_shape_1_0;
+  const double p39 = p29 * s_deformed_shape_1_1;
+  const double p40 = p30 * s_deformed_shape_1_2;
+  const double p41 = p38 + p39 + p40;
+  const double p42 = p22 * s_deformed_shape_1_0 + p32 * s_deformed_shape_1_1 + p33 * s_deformed_shape_1_2;
+  const double p43 = p23 * s_deformed_shape_1_0 + p35 * s_deformed_shape_1_1 + p36 * s_deformed_shape_1_2;
+  const double p44 = p21 * s_deformed_shape_2_0;
+  const double p45 = p29 * s_deformed_shape_2_1;
+  const double p46 = p30 * s_deformed_shape_2_2;
+  const double p47 = p44 + p45 + p46;
+  const double p48 = p22 * s_deformed_shape_2_0;
+  const double p49 = p32 * s_deformed_shape_2_1;
+  const double p50 = p33 * s_deformed_shape_2_2;
+  const double p51 = p48 + p49 + p50;
+  const double p52 = p23 * s_deformed_shape_2_0 + p35 * s_deformed_shape_2_1 + p36 * s_deformed_shape_2_2;
+  const double p53 = 0.6666666666666666 * p20;
+  const double p54 = 2.0 * (p11 - 1.0) - p53;
+  const double p55 = p34 + p38 + p39 + p40;
+  const double p56 = p37 + p44 + p45 + p46;
+  const double p57 = 2.0 * (p15 - 1.0) - p53;
+  const double p58 = p43 + p48 + p49 + p50;
+  const double p59 = 2.0 * (p19 - 1.0) - p53;
+  const double p60 = 5.729577951308232 * p24 * s_intact_volume * P_K * p27 * V0;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b61 = p21 * xi_0 + p22 * xi_1 + p23 * xi_2;
+    const double b62 = Y_0 - (p31 * xi_0 + p34 * xi_1 + p37 * xi_2);
+    const double b63 = V0 * (p20 * b61 * w + p28 * b62 * w) * sf * V;
+    const double b64 = p29 * xi_0 + p32 * xi_1 + p35 * xi_2;
+    const double b65 = Y_1 - (p41 * xi_0 + p42 * xi_1 + p43 * xi_2);
+    const double b66 = V0 * (p20 * b64 * w + p28 * b65 * w) * sf * V;
+    const double b67 = p30 * xi_0 + p33 * xi_1 + p36 * xi_2;
+    const double b68 = Y_2 - (p47 * xi_0 + p51 * xi_1 + p52 * xi_2);
+    const double b69 = V0 * (p20 * b67 * w + p28 * b68 * w) * sf * V;
+    const double b70 = V0 * (p54 * b61 + p55 * b64 + p56 * b67) * sf * V * w;
+    const double b71 = V0 * (p55 * b61 + p57 * b64 + p58 * b67) * sf * V * w;
+    const double b72 = V0 * (p56 * b61 + p58 * b64 + p59 * b67) * sf * V * w;
+    const double b73 = p60 * b62 * sf * V * w;
+    const double b74 = p60 * b65 * sf * V * w;
+    const double b75 = p60 * b68 * sf * V * w;
+    dfdp[(k + 1) * 3 + 0] = -b63;
+    lane9[lane] += b63;
+    dfdp[(k + 1) * 3 + 1] = -b66;
+    lane10[lane] += b66;
+    dfdp[(k + 1) * 3 + 2] = -b69;
+    lane11[lane] += b69;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b70;
+    lane12[lane] += b70;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b71;
+    lane13[lane] += b71;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b72;
+    lane14[lane] += b72;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b73;
+    lane15[lane] += b73;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b74;
+    lane16[lane] += b74;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b75;
+    lane17[lane] += b75;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
+}
+
 // correspondence_silling_3d_intact_energy: per bond 11 add, 27 mul, 0 div, 0 call; per family 66 add, 130 mul, 3 div, 0 call
 double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -6991,6 +8165,8 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.damaged.tangent_ops = {69, 217, 0, 0};
   d.damaged.jvp = &correspondence_silling_3d_damaged_jvp;
   d.damaged.jvp_ops = {78, 216, 0, 0};
+  d.damaged.sensitivity = &correspondence_silling_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {24, 98, 0, 0};
   d.damaged.energy = &correspondence_silling_3d_damaged_energy;
   d.damaged.outputs = &correspondence_silling_3d_damaged_outputs;
   d.damaged.form = &correspondence_silling_3d_damaged_form;
@@ -7001,6 +8177,8 @@ pd::abi::LawDescriptor correspondence_silling_3d_descriptor() {
   d.intact.tangent_ops = {69, 178, 0, 0};
   d.intact.jvp = &correspondence_silling_3d_intact_jvp;
   d.intact.jvp_ops = {78, 180, 0, 0};
+  d.intact.sensitivity = &correspondence_silling_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {24, 85, 0, 0};
   d.intact.energy = &correspondence_silling_3d_intact_energy;
   d.intact.outputs = &correspondence_silling_3d_intact_outputs;
   d.intact.form = &correspondence_silling_3d_intact_form;
@@ -7468,6 +8646,142 @@ void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& f
   }
   df[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
   df[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+}
+
+// correspondence_littlewood_plane_strain_damaged_sensitivity: per bond 16 add, 74 mul, 2 div, 2 call; per family 17 add, 42 mul, 2 div, 0 call
+void correspondence_littlewood_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_hourglass = fam.params[2];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  const double P_G = fam.params[1];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p3 * s_shape_1_1;
+  const double p9 = p3 * s_shape_0_1;
+  const double p10 = 1.0 / delta;
+  const double p11 = p10 * p10 * p10;
+  const double p12 = 3.819718634205488 * P_hourglass * p11;
+  const double p13 = p3 * s_deformed_shape_0_0;
+  const double p14 = p3 * s_deformed_shape_0_1;
+  const double p15 = p13 * s_shape_1_1 - p14 * s_shape_1_0;
+  const double p16 = p14 * s_shape_0_0;
+  const double p17 = p13 * s_shape_0_1;
+  const double p18 = p16 - p17;
+  const double p19 = p3 * s_deformed_shape_1_0;
+  const double p20 = p19 * s_shape_1_1;
+  const double p21 = p3 * s_deformed_shape_1_1;
+  const double p22 = p21 * s_shape_1_0;
+  const double p23 = p20 - p22;
+  const double p24 = p21 * s_shape_0_0 - p19 * s_shape_0_1;
+  const double p25 = p3 * s_shape_0_0;
+  const double p26 = p3 * s_shape_1_0;
+  const double p27 = 1.2732395447351625 * P_hourglass * p11;
+  const double p28 = 0.6666666666666666 * p7;
+  const double p29 = 2.0 * (p5 - 1.0) - p28;
+  const double p30 = p16 + p20 - p17 - p22;
+  const double p31 = 2.0 * (p6 - 1.0) - p28;
+  const double p32 = 3.819718634205488 * (P_K + 0.3333333333333333 * P_G) * p11 * V0;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b33 = p8 * xi_0 - p9 * xi_1;
+    const double b34 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b35 = std::sqrt(1e-16 * b34 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b36 = 1.0 / b35;
+    const double b37 = b36 * (Y_0 - (p15 * xi_0 + p18 * xi_1)) * Y_0 + b36 * (Y_1 - (p23 * xi_0 + p24 * xi_1)) * Y_1;
+    const double b38 = std::sqrt(b34);
+    const double b39 = 1.0 / b38;
+    const double b40 = p12 * b37 * b36 * b39 * alpha * w;
+    const double b41 = V0 * (p7 * b33 * alpha * w + b40 * Y_0) * sf * V;
+    const double b42 = p25 * xi_1 - p26 * xi_0;
+    const double b43 = V0 * (p7 * b42 * alpha * w + b40 * Y_1) * sf * V;
+    const double b44 = p27 * b37 * b36 * b39 * alpha * w;
+    const double b45 = V0 * (b44 * Y_0 + (p29 * b33 + p30 * b42) * alpha * w) * sf * V;
+    const double b46 = V0 * (b44 * Y_1 + (p30 * b33 + p31 * b42) * alpha * w) * sf * V;
+    const double b47 = p32 * b37 * b36 * b39 * sf * V * alpha * w;
+    const double b48 = b47 * Y_0;
+    const double b49 = b47 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b41;
+    lane4[lane] += b41;
+    dfdp[(k + 1) * 2 + 1] = -b43;
+    lane5[lane] += b43;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b45;
+    lane6[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b46;
+    lane7[lane] += b46;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b48;
+    lane8[lane] += b48;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b49;
+    lane9[lane] += b49;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
 }
 
 // correspondence_littlewood_plane_strain_damaged_outputs: per bond 0 add, 8 mul, 0 div, 0 call; per family 8 add, 22 mul, 1 div, 0 call
@@ -8084,6 +9398,140 @@ void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fa
   df[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
 }
 
+// correspondence_littlewood_plane_strain_intact_sensitivity: per bond 16 add, 66 mul, 2 div, 2 call; per family 17 add, 42 mul, 2 div, 0 call
+void correspondence_littlewood_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_1_1 = fam.moments[3];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_1_0 = fam.moments[2];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_hourglass = fam.params[2];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  const double P_G = fam.params[1];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b2 * xi_0;
+    lane3[lane] += b2 * xi_1;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_1_0 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_1 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = 1.0 / (s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1);
+  const double p4 = 2.0 * p3;
+  const double p5 = 0.5 * (p4 * s_deformed_shape_0_0 * s_shape_1_1 - p4 * s_deformed_shape_0_1 * s_shape_1_0);
+  const double p6 = 0.5 * (p4 * s_deformed_shape_1_1 * s_shape_0_0 - p4 * s_deformed_shape_1_0 * s_shape_0_1);
+  const double p7 = p5 + p6 - 2.0;
+  const double p8 = p3 * s_shape_1_1;
+  const double p9 = p3 * s_shape_0_1;
+  const double p10 = 1.0 / delta;
+  const double p11 = p10 * p10 * p10;
+  const double p12 = 3.819718634205488 * P_hourglass * p11;
+  const double p13 = p3 * s_deformed_shape_0_0;
+  const double p14 = p3 * s_deformed_shape_0_1;
+  const double p15 = p13 * s_shape_1_1 - p14 * s_shape_1_0;
+  const double p16 = p14 * s_shape_0_0;
+  const double p17 = p13 * s_shape_0_1;
+  const double p18 = p16 - p17;
+  const double p19 = p3 * s_deformed_shape_1_0;
+  const double p20 = p19 * s_shape_1_1;
+  const double p21 = p3 * s_deformed_shape_1_1;
+  const double p22 = p21 * s_shape_1_0;
+  const double p23 = p20 - p22;
+  const double p24 = p21 * s_shape_0_0 - p19 * s_shape_0_1;
+  const double p25 = p3 * s_shape_0_0;
+  const double p26 = p3 * s_shape_1_0;
+  const double p27 = 1.2732395447351625 * P_hourglass * p11;
+  const double p28 = 0.6666666666666666 * p7;
+  const double p29 = 2.0 * (p5 - 1.0) - p28;
+  const double p30 = p16 + p20 - p17 - p22;
+  const double p31 = 2.0 * (p6 - 1.0) - p28;
+  const double p32 = 3.819718634205488 * (P_K + 0.3333333333333333 * P_G) * p11 * V0;
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b33 = p8 * xi_0 - p9 * xi_1;
+    const double b34 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b35 = std::sqrt(1e-16 * b34 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b36 = 1.0 / b35;
+    const double b37 = b36 * (Y_0 - (p15 * xi_0 + p18 * xi_1)) * Y_0 + b36 * (Y_1 - (p23 * xi_0 + p24 * xi_1)) * Y_1;
+    const double b38 = std::sqrt(b34);
+    const double b39 = 1.0 / b38;
+    const double b40 = p12 * b37 * b36 * b39 * w;
+    const double b41 = V0 * (p7 * b33 * w + b40 * Y_0) * sf * V;
+    const double b42 = p25 * xi_1 - p26 * xi_0;
+    const double b43 = V0 * (p7 * b42 * w + b40 * Y_1) * sf * V;
+    const double b44 = p27 * b37 * b36 * b39 * w;
+    const double b45 = V0 * (b44 * Y_0 + (p29 * b33 + p30 * b42) * w) * sf * V;
+    const double b46 = V0 * (b44 * Y_1 + (p30 * b33 + p31 * b42) * w) * sf * V;
+    const double b47 = p32 * b37 * b36 * b39 * sf * V * w;
+    const double b48 = b47 * Y_0;
+    const double b49 = b47 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b41;
+    lane4[lane] += b41;
+    dfdp[(k + 1) * 2 + 1] = -b43;
+    lane5[lane] += b43;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b45;
+    lane6[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b46;
+    lane7[lane] += b46;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b48;
+    lane8[lane] += b48;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b49;
+    lane9[lane] += b49;
+    }
+  }
+  dfdp[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+}
+
 // correspondence_littlewood_plane_strain_intact_outputs: per bond 0 add, 7 mul, 0 div, 0 call; per family 8 add, 22 mul, 1 div, 0 call
 void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -8279,6 +9727,8 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.damaged.tangent_ops = {42, 143, 3, 2};
   d.damaged.jvp = &correspondence_littlewood_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {48, 149, 3, 2};
+  d.damaged.sensitivity = &correspondence_littlewood_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {16, 74, 2, 2};
   d.damaged.outputs = &correspondence_littlewood_plane_strain_damaged_outputs;
   d.damaged.form = &correspondence_littlewood_plane_strain_damaged_form;
   d.intact.moments = &correspondence_littlewood_plane_strain_intact_moments;
@@ -8288,6 +9738,8 @@ pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor() {
   d.intact.tangent_ops = {42, 125, 3, 2};
   d.intact.jvp = &correspondence_littlewood_plane_strain_intact_jvp;
   d.intact.jvp_ops = {48, 132, 3, 2};
+  d.intact.sensitivity = &correspondence_littlewood_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {16, 66, 2, 2};
   d.intact.outputs = &correspondence_littlewood_plane_strain_intact_outputs;
   d.intact.form = &correspondence_littlewood_plane_strain_intact_form;
   return d;
@@ -9128,6 +10580,212 @@ void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const 
   df[0] += (lane18[0] + lane18[1]) + (lane18[2] + lane18[3]);
   df[1] += (lane19[0] + lane19[1]) + (lane19[2] + lane19[3]);
   df[2] += (lane20[0] + lane20[1]) + (lane20[2] + lane20[3]);
+}
+
+// correspondence_littlewood_3d_damaged_sensitivity: per bond 31 add, 105 mul, 2 div, 2 call; per family 54 add, 97 mul, 2 div, 0 call
+void correspondence_littlewood_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_hourglass = fam.params[2];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * alpha * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p8 * p5;
+  const double p22 = p12 * p8;
+  const double p23 = p16 * p8;
+  const double p24 = 1.0 / delta;
+  const double p25 = p24 * p24;
+  const double p26 = p25 * p25;
+  const double p27 = 5.729577951308232 * P_hourglass * p26;
+  const double p28 = p10 * p8;
+  const double p29 = p8 * p4;
+  const double p30 = p21 * s_deformed_shape_0_0 + p28 * s_deformed_shape_0_1 + p29 * s_deformed_shape_0_2;
+  const double p31 = p13 * p8;
+  const double p32 = p14 * p8;
+  const double p33 = p22 * s_deformed_shape_0_0 + p31 * s_deformed_shape_0_1 + p32 * s_deformed_shape_0_2;
+  const double p34 = p17 * p8;
+  const double p35 = p18 * p8;
+  const double p36 = p23 * s_deformed_shape_0_0 + p34 * s_deformed_shape_0_1 + p35 * s_deformed_shape_0_2;
+  const double p37 = p21 * s_deformed_shape_1_0;
+  const double p38 = p28 * s_deformed_shape_1_1;
+  const double p39 = p29 * s_deformed_shape_1_2;
+  const double p40 = p37 + p38 + p39;
+  const double p41 = p22 * s_deformed_shape_1_0 + p31 * s_deformed_shape_1_1 + p32 * s_deformed_shape_1_2;
+  const double p42 = p23 * s_deformed_shape_1_0 + p34 * s_deformed_shape_1_1 + p35 * s_deformed_shape_1_2;
+  const double p43 = p21 * s_deformed_shape_2_0;
+  const double p44 = p28 * s_deformed_shape_2_1;
+  const double p45 = p29 * s_deformed_shape_2_2;
+  const double p46 = p43 + p44 + p45;
+  const double p47 = p22 * s_deformed_shape_2_0;
+  const double p48 = p31 * s_deformed_shape_2_1;
+  const double p49 = p32 * s_deformed_shape_2_2;
+  const double p50 = p47 + p48 + p49;
+  const double p51 = p23 * s_deformed_shape_2_0 + p34 * s_deformed_shape_2_1 + p35 * s_deformed_shape_2_2;
+  const double p52 = 0.6666666666666666 * p20;
+  const double p53 = 2.0 * (p11 - 1.0) - p52;
+  const double p54 = p33 + p37 + p38 + p39;
+  const double p55 = p36 + p43 + p44 + p45;
+  const double p56 = 2.0 * (p15 - 1.0) - p52;
+  const double p57 = p42 + p47 + p48 + p49;
+  const double p58 = 2.0 * (p19 - 1.0) - p52;
+  const double p59 = 5.729577951308232 * P_K * p26 * V0;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b60 = p21 * xi_0 + p22 * xi_1 + p23 * xi_2;
+    const double b61 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b62 = std::sqrt(1e-16 * b61 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b63 = 1.0 / b62;
+    const double b64 = b63 * (Y_0 - (p30 * xi_0 + p33 * xi_1 + p36 * xi_2)) * Y_0 + b63 * (Y_1 - (p40 * xi_0 + p41 * xi_1 + p42 * xi_2)) * Y_1 + b63 * (Y_2 - (p46 * xi_0 + p50 * xi_1 + p51 * xi_2)) * Y_2;
+    const double b65 = std::sqrt(b61);
+    const double b66 = 1.0 / b65;
+    const double b67 = p27 * b64 * b63 * b66 * alpha * w;
+    const double b68 = V0 * (p20 * b60 * alpha * w + b67 * Y_0) * sf * V;
+    const double b69 = p28 * xi_0 + p31 * xi_1 + p34 * xi_2;
+    const double b70 = V0 * (p20 * b69 * alpha * w + b67 * Y_1) * sf * V;
+    const double b71 = p29 * xi_0 + p32 * xi_1 + p35 * xi_2;
+    const double b72 = V0 * (p20 * b71 * alpha * w + b67 * Y_2) * sf * V;
+    const double b73 = V0 * (p53 * b60 + p54 * b69 + p55 * b71) * sf * V * alpha * w;
+    const double b74 = V0 * (p54 * b60 + p56 * b69 + p57 * b71) * sf * V * alpha * w;
+    const double b75 = V0 * (p55 * b60 + p57 * b69 + p58 * b71) * sf * V * alpha * w;
+    const double b76 = p59 * b64 * b63 * b66 * sf * V * alpha * w;
+    const double b77 = b76 * Y_0;
+    const double b78 = b76 * Y_1;
+    const double b79 = b76 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b68;
+    lane9[lane] += b68;
+    dfdp[(k + 1) * 3 + 1] = -b70;
+    lane10[lane] += b70;
+    dfdp[(k + 1) * 3 + 2] = -b72;
+    lane11[lane] += b72;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b73;
+    lane12[lane] += b73;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b74;
+    lane13[lane] += b74;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b75;
+    lane14[lane] += b75;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b77;
+    lane15[lane] += b77;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b78;
+    lane16[lane] += b78;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b79;
+    lane17[lane] += b79;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
 }
 
 // correspondence_littlewood_3d_damaged_outputs: per bond 0 add, 14 mul, 0 div, 0 call; per family 36 add, 80 mul, 1 div, 0 call
@@ -10299,6 +11957,210 @@ void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const d
   df[2] += (lane20[0] + lane20[1]) + (lane20[2] + lane20[3]);
 }
 
+// correspondence_littlewood_3d_intact_sensitivity: per bond 31 add, 96 mul, 2 div, 2 call; per family 54 add, 97 mul, 2 div, 0 call
+void correspondence_littlewood_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double V0 = fam.V0;
+  const double s_shape_2_1 = fam.moments[7];
+  const double s_shape_1_0 = fam.moments[3];
+  const double s_shape_2_0 = fam.moments[6];
+  const double s_shape_1_1 = fam.moments[4];
+  const double s_shape_0_2 = fam.moments[2];
+  const double s_shape_2_2 = fam.moments[8];
+  const double s_shape_1_2 = fam.moments[5];
+  const double s_shape_0_0 = fam.moments[0];
+  const double s_shape_0_1 = fam.moments[1];
+  const double P_hourglass = fam.params[2];
+  const double delta = fam.delta;
+  const double P_K = fam.params[0];
+  double s_deformed_shape_0_0 = 0.0;
+  double s_deformed_shape_0_1 = 0.0;
+  double s_deformed_shape_0_2 = 0.0;
+  double s_deformed_shape_1_0 = 0.0;
+  double s_deformed_shape_1_1 = 0.0;
+  double s_deformed_shape_1_2 = 0.0;
+  double s_deformed_shape_2_0 = 0.0;
+  double s_deformed_shape_2_1 = 0.0;
+  double s_deformed_shape_2_2 = 0.0;
+  double lane0[4] = {};
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b0 = V * w;
+    const double b1 = b0 * Y_0;
+    const double b2 = b0 * Y_1;
+    const double b3 = b0 * Y_2;
+    lane0[lane] += b1 * xi_0;
+    lane1[lane] += b1 * xi_1;
+    lane2[lane] += b1 * xi_2;
+    lane3[lane] += b2 * xi_0;
+    lane4[lane] += b2 * xi_1;
+    lane5[lane] += b2 * xi_2;
+    lane6[lane] += b3 * xi_0;
+    lane7[lane] += b3 * xi_1;
+    lane8[lane] += b3 * xi_2;
+    }
+  }
+  s_deformed_shape_0_0 += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  s_deformed_shape_0_1 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  s_deformed_shape_0_2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  s_deformed_shape_1_0 += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  s_deformed_shape_1_1 += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  s_deformed_shape_1_2 += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  s_deformed_shape_2_0 += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  s_deformed_shape_2_1 += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  s_deformed_shape_2_2 += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = s_shape_2_1 * s_shape_1_0 - s_shape_2_0 * s_shape_1_1;
+  const double p5 = s_shape_2_2 * s_shape_1_1 - s_shape_2_1 * s_shape_1_2;
+  const double p6 = s_shape_2_2 * s_shape_1_0;
+  const double p7 = s_shape_2_0 * s_shape_1_2;
+  const double p8 = 1.0 / (p4 * s_shape_0_2 + p5 * s_shape_0_0 - (p6 - p7) * s_shape_0_1);
+  const double p9 = 2.0 * p8;
+  const double p10 = p7 - p6;
+  const double p11 = 0.5 * (p9 * p5 * s_deformed_shape_0_0 + 2.0 * p10 * p8 * s_deformed_shape_0_1 + p9 * p4 * s_deformed_shape_0_2);
+  const double p12 = s_shape_2_1 * s_shape_0_2 - s_shape_2_2 * s_shape_0_1;
+  const double p13 = s_shape_2_2 * s_shape_0_0 - s_shape_2_0 * s_shape_0_2;
+  const double p14 = s_shape_2_0 * s_shape_0_1 - s_shape_2_1 * s_shape_0_0;
+  const double p15 = 0.5 * (2.0 * p12 * p8 * s_deformed_shape_1_0 + 2.0 * p13 * p8 * s_deformed_shape_1_1 + 2.0 * p14 * p8 * s_deformed_shape_1_2);
+  const double p16 = s_shape_1_2 * s_shape_0_1 - s_shape_1_1 * s_shape_0_2;
+  const double p17 = s_shape_1_0 * s_shape_0_2 - s_shape_1_2 * s_shape_0_0;
+  const double p18 = s_shape_1_1 * s_shape_0_0 - s_shape_1_0 * s_shape_0_1;
+  const double p19 = 0.5 * (2.0 * p16 * p8 * s_deformed_shape_2_0 + 2.0 * p17 * p8 * s_deformed_shape_2_1 + 2.0 * p18 * p8 * s_deformed_shape_2_2);
+  const double p20 = p11 + p15 + p19 - 3.0;
+  const double p21 = p8 * p5;
+  const double p22 = p12 * p8;
+  const double p23 = p16 * p8;
+  const double p24 = 1.0 / delta;
+  const double p25 = p24 * p24;
+  const double p26 = p25 * p25;
+  const double p27 = 5.729577951308232 * P_hourglass * p26;
+  const double p28 = p10 * p8;
+  const double p29 = p8 * p4;
+  const double p30 = p21 * s_deformed_shape_0_0 + p28 * s_deformed_shape_0_1 + p29 * s_deformed_shape_0_2;
+  const double p31 = p13 * p8;
+  const double p32 = p14 * p8;
+  const double p33 = p22 * s_deformed_shape_0_0 + p31 * s_deformed_shape_0_1 + p32 * s_deformed_shape_0_2;
+  const double p34 = p17 * p8;
+  const double p35 = p18 * p8;
+  const double p36 = p23 * s_deformed_shape_0_0 + p34 * s_deformed_shape_0_1 + p35 * s_deformed_shape_0_2;
+  const double p37 = p21 * s_deformed_shape_1_0;
+  const double p38 = p28 * s_deformed_shape_1_1;
+  const double p39 = p29 * s_deformed_shape_1_2;
+  const double p40 = p37 + p38 + p39;
+  const double p41 = p22 * s_deformed_shape_1_0 + p31 * s_deformed_shape_1_1 + p32 * s_deformed_shape_1_2;
+  const double p42 = p23 * s_deformed_shape_1_0 + p34 * s_deformed_shape_1_1 + p35 * s_deformed_shape_1_2;
+  const double p43 = p21 * s_deformed_shape_2_0;
+  const double p44 = p28 * s_deformed_shape_2_1;
+  const double p45 = p29 * s_deformed_shape_2_2;
+  const double p46 = p43 + p44 + p45;
+  const double p47 = p22 * s_deformed_shape_2_0;
+  const double p48 = p31 * s_deformed_shape_2_1;
+  const double p49 = p32 * s_deformed_shape_2_2;
+  const double p50 = p47 + p48 + p49;
+  const double p51 = p23 * s_deformed_shape_2_0 + p34 * s_deformed_shape_2_1 + p35 * s_deformed_shape_2_2;
+  const double p52 = 0.6666666666666666 * p20;
+  const double p53 = 2.0 * (p11 - 1.0) - p52;
+  const double p54 = p33 + p37 + p38 + p39;
+  const double p55 = p36 + p43 + p44 + p45;
+  const double p56 = 2.0 * (p15 - 1.0) - p52;
+  const double p57 = p42 + p47 + p48 + p49;
+  const double p58 = 2.0 * (p19 - 1.0) - p52;
+  const double p59 = 5.729577951308232 * P_K * p26 * V0;
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  double lane15[4] = {};
+  double lane16[4] = {};
+  double lane17[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b60 = p21 * xi_0 + p22 * xi_1 + p23 * xi_2;
+    const double b61 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b62 = std::sqrt(1e-16 * b61 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    const double b63 = 1.0 / b62;
+    const double b64 = b63 * (Y_0 - (p30 * xi_0 + p33 * xi_1 + p36 * xi_2)) * Y_0 + b63 * (Y_1 - (p40 * xi_0 + p41 * xi_1 + p42 * xi_2)) * Y_1 + b63 * (Y_2 - (p46 * xi_0 + p50 * xi_1 + p51 * xi_2)) * Y_2;
+    const double b65 = std::sqrt(b61);
+    const double b66 = 1.0 / b65;
+    const double b67 = p27 * b64 * b63 * b66 * w;
+    const double b68 = V0 * (p20 * b60 * w + b67 * Y_0) * sf * V;
+    const double b69 = p28 * xi_0 + p31 * xi_1 + p34 * xi_2;
+    const double b70 = V0 * (p20 * b69 * w + b67 * Y_1) * sf * V;
+    const double b71 = p29 * xi_0 + p32 * xi_1 + p35 * xi_2;
+    const double b72 = V0 * (p20 * b71 * w + b67 * Y_2) * sf * V;
+    const double b73 = V0 * (p53 * b60 + p54 * b69 + p55 * b71) * sf * V * w;
+    const double b74 = V0 * (p54 * b60 + p56 * b69 + p57 * b71) * sf * V * w;
+    const double b75 = V0 * (p55 * b60 + p57 * b69 + p58 * b71) * sf * V * w;
+    const double b76 = p59 * b64 * b63 * b66 * sf * V * w;
+    const double b77 = b76 * Y_0;
+    const double b78 = b76 * Y_1;
+    const double b79 = b76 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b68;
+    lane9[lane] += b68;
+    dfdp[(k + 1) * 3 + 1] = -b70;
+    lane10[lane] += b70;
+    dfdp[(k + 1) * 3 + 2] = -b72;
+    lane11[lane] += b72;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b73;
+    lane12[lane] += b73;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b74;
+    lane13[lane] += b74;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b75;
+    lane14[lane] += b75;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b77;
+    lane15[lane] += b77;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b78;
+    lane16[lane] += b78;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b79;
+    lane17[lane] += b79;
+    }
+  }
+  dfdp[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  dfdp[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  dfdp[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane15[0] + lane15[1]) + (lane15[2] + lane15[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane16[0] + lane16[1]) + (lane16[2] + lane16[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane17[0] + lane17[1]) + (lane17[2] + lane17[3]);
+}
+
 // correspondence_littlewood_3d_intact_outputs: per bond 0 add, 13 mul, 0 div, 0 call; per family 36 add, 80 mul, 1 div, 0 call
 void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -10675,6 +12537,8 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.damaged.tangent_ops = {118, 318, 3, 2};
   d.damaged.jvp = &correspondence_littlewood_3d_damaged_jvp;
   d.damaged.jvp_ops = {142, 346, 3, 2};
+  d.damaged.sensitivity = &correspondence_littlewood_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {31, 105, 2, 2};
   d.damaged.outputs = &correspondence_littlewood_3d_damaged_outputs;
   d.damaged.form = &correspondence_littlewood_3d_damaged_form;
   d.intact.moments = &correspondence_littlewood_3d_intact_moments;
@@ -10684,6 +12548,8 @@ pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor() {
   d.intact.tangent_ops = {118, 278, 3, 2};
   d.intact.jvp = &correspondence_littlewood_3d_intact_jvp;
   d.intact.jvp_ops = {142, 307, 3, 2};
+  d.intact.sensitivity = &correspondence_littlewood_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {31, 96, 2, 2};
   d.intact.outputs = &correspondence_littlewood_3d_intact_outputs;
   d.intact.form = &correspondence_littlewood_3d_intact_form;
   return d;

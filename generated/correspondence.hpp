@@ -9,6 +9,7 @@ void correspondence_plane_strain_damaged_moments(const pd::abi::Family& fam, dou
 void correspondence_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_plane_strain_damaged_energy(const pd::abi::Family& fam);
 void correspondence_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -16,6 +17,7 @@ void correspondence_plane_strain_intact_moments(const pd::abi::Family& fam, doub
 void correspondence_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_plane_strain_intact_energy(const pd::abi::Family& fam);
 void correspondence_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -24,6 +26,7 @@ void correspondence_3d_damaged_moments(const pd::abi::Family& fam, double* momen
 void correspondence_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_3d_damaged_energy(const pd::abi::Family& fam);
 void correspondence_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -31,6 +34,7 @@ void correspondence_3d_intact_moments(const pd::abi::Family& fam, double* moment
 void correspondence_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_3d_intact_energy(const pd::abi::Family& fam);
 void correspondence_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -39,6 +43,7 @@ void correspondence_silling_plane_strain_damaged_moments(const pd::abi::Family& 
 void correspondence_silling_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_silling_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_silling_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_silling_plane_strain_damaged_energy(const pd::abi::Family& fam);
 void correspondence_silling_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_silling_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -46,6 +51,7 @@ void correspondence_silling_plane_strain_intact_moments(const pd::abi::Family& f
 void correspondence_silling_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_silling_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_silling_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_silling_plane_strain_intact_energy(const pd::abi::Family& fam);
 void correspondence_silling_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_silling_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -54,6 +60,7 @@ void correspondence_silling_3d_damaged_moments(const pd::abi::Family& fam, doubl
 void correspondence_silling_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_silling_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_silling_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_silling_3d_damaged_energy(const pd::abi::Family& fam);
 void correspondence_silling_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_silling_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -61,6 +68,7 @@ void correspondence_silling_3d_intact_moments(const pd::abi::Family& fam, double
 void correspondence_silling_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_silling_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_silling_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 double correspondence_silling_3d_intact_energy(const pd::abi::Family& fam);
 void correspondence_silling_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_silling_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -69,12 +77,14 @@ void correspondence_littlewood_plane_strain_damaged_moments(const pd::abi::Famil
 void correspondence_littlewood_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_littlewood_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_littlewood_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_littlewood_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_littlewood_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_littlewood_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void correspondence_littlewood_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments);
 void correspondence_littlewood_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_littlewood_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_littlewood_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_littlewood_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_littlewood_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_littlewood_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor correspondence_littlewood_plane_strain_descriptor();
@@ -82,12 +92,14 @@ void correspondence_littlewood_3d_damaged_moments(const pd::abi::Family& fam, do
 void correspondence_littlewood_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_littlewood_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_littlewood_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_littlewood_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_littlewood_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_littlewood_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 void correspondence_littlewood_3d_intact_moments(const pd::abi::Family& fam, double* moments);
 void correspondence_littlewood_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_littlewood_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_littlewood_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_littlewood_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_littlewood_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_littlewood_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor correspondence_littlewood_3d_descriptor();

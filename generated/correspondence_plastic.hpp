@@ -9,6 +9,7 @@ void correspondence_plastic_plane_strain_damaged_moments(const pd::abi::Family& 
 void correspondence_plastic_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plastic_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plastic_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plastic_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plastic_plane_strain_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void correspondence_plastic_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -16,6 +17,7 @@ void correspondence_plastic_plane_strain_intact_moments(const pd::abi::Family& f
 void correspondence_plastic_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plastic_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plastic_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plastic_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plastic_plane_strain_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void correspondence_plastic_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -24,6 +26,7 @@ void correspondence_plastic_3d_damaged_moments(const pd::abi::Family& fam, doubl
 void correspondence_plastic_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plastic_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plastic_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plastic_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_plastic_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plastic_3d_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void correspondence_plastic_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -31,6 +34,7 @@ void correspondence_plastic_3d_intact_moments(const pd::abi::Family& fam, double
 void correspondence_plastic_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void correspondence_plastic_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void correspondence_plastic_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void correspondence_plastic_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void correspondence_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void correspondence_plastic_3d_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void correspondence_plastic_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);

@@ -400,6 +400,139 @@ void elastic_plastic_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// elastic_plastic_plane_strain_damaged_sensitivity: per bond 13 add, 61 mul, 1 div, 2 call; per family 9 add, 51 mul, 4 div, 1 call
+void elastic_plastic_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double s_deviatoric_moment = fam.moments[1];
+  const double P_sigma_y = fam.params[2];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 64.0 * p5 * (P_G * P_G);
+  const double p7 = 0.5 * s_theta;
+  const double p8 = 128.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = alpha * alpha;
+    const double b14 = w * w;
+    lane1[lane] += p6 * b12 * V * b13 * b14;
+    lane2[lane] += p8 * b12 * V * b13 * b14;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p15 = 2.0 * s_theta * p4 * V0;
+  const double p16 = 0.6666666666666666 * s_theta * p4;
+  const double p17 = P_sigma_y * P_sigma_y;
+  const double p18 = 2.6666666666666665 * s_deviatoric_moment * p5 * p17;
+  const double p19 = s_trial_deviatoric_norm2 - p18;
+  const double p20 = 1.0 / ((p19 > 0.0 ? s_trial_deviatoric_norm2 : p18));
+  const double p21 = std::sqrt(p20 * s_deviatoric_moment * p5 * p17);
+  const double p22 = 8.0 * ((p19 > 0.0 ? 1.632993161855452 * p21 : 1.0)) * p4;
+  const double p23 = 1.0 / p21;
+  const double p24 = p20 * p20;
+  const double p25 = 8.0 * dp1_trial_deviatoric_norm2 * ((p19 > 0.0 ? -(0.816496580927726 * ((p19 > 0.0 ? 1.0 : 0.0)) * p23 * p24 * s_deviatoric_moment * p5 * p17) : 0.0)) * p4 * P_G;
+  const double p26 = 8.0 * ((p19 > 0.0 ? 0.816496580927726 * (2.0 * p20 * s_deviatoric_moment * p5 * P_sigma_y - ((p19 > 0.0 ? 0.0 : 5.333333333333333 * s_deviatoric_moment * p5 * P_sigma_y)) * p24 * s_deviatoric_moment * p5 * p17) * p23 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b27 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b28 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b29 = 1.0 / b28;
+    const double b30 = p15 * b29 * b27 * sf * V * alpha * w;
+    const double b31 = b30 * Y_0;
+    const double b32 = b30 * Y_1;
+    const double b33 = b28 - b27 - p7 * b27 - H_plastic_extension;
+    const double b34 = (p16 * b27 * alpha * w + p22 * b33 * alpha * w) * b29 * sf;
+    const double b35 = p25 * b33 * b29 * sf * alpha * w;
+    const double b36 = V0 * (b34 * Y_0 + b35 * Y_0) * V;
+    const double b37 = V0 * (b34 * Y_1 + b35 * Y_1) * V;
+    const double b38 = p26 * b33 * b29 * sf * V * alpha * w;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b31;
+    lane3[lane] += b31;
+    dfdp[(k + 1) * 2 + 1] = -b32;
+    lane4[lane] += b32;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b36;
+    lane5[lane] += b36;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b37;
+    lane6[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b39;
+    lane7[lane] += b39;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b40;
+    lane8[lane] += b40;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+}
+
 // elastic_plastic_plane_strain_damaged_outputs: per bond 7 add, 23 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -1028,6 +1161,135 @@ void elastic_plastic_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// elastic_plastic_plane_strain_intact_sensitivity: per bond 13 add, 52 mul, 1 div, 2 call; per family 9 add, 51 mul, 4 div, 1 call
+void elastic_plastic_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double s_deviatoric_moment = fam.moments[1];
+  const double P_sigma_y = fam.params[2];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 64.0 * p5 * (P_G * P_G);
+  const double p7 = 0.5 * s_theta;
+  const double p8 = 128.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = w * w;
+    lane1[lane] += p6 * b12 * V * b13;
+    lane2[lane] += p8 * b12 * V * b13;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p14 = 2.0 * s_theta * p4 * V0;
+  const double p15 = 0.6666666666666666 * s_theta * p4;
+  const double p16 = P_sigma_y * P_sigma_y;
+  const double p17 = 2.6666666666666665 * s_deviatoric_moment * p5 * p16;
+  const double p18 = s_trial_deviatoric_norm2 - p17;
+  const double p19 = 1.0 / ((p18 > 0.0 ? s_trial_deviatoric_norm2 : p17));
+  const double p20 = std::sqrt(p19 * s_deviatoric_moment * p5 * p16);
+  const double p21 = 8.0 * ((p18 > 0.0 ? 1.632993161855452 * p20 : 1.0)) * p4;
+  const double p22 = 1.0 / p20;
+  const double p23 = p19 * p19;
+  const double p24 = 8.0 * dp1_trial_deviatoric_norm2 * ((p18 > 0.0 ? -(0.816496580927726 * ((p18 > 0.0 ? 1.0 : 0.0)) * p22 * p23 * s_deviatoric_moment * p5 * p16) : 0.0)) * p4 * P_G;
+  const double p25 = 8.0 * ((p18 > 0.0 ? 0.816496580927726 * (2.0 * p19 * s_deviatoric_moment * p5 * P_sigma_y - ((p18 > 0.0 ? 0.0 : 5.333333333333333 * s_deviatoric_moment * p5 * P_sigma_y)) * p23 * s_deviatoric_moment * p5 * p16) * p22 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b26 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b27 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b28 = 1.0 / b27;
+    const double b29 = p14 * b28 * b26 * sf * V * w;
+    const double b30 = b29 * Y_0;
+    const double b31 = b29 * Y_1;
+    const double b32 = b27 - b26 - p7 * b26 - H_plastic_extension;
+    const double b33 = (p15 * b26 * w + p21 * b32 * w) * b28 * sf;
+    const double b34 = p24 * b32 * b28 * sf * w;
+    const double b35 = V0 * (b33 * Y_0 + b34 * Y_0) * V;
+    const double b36 = V0 * (b33 * Y_1 + b34 * Y_1) * V;
+    const double b37 = p25 * b32 * b28 * sf * V * w;
+    const double b38 = b37 * Y_0;
+    const double b39 = b37 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b30;
+    lane3[lane] += b30;
+    dfdp[(k + 1) * 2 + 1] = -b31;
+    lane4[lane] += b31;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b35;
+    lane5[lane] += b35;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b36;
+    lane6[lane] += b36;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b38;
+    lane7[lane] += b38;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b39;
+    lane8[lane] += b39;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+}
+
 // elastic_plastic_plane_strain_intact_outputs: per bond 7 add, 19 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -1310,6 +1572,8 @@ pd::abi::LawDescriptor elastic_plastic_plane_strain_descriptor() {
   d.damaged.tangent_ops = {23, 101, 2, 2};
   d.damaged.jvp = &elastic_plastic_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {29, 109, 4, 2};
+  d.damaged.sensitivity = &elastic_plastic_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {13, 61, 1, 2};
   d.damaged.outputs = &elastic_plastic_plane_strain_damaged_outputs;
   d.damaged.update = &elastic_plastic_plane_strain_damaged_update;
   d.damaged.form = &elastic_plastic_plane_strain_damaged_form;
@@ -1320,6 +1584,8 @@ pd::abi::LawDescriptor elastic_plastic_plane_strain_descriptor() {
   d.intact.tangent_ops = {23, 87, 2, 2};
   d.intact.jvp = &elastic_plastic_plane_strain_intact_jvp;
   d.intact.jvp_ops = {29, 95, 4, 2};
+  d.intact.sensitivity = &elastic_plastic_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {13, 52, 1, 2};
   d.intact.outputs = &elastic_plastic_plane_strain_intact_outputs;
   d.intact.update = &elastic_plastic_plane_strain_intact_update;
   d.intact.form = &elastic_plastic_plane_strain_intact_form;
@@ -1767,6 +2033,156 @@ void elastic_plastic_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy
   df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
+// elastic_plastic_3d_damaged_sensitivity: per bond 15 add, 66 mul, 1 div, 2 call; per family 9 add, 49 mul, 4 div, 1 call
+void elastic_plastic_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double s_deviatoric_moment = fam.moments[1];
+  const double P_sigma_y = fam.params[2];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 225.0 * p5 * (P_G * P_G);
+  const double p7 = 0.3333333333333333 * s_theta;
+  const double p8 = 450.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = alpha * alpha;
+    const double b14 = w * w;
+    lane1[lane] += p6 * b12 * V * b13 * b14;
+    lane2[lane] += p8 * b12 * V * b13 * b14;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p15 = 3.0 * s_theta * p4 * V0;
+  const double p16 = P_sigma_y * P_sigma_y;
+  const double p17 = 5.0 * s_deviatoric_moment * p5 * p16;
+  const double p18 = s_trial_deviatoric_norm2 - p17;
+  const double p19 = 1.0 / ((p18 > 0.0 ? s_trial_deviatoric_norm2 : p17));
+  const double p20 = std::sqrt(p19 * s_deviatoric_moment * p5 * p16);
+  const double p21 = 15.0 * ((p18 > 0.0 ? 2.23606797749979 * p20 : 1.0)) * p4;
+  const double p22 = 1.0 / p20;
+  const double p23 = p19 * p19;
+  const double p24 = 15.0 * dp1_trial_deviatoric_norm2 * ((p18 > 0.0 ? -(1.118033988749895 * ((p18 > 0.0 ? 1.0 : 0.0)) * p22 * p23 * s_deviatoric_moment * p5 * p16) : 0.0)) * p4 * P_G;
+  const double p25 = 15.0 * ((p18 > 0.0 ? 1.118033988749895 * (2.0 * p19 * s_deviatoric_moment * p5 * P_sigma_y - ((p18 > 0.0 ? 0.0 : 10.0 * s_deviatoric_moment * p5 * P_sigma_y)) * p23 * s_deviatoric_moment * p5 * p16) * p22 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b26 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b27 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b28 = 1.0 / b27;
+    const double b29 = p15 * b28 * b26 * sf * V * alpha * w;
+    const double b30 = b29 * Y_0;
+    const double b31 = b29 * Y_1;
+    const double b32 = b29 * Y_2;
+    const double b33 = b27 - b26 - p7 * b26 - H_plastic_extension;
+    const double b34 = p21 * b33 * b28 * sf * alpha * w;
+    const double b35 = p24 * b33 * b28 * sf * alpha * w;
+    const double b36 = V0 * (b34 * Y_0 + b35 * Y_0) * V;
+    const double b37 = V0 * (b34 * Y_1 + b35 * Y_1) * V;
+    const double b38 = V0 * (b34 * Y_2 + b35 * Y_2) * V;
+    const double b39 = p25 * b33 * b28 * sf * V * alpha * w;
+    const double b40 = b39 * Y_0;
+    const double b41 = b39 * Y_1;
+    const double b42 = b39 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b30;
+    lane3[lane] += b30;
+    dfdp[(k + 1) * 3 + 1] = -b31;
+    lane4[lane] += b31;
+    dfdp[(k + 1) * 3 + 2] = -b32;
+    lane5[lane] += b32;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b36;
+    lane6[lane] += b36;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b37;
+    lane7[lane] += b37;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b38;
+    lane8[lane] += b38;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b40;
+    lane9[lane] += b40;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b41;
+    lane10[lane] += b41;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b42;
+    lane11[lane] += b42;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[2] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
 }
 
 // elastic_plastic_3d_damaged_outputs: per bond 9 add, 25 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
@@ -2524,6 +2940,152 @@ void elastic_plastic_3d_intact_jvp(const pd::abi::Family& fam, const double* dy,
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
+// elastic_plastic_3d_intact_sensitivity: per bond 15 add, 58 mul, 1 div, 2 call; per family 9 add, 49 mul, 4 div, 1 call
+void elastic_plastic_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double s_deviatoric_moment = fam.moments[1];
+  const double P_sigma_y = fam.params[2];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 225.0 * p5 * (P_G * P_G);
+  const double p7 = 0.3333333333333333 * s_theta;
+  const double p8 = 450.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = w * w;
+    lane1[lane] += p6 * b12 * V * b13;
+    lane2[lane] += p8 * b12 * V * b13;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p14 = 3.0 * s_theta * p4 * V0;
+  const double p15 = P_sigma_y * P_sigma_y;
+  const double p16 = 5.0 * s_deviatoric_moment * p5 * p15;
+  const double p17 = s_trial_deviatoric_norm2 - p16;
+  const double p18 = 1.0 / ((p17 > 0.0 ? s_trial_deviatoric_norm2 : p16));
+  const double p19 = std::sqrt(p18 * s_deviatoric_moment * p5 * p15);
+  const double p20 = 15.0 * ((p17 > 0.0 ? 2.23606797749979 * p19 : 1.0)) * p4;
+  const double p21 = 1.0 / p19;
+  const double p22 = p18 * p18;
+  const double p23 = 15.0 * dp1_trial_deviatoric_norm2 * ((p17 > 0.0 ? -(1.118033988749895 * ((p17 > 0.0 ? 1.0 : 0.0)) * p21 * p22 * s_deviatoric_moment * p5 * p15) : 0.0)) * p4 * P_G;
+  const double p24 = 15.0 * ((p17 > 0.0 ? 1.118033988749895 * (2.0 * p18 * s_deviatoric_moment * p5 * P_sigma_y - ((p17 > 0.0 ? 0.0 : 10.0 * s_deviatoric_moment * p5 * P_sigma_y)) * p22 * s_deviatoric_moment * p5 * p15) * p21 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b25 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b26 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b27 = 1.0 / b26;
+    const double b28 = p14 * b27 * b25 * sf * V * w;
+    const double b29 = b28 * Y_0;
+    const double b30 = b28 * Y_1;
+    const double b31 = b28 * Y_2;
+    const double b32 = b26 - b25 - p7 * b25 - H_plastic_extension;
+    const double b33 = p20 * b32 * b27 * sf * w;
+    const double b34 = p23 * b32 * b27 * sf * w;
+    const double b35 = V0 * (b33 * Y_0 + b34 * Y_0) * V;
+    const double b36 = V0 * (b33 * Y_1 + b34 * Y_1) * V;
+    const double b37 = V0 * (b33 * Y_2 + b34 * Y_2) * V;
+    const double b38 = p24 * b32 * b27 * sf * V * w;
+    const double b39 = b38 * Y_0;
+    const double b40 = b38 * Y_1;
+    const double b41 = b38 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b29;
+    lane3[lane] += b29;
+    dfdp[(k + 1) * 3 + 1] = -b30;
+    lane4[lane] += b30;
+    dfdp[(k + 1) * 3 + 2] = -b31;
+    lane5[lane] += b31;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b35;
+    lane6[lane] += b35;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b36;
+    lane7[lane] += b36;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b37;
+    lane8[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b39;
+    lane9[lane] += b39;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b40;
+    lane10[lane] += b40;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b41;
+    lane11[lane] += b41;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[2] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+}
+
 // elastic_plastic_3d_intact_outputs: per bond 9 add, 21 mul, 0 div, 2 call; per family 2 add, 18 mul, 4 div, 2 call
 void elastic_plastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -2883,6 +3445,8 @@ pd::abi::LawDescriptor elastic_plastic_3d_descriptor() {
   d.damaged.tangent_ops = {32, 119, 2, 2};
   d.damaged.jvp = &elastic_plastic_3d_damaged_jvp;
   d.damaged.jvp_ops = {45, 145, 4, 2};
+  d.damaged.sensitivity = &elastic_plastic_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {15, 66, 1, 2};
   d.damaged.outputs = &elastic_plastic_3d_damaged_outputs;
   d.damaged.update = &elastic_plastic_3d_damaged_update;
   d.damaged.form = &elastic_plastic_3d_damaged_form;
@@ -2893,6 +3457,8 @@ pd::abi::LawDescriptor elastic_plastic_3d_descriptor() {
   d.intact.tangent_ops = {32, 105, 2, 2};
   d.intact.jvp = &elastic_plastic_3d_intact_jvp;
   d.intact.jvp_ops = {45, 129, 4, 2};
+  d.intact.sensitivity = &elastic_plastic_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {15, 58, 1, 2};
   d.intact.outputs = &elastic_plastic_3d_intact_outputs;
   d.intact.update = &elastic_plastic_3d_intact_update;
   d.intact.form = &elastic_plastic_3d_intact_form;

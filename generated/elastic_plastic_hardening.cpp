@@ -418,6 +418,166 @@ void elastic_plastic_hardening_plane_strain_damaged_jvp(const pd::abi::Family& f
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// elastic_plastic_hardening_plane_strain_damaged_sensitivity: per bond 14 add, 72 mul, 1 div, 2 call; per family 29 add, 106 mul, 6 div, 2 call
+void elastic_plastic_hardening_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double P_sigma_y = fam.params[2];
+  const double PH_equivalent_plastic_strain = (fam.particle_history != nullptr ? fam.particle_history[0] : 0.0);
+  const double P_H = fam.params[3];
+  const double s_deviatoric_moment = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 64.0 * p5 * (P_G * P_G);
+  const double p7 = 0.5 * s_theta;
+  const double p8 = 128.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = alpha * alpha;
+    const double b14 = w * w;
+    lane1[lane] += p6 * b12 * V * b13 * b14;
+    lane2[lane] += p8 * b12 * V * b13 * b14;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p15 = 2.0 * s_theta * p4 * V0;
+  const double p16 = 0.6666666666666666 * s_theta * p4;
+  const double p17 = P_sigma_y + PH_equivalent_plastic_strain * P_H;
+  const double p18 = 2.6666666666666665 * (p17 * p17) * s_deviatoric_moment * p5;
+  const double p19 = s_trial_deviatoric_norm2 - p18;
+  const double p20 = (p19 > 0.0 ? s_trial_deviatoric_norm2 : p18);
+  const double p21 = std::sqrt(p20);
+  const double p22 = std::sqrt(s_deviatoric_moment);
+  const double p23 = 1.0 / p22;
+  const double p24 = 0.6123724356957945 * p21 * p23 * s_m - p17;
+  const double p25 = 1.0 / (3.0 * P_G + P_H);
+  const double p26 = (p19 > 0.0 ? p24 * p25 : 0.0);
+  const double p27 = p17 + p26 * P_H;
+  const double p28 = 1.0 / p21;
+  const double p29 = 8.0 * ((p19 > 0.0 ? 1.6329931618554523 * p27 * p28 * p22 * p4 : 1.0)) * p4;
+  const double p30 = p25 * p25;
+  const double p31 = 8.0 * ((p19 > 0.0 ? 1.6329931618554523 * ((p19 > 0.0 ? -(3.0 * p24 * p30) : 0.0)) * p28 * p22 * p4 * P_H : 0.0)) * p4 * P_G;
+  const double p32 = (p19 > 0.0 ? 1.0 : 0.0);
+  const double p33 = 1.0 / p20 * p28;
+  const double p34 = 8.0 * dp1_trial_deviatoric_norm2 * ((p19 > 0.0 ? 1.6329931618554523 * ((p19 > 0.0 ? 0.30618621784789724 * p32 * p25 * p28 * p23 * s_m : 0.0)) * p28 * p22 * p4 * P_H - 0.8164965809277261 * p32 * p27 * p33 * p22 * p4 : 0.0)) * p4 * P_G;
+  const double p35 = 5.333333333333333 * p17;
+  const double p36 = (p19 > 0.0 ? 0.0 : p35 * s_deviatoric_moment * p5);
+  const double p37 = 8.0 * ((p19 > 0.0 ? 1.6329931618554523 * (1.0 + ((p19 > 0.0 ? (0.30618621784789724 * p36 * p28 * p23 * s_m - 1.0) * p25 : 0.0)) * P_H) * p28 * p22 * p4 - 0.8164965809277261 * p36 * p27 * p33 * p22 * p4 : 0.0)) * p4 * P_G * V0;
+  const double p38 = (p19 > 0.0 ? 0.0 : p35 * PH_equivalent_plastic_strain * s_deviatoric_moment * p5);
+  const double p39 = 8.0 * ((p19 > 0.0 ? 1.6329931618554523 * (PH_equivalent_plastic_strain + p26 + ((p19 > 0.0 ? (0.30618621784789724 * p38 * p28 * p23 * s_m - PH_equivalent_plastic_strain) * p25 - p24 * p30 : 0.0)) * P_H) * p28 * p22 * p4 - 0.8164965809277261 * p38 * p27 * p33 * p22 * p4 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b40 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b41 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b42 = 1.0 / b41;
+    const double b43 = p15 * b42 * b40 * sf * V * alpha * w;
+    const double b44 = b43 * Y_0;
+    const double b45 = b43 * Y_1;
+    const double b46 = b41 - b40 - p7 * b40 - H_plastic_extension;
+    const double b47 = (p16 * b40 * alpha * w + p29 * b46 * alpha * w + p31 * b46 * alpha * w) * b42 * sf;
+    const double b48 = p34 * b46 * b42 * sf * alpha * w;
+    const double b49 = V0 * (b47 * Y_0 + b48 * Y_0) * V;
+    const double b50 = V0 * (b47 * Y_1 + b48 * Y_1) * V;
+    const double b51 = p37 * b46 * b42 * sf * V * alpha * w;
+    const double b52 = b51 * Y_0;
+    const double b53 = b51 * Y_1;
+    const double b54 = p39 * b46 * b42 * sf * V * alpha * w;
+    const double b55 = b54 * Y_0;
+    const double b56 = b54 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b44;
+    lane3[lane] += b44;
+    dfdp[(k + 1) * 2 + 1] = -b45;
+    lane4[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b49;
+    lane5[lane] += b49;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b50;
+    lane6[lane] += b50;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b52;
+    lane7[lane] += b52;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b53;
+    lane8[lane] += b53;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b55;
+    lane9[lane] += b55;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b56;
+    lane10[lane] += b56;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+}
+
 // elastic_plastic_hardening_plane_strain_damaged_outputs: per bond 7 add, 19 mul, 0 div, 2 call; per family 3 add, 15 mul, 4 div, 2 call
 void elastic_plastic_hardening_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -1055,6 +1215,162 @@ void elastic_plastic_hardening_plane_strain_intact_jvp(const pd::abi::Family& fa
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
 }
 
+// elastic_plastic_hardening_plane_strain_intact_sensitivity: per bond 14 add, 61 mul, 1 div, 2 call; per family 29 add, 106 mul, 6 div, 2 call
+void elastic_plastic_hardening_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double P_sigma_y = fam.params[2];
+  const double PH_equivalent_plastic_strain = (fam.particle_history != nullptr ? fam.particle_history[0] : 0.0);
+  const double P_H = fam.params[3];
+  const double s_deviatoric_moment = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 64.0 * p5 * (P_G * P_G);
+  const double p7 = 0.5 * s_theta;
+  const double p8 = 128.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = w * w;
+    lane1[lane] += p6 * b12 * V * b13;
+    lane2[lane] += p8 * b12 * V * b13;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p14 = 2.0 * s_theta * p4 * V0;
+  const double p15 = 0.6666666666666666 * s_theta * p4;
+  const double p16 = P_sigma_y + PH_equivalent_plastic_strain * P_H;
+  const double p17 = 2.6666666666666665 * (p16 * p16) * s_deviatoric_moment * p5;
+  const double p18 = s_trial_deviatoric_norm2 - p17;
+  const double p19 = (p18 > 0.0 ? s_trial_deviatoric_norm2 : p17);
+  const double p20 = std::sqrt(p19);
+  const double p21 = std::sqrt(s_deviatoric_moment);
+  const double p22 = 1.0 / p21;
+  const double p23 = 0.6123724356957945 * p20 * p22 * s_m - p16;
+  const double p24 = 1.0 / (3.0 * P_G + P_H);
+  const double p25 = (p18 > 0.0 ? p23 * p24 : 0.0);
+  const double p26 = p16 + p25 * P_H;
+  const double p27 = 1.0 / p20;
+  const double p28 = 8.0 * ((p18 > 0.0 ? 1.6329931618554523 * p26 * p27 * p21 * p4 : 1.0)) * p4;
+  const double p29 = p24 * p24;
+  const double p30 = 8.0 * ((p18 > 0.0 ? 1.6329931618554523 * ((p18 > 0.0 ? -(3.0 * p23 * p29) : 0.0)) * p27 * p21 * p4 * P_H : 0.0)) * p4 * P_G;
+  const double p31 = (p18 > 0.0 ? 1.0 : 0.0);
+  const double p32 = 1.0 / p19 * p27;
+  const double p33 = 8.0 * dp1_trial_deviatoric_norm2 * ((p18 > 0.0 ? 1.6329931618554523 * ((p18 > 0.0 ? 0.30618621784789724 * p31 * p24 * p27 * p22 * s_m : 0.0)) * p27 * p21 * p4 * P_H - 0.8164965809277261 * p31 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G;
+  const double p34 = 5.333333333333333 * p16;
+  const double p35 = (p18 > 0.0 ? 0.0 : p34 * s_deviatoric_moment * p5);
+  const double p36 = 8.0 * ((p18 > 0.0 ? 1.6329931618554523 * (1.0 + ((p18 > 0.0 ? (0.30618621784789724 * p35 * p27 * p22 * s_m - 1.0) * p24 : 0.0)) * P_H) * p27 * p21 * p4 - 0.8164965809277261 * p35 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G * V0;
+  const double p37 = (p18 > 0.0 ? 0.0 : p34 * PH_equivalent_plastic_strain * s_deviatoric_moment * p5);
+  const double p38 = 8.0 * ((p18 > 0.0 ? 1.6329931618554523 * (PH_equivalent_plastic_strain + p25 + ((p18 > 0.0 ? (0.30618621784789724 * p37 * p27 * p22 * s_m - PH_equivalent_plastic_strain) * p24 - p23 * p29 : 0.0)) * P_H) * p27 * p21 * p4 - 0.8164965809277261 * p37 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b39 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b40 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b41 = 1.0 / b40;
+    const double b42 = p14 * b41 * b39 * sf * V * w;
+    const double b43 = b42 * Y_0;
+    const double b44 = b42 * Y_1;
+    const double b45 = b40 - b39 - p7 * b39 - H_plastic_extension;
+    const double b46 = (p15 * b39 * w + p28 * b45 * w + p30 * b45 * w) * b41 * sf;
+    const double b47 = p33 * b45 * b41 * sf * w;
+    const double b48 = V0 * (b46 * Y_0 + b47 * Y_0) * V;
+    const double b49 = V0 * (b46 * Y_1 + b47 * Y_1) * V;
+    const double b50 = p36 * b45 * b41 * sf * V * w;
+    const double b51 = b50 * Y_0;
+    const double b52 = b50 * Y_1;
+    const double b53 = p38 * b45 * b41 * sf * V * w;
+    const double b54 = b53 * Y_0;
+    const double b55 = b53 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b43;
+    lane3[lane] += b43;
+    dfdp[(k + 1) * 2 + 1] = -b44;
+    lane4[lane] += b44;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b48;
+    lane5[lane] += b48;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b49;
+    lane6[lane] += b49;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b51;
+    lane7[lane] += b51;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b52;
+    lane8[lane] += b52;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b54;
+    lane9[lane] += b54;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b55;
+    lane10[lane] += b55;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+}
+
 // elastic_plastic_hardening_plane_strain_intact_outputs: per bond 7 add, 16 mul, 0 div, 2 call; per family 3 add, 15 mul, 4 div, 2 call
 void elastic_plastic_hardening_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -1329,6 +1645,8 @@ pd::abi::LawDescriptor elastic_plastic_hardening_plane_strain_descriptor() {
   d.damaged.tangent_ops = {23, 101, 2, 2};
   d.damaged.jvp = &elastic_plastic_hardening_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {29, 109, 4, 2};
+  d.damaged.sensitivity = &elastic_plastic_hardening_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {14, 72, 1, 2};
   d.damaged.outputs = &elastic_plastic_hardening_plane_strain_damaged_outputs;
   d.damaged.update = &elastic_plastic_hardening_plane_strain_damaged_update;
   d.damaged.form = &elastic_plastic_hardening_plane_strain_damaged_form;
@@ -1339,6 +1657,8 @@ pd::abi::LawDescriptor elastic_plastic_hardening_plane_strain_descriptor() {
   d.intact.tangent_ops = {23, 87, 2, 2};
   d.intact.jvp = &elastic_plastic_hardening_plane_strain_intact_jvp;
   d.intact.jvp_ops = {29, 95, 4, 2};
+  d.intact.sensitivity = &elastic_plastic_hardening_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {14, 61, 1, 2};
   d.intact.outputs = &elastic_plastic_hardening_plane_strain_intact_outputs;
   d.intact.update = &elastic_plastic_hardening_plane_strain_intact_update;
   d.intact.form = &elastic_plastic_hardening_plane_strain_intact_form;
@@ -1804,6 +2124,188 @@ void elastic_plastic_hardening_3d_damaged_jvp(const pd::abi::Family& fam, const 
   df[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
   df[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
+// elastic_plastic_hardening_3d_damaged_sensitivity: per bond 16 add, 78 mul, 1 div, 2 call; per family 29 add, 104 mul, 6 div, 2 call
+void elastic_plastic_hardening_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double P_sigma_y = fam.params[2];
+  const double PH_equivalent_plastic_strain = (fam.particle_history != nullptr ? fam.particle_history[0] : 0.0);
+  const double P_H = fam.params[3];
+  const double s_deviatoric_moment = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 225.0 * p5 * (P_G * P_G);
+  const double p7 = 0.3333333333333333 * s_theta;
+  const double p8 = 450.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = alpha * alpha;
+    const double b14 = w * w;
+    lane1[lane] += p6 * b12 * V * b13 * b14;
+    lane2[lane] += p8 * b12 * V * b13 * b14;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p15 = 3.0 * s_theta * p4 * V0;
+  const double p16 = P_sigma_y + PH_equivalent_plastic_strain * P_H;
+  const double p17 = 5.000000000000001 * (p16 * p16) * s_deviatoric_moment * p5;
+  const double p18 = s_trial_deviatoric_norm2 - p17;
+  const double p19 = (p18 > 0.0 ? s_trial_deviatoric_norm2 : p17);
+  const double p20 = std::sqrt(p19);
+  const double p21 = std::sqrt(s_deviatoric_moment);
+  const double p22 = 1.0 / p21;
+  const double p23 = 0.4472135954999579 * p20 * p22 * s_m - p16;
+  const double p24 = 1.0 / (3.0 * P_G + P_H);
+  const double p25 = (p18 > 0.0 ? p23 * p24 : 0.0);
+  const double p26 = p16 + p25 * P_H;
+  const double p27 = 1.0 / p20;
+  const double p28 = 15.0 * ((p18 > 0.0 ? 2.23606797749979 * p26 * p27 * p21 * p4 : 1.0)) * p4;
+  const double p29 = p24 * p24;
+  const double p30 = 15.0 * ((p18 > 0.0 ? 2.23606797749979 * ((p18 > 0.0 ? -(3.0 * p23 * p29) : 0.0)) * p27 * p21 * p4 * P_H : 0.0)) * p4 * P_G;
+  const double p31 = (p18 > 0.0 ? 1.0 : 0.0);
+  const double p32 = 1.0 / p19 * p27;
+  const double p33 = 15.0 * dp1_trial_deviatoric_norm2 * ((p18 > 0.0 ? 2.23606797749979 * ((p18 > 0.0 ? 0.22360679774997896 * p31 * p24 * p27 * p22 * s_m : 0.0)) * p27 * p21 * p4 * P_H - 1.118033988749895 * p31 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G;
+  const double p34 = 10.000000000000002 * p16;
+  const double p35 = (p18 > 0.0 ? 0.0 : p34 * s_deviatoric_moment * p5);
+  const double p36 = 15.0 * ((p18 > 0.0 ? 2.23606797749979 * (1.0 + ((p18 > 0.0 ? (0.22360679774997896 * p35 * p27 * p22 * s_m - 1.0) * p24 : 0.0)) * P_H) * p27 * p21 * p4 - 1.118033988749895 * p35 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G * V0;
+  const double p37 = (p18 > 0.0 ? 0.0 : p34 * PH_equivalent_plastic_strain * s_deviatoric_moment * p5);
+  const double p38 = 15.0 * ((p18 > 0.0 ? 2.23606797749979 * (PH_equivalent_plastic_strain + p25 + ((p18 > 0.0 ? (0.22360679774997896 * p37 * p27 * p22 * s_m - PH_equivalent_plastic_strain) * p24 - p23 * p29 : 0.0)) * P_H) * p27 * p21 * p4 - 1.118033988749895 * p37 * p26 * p32 * p21 * p4 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b39 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b40 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b41 = 1.0 / b40;
+    const double b42 = p15 * b41 * b39 * sf * V * alpha * w;
+    const double b43 = b42 * Y_0;
+    const double b44 = b42 * Y_1;
+    const double b45 = b42 * Y_2;
+    const double b46 = b40 - b39 - p7 * b39 - H_plastic_extension;
+    const double b47 = (p28 * b46 * alpha * w + p30 * b46 * alpha * w) * b41 * sf;
+    const double b48 = p33 * b46 * b41 * sf * alpha * w;
+    const double b49 = V0 * (b47 * Y_0 + b48 * Y_0) * V;
+    const double b50 = V0 * (b47 * Y_1 + b48 * Y_1) * V;
+    const double b51 = V0 * (b47 * Y_2 + b48 * Y_2) * V;
+    const double b52 = p36 * b46 * b41 * sf * V * alpha * w;
+    const double b53 = b52 * Y_0;
+    const double b54 = b52 * Y_1;
+    const double b55 = b52 * Y_2;
+    const double b56 = p38 * b46 * b41 * sf * V * alpha * w;
+    const double b57 = b56 * Y_0;
+    const double b58 = b56 * Y_1;
+    const double b59 = b56 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b43;
+    lane3[lane] += b43;
+    dfdp[(k + 1) * 3 + 1] = -b44;
+    lane4[lane] += b44;
+    dfdp[(k + 1) * 3 + 2] = -b45;
+    lane5[lane] += b45;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b49;
+    lane6[lane] += b49;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b50;
+    lane7[lane] += b50;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b51;
+    lane8[lane] += b51;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b53;
+    lane9[lane] += b53;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b54;
+    lane10[lane] += b54;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b55;
+    lane11[lane] += b55;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b57;
+    lane12[lane] += b57;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b58;
+    lane13[lane] += b58;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b59;
+    lane14[lane] += b59;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[2] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
 }
 
 // elastic_plastic_hardening_3d_damaged_outputs: per bond 9 add, 21 mul, 0 div, 2 call; per family 3 add, 15 mul, 4 div, 2 call
@@ -2570,6 +3072,184 @@ void elastic_plastic_hardening_3d_intact_jvp(const pd::abi::Family& fam, const d
   df[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
+// elastic_plastic_hardening_3d_intact_sensitivity: per bond 16 add, 68 mul, 1 div, 2 call; per family 29 add, 104 mul, 6 div, 2 call
+void elastic_plastic_hardening_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double P_G = fam.params[1];
+  const double V0 = fam.V0;
+  const double P_sigma_y = fam.params[2];
+  const double PH_equivalent_plastic_strain = (fam.particle_history != nullptr ? fam.particle_history[0] : 0.0);
+  const double P_H = fam.params[3];
+  const double s_deviatoric_moment = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  double s_trial_deviatoric_norm2 = 0.0;
+  double dp1_trial_deviatoric_norm2 = 0.0;
+  const double p4 = 1.0 / s_m;
+  const double p5 = p4 * p4;
+  const double p6 = 225.0 * p5 * (P_G * P_G);
+  const double p7 = 0.3333333333333333 * s_theta;
+  const double p8 = 450.0 * p5 * P_G;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b11 = b10 - b9 - p7 * b9 - H_plastic_extension;
+    const double b12 = b11 * b11;
+    const double b13 = w * w;
+    lane1[lane] += p6 * b12 * V * b13;
+    lane2[lane] += p8 * b12 * V * b13;
+    }
+  }
+  s_trial_deviatoric_norm2 += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dp1_trial_deviatoric_norm2 += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p14 = 3.0 * s_theta * p4 * V0;
+  const double p15 = P_sigma_y + PH_equivalent_plastic_strain * P_H;
+  const double p16 = 5.000000000000001 * (p15 * p15) * s_deviatoric_moment * p5;
+  const double p17 = s_trial_deviatoric_norm2 - p16;
+  const double p18 = (p17 > 0.0 ? s_trial_deviatoric_norm2 : p16);
+  const double p19 = std::sqrt(p18);
+  const double p20 = std::sqrt(s_deviatoric_moment);
+  const double p21 = 1.0 / p20;
+  const double p22 = 0.4472135954999579 * p19 * p21 * s_m - p15;
+  const double p23 = 1.0 / (3.0 * P_G + P_H);
+  const double p24 = (p17 > 0.0 ? p22 * p23 : 0.0);
+  const double p25 = p15 + p24 * P_H;
+  const double p26 = 1.0 / p19;
+  const double p27 = 15.0 * ((p17 > 0.0 ? 2.23606797749979 * p25 * p26 * p20 * p4 : 1.0)) * p4;
+  const double p28 = p23 * p23;
+  const double p29 = 15.0 * ((p17 > 0.0 ? 2.23606797749979 * ((p17 > 0.0 ? -(3.0 * p22 * p28) : 0.0)) * p26 * p20 * p4 * P_H : 0.0)) * p4 * P_G;
+  const double p30 = (p17 > 0.0 ? 1.0 : 0.0);
+  const double p31 = 1.0 / p18 * p26;
+  const double p32 = 15.0 * dp1_trial_deviatoric_norm2 * ((p17 > 0.0 ? 2.23606797749979 * ((p17 > 0.0 ? 0.22360679774997896 * p30 * p23 * p26 * p21 * s_m : 0.0)) * p26 * p20 * p4 * P_H - 1.118033988749895 * p30 * p25 * p31 * p20 * p4 : 0.0)) * p4 * P_G;
+  const double p33 = 10.000000000000002 * p15;
+  const double p34 = (p17 > 0.0 ? 0.0 : p33 * s_deviatoric_moment * p5);
+  const double p35 = 15.0 * ((p17 > 0.0 ? 2.23606797749979 * (1.0 + ((p17 > 0.0 ? (0.22360679774997896 * p34 * p26 * p21 * s_m - 1.0) * p23 : 0.0)) * P_H) * p26 * p20 * p4 - 1.118033988749895 * p34 * p25 * p31 * p20 * p4 : 0.0)) * p4 * P_G * V0;
+  const double p36 = (p17 > 0.0 ? 0.0 : p33 * PH_equivalent_plastic_strain * s_deviatoric_moment * p5);
+  const double p37 = 15.0 * ((p17 > 0.0 ? 2.23606797749979 * (PH_equivalent_plastic_strain + p24 + ((p17 > 0.0 ? (0.22360679774997896 * p36 * p26 * p21 * s_m - PH_equivalent_plastic_strain) * p23 - p22 * p28 : 0.0)) * P_H) * p26 * p20 * p4 - 1.118033988749895 * p36 * p25 * p31 * p20 * p4 : 0.0)) * p4 * P_G * V0;
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  double lane13[4] = {};
+  double lane14[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b38 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b39 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_plastic_extension = (fam.history != nullptr ? fam.history[k * 1 + 0] : 0.0);
+    const double b40 = 1.0 / b39;
+    const double b41 = p14 * b40 * b38 * sf * V * w;
+    const double b42 = b41 * Y_0;
+    const double b43 = b41 * Y_1;
+    const double b44 = b41 * Y_2;
+    const double b45 = b39 - b38 - p7 * b38 - H_plastic_extension;
+    const double b46 = (p27 * b45 * w + p29 * b45 * w) * b40 * sf;
+    const double b47 = p32 * b45 * b40 * sf * w;
+    const double b48 = V0 * (b46 * Y_0 + b47 * Y_0) * V;
+    const double b49 = V0 * (b46 * Y_1 + b47 * Y_1) * V;
+    const double b50 = V0 * (b46 * Y_2 + b47 * Y_2) * V;
+    const double b51 = p35 * b45 * b40 * sf * V * w;
+    const double b52 = b51 * Y_0;
+    const double b53 = b51 * Y_1;
+    const double b54 = b51 * Y_2;
+    const double b55 = p37 * b45 * b40 * sf * V * w;
+    const double b56 = b55 * Y_0;
+    const double b57 = b55 * Y_1;
+    const double b58 = b55 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b42;
+    lane3[lane] += b42;
+    dfdp[(k + 1) * 3 + 1] = -b43;
+    lane4[lane] += b43;
+    dfdp[(k + 1) * 3 + 2] = -b44;
+    lane5[lane] += b44;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b48;
+    lane6[lane] += b48;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b49;
+    lane7[lane] += b49;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b50;
+    lane8[lane] += b50;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b52;
+    lane9[lane] += b52;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b53;
+    lane10[lane] += b53;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b54;
+    lane11[lane] += b54;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b56;
+    lane12[lane] += b56;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b57;
+    lane13[lane] += b57;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b58;
+    lane14[lane] += b58;
+    }
+  }
+  dfdp[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  dfdp[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  dfdp[2] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] += (lane13[0] + lane13[1]) + (lane13[2] + lane13[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] += (lane14[0] + lane14[1]) + (lane14[2] + lane14[3]);
+}
+
 // elastic_plastic_hardening_3d_intact_outputs: per bond 9 add, 18 mul, 0 div, 2 call; per family 3 add, 15 mul, 4 div, 2 call
 void elastic_plastic_hardening_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -2921,6 +3601,8 @@ pd::abi::LawDescriptor elastic_plastic_hardening_3d_descriptor() {
   d.damaged.tangent_ops = {32, 119, 2, 2};
   d.damaged.jvp = &elastic_plastic_hardening_3d_damaged_jvp;
   d.damaged.jvp_ops = {45, 145, 4, 2};
+  d.damaged.sensitivity = &elastic_plastic_hardening_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {16, 78, 1, 2};
   d.damaged.outputs = &elastic_plastic_hardening_3d_damaged_outputs;
   d.damaged.update = &elastic_plastic_hardening_3d_damaged_update;
   d.damaged.form = &elastic_plastic_hardening_3d_damaged_form;
@@ -2931,6 +3613,8 @@ pd::abi::LawDescriptor elastic_plastic_hardening_3d_descriptor() {
   d.intact.tangent_ops = {32, 105, 2, 2};
   d.intact.jvp = &elastic_plastic_hardening_3d_intact_jvp;
   d.intact.jvp_ops = {45, 129, 4, 2};
+  d.intact.sensitivity = &elastic_plastic_hardening_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {16, 68, 1, 2};
   d.intact.outputs = &elastic_plastic_hardening_3d_intact_outputs;
   d.intact.update = &elastic_plastic_hardening_3d_intact_update;
   d.intact.form = &elastic_plastic_hardening_3d_intact_form;

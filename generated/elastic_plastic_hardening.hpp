@@ -9,6 +9,7 @@ void elastic_plastic_hardening_plane_strain_damaged_moments(const pd::abi::Famil
 void elastic_plastic_hardening_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
 void elastic_plastic_hardening_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void elastic_plastic_hardening_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void elastic_plastic_hardening_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void elastic_plastic_hardening_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void elastic_plastic_hardening_plane_strain_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void elastic_plastic_hardening_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -16,6 +17,7 @@ void elastic_plastic_hardening_plane_strain_intact_moments(const pd::abi::Family
 void elastic_plastic_hardening_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
 void elastic_plastic_hardening_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void elastic_plastic_hardening_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void elastic_plastic_hardening_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void elastic_plastic_hardening_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void elastic_plastic_hardening_plane_strain_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void elastic_plastic_hardening_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -24,6 +26,7 @@ void elastic_plastic_hardening_3d_damaged_moments(const pd::abi::Family& fam, do
 void elastic_plastic_hardening_3d_damaged_residual(const pd::abi::Family& fam, double* forces);
 void elastic_plastic_hardening_3d_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void elastic_plastic_hardening_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void elastic_plastic_hardening_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void elastic_plastic_hardening_3d_damaged_outputs(const pd::abi::Family& fam, double* outputs);
 void elastic_plastic_hardening_3d_damaged_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void elastic_plastic_hardening_3d_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
@@ -31,6 +34,7 @@ void elastic_plastic_hardening_3d_intact_moments(const pd::abi::Family& fam, dou
 void elastic_plastic_hardening_3d_intact_residual(const pd::abi::Family& fam, double* forces);
 void elastic_plastic_hardening_3d_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
 void elastic_plastic_hardening_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void elastic_plastic_hardening_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
 void elastic_plastic_hardening_3d_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void elastic_plastic_hardening_3d_intact_update(const pd::abi::Family& fam, double* history_out, double* particle_history_out);
 void elastic_plastic_hardening_3d_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);

@@ -230,6 +230,76 @@ void lps_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// lps_plane_strain_damaged_sensitivity: per bond 9 add, 33 mul, 1 div, 0 call; per family 0 add, 5 mul, 2 div, 0 call
+void lps_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p1 = 2.0 * s_theta;
+  const double p2 = 1.0 / s_m;
+  const double p3 = p1 * p2 * V0;
+  const double p4 = p2 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b5 = p3 * sf * V * alpha * w;
+    const double b6 = b5 * xi_0;
+    const double b7 = b5 * xi_1;
+    const double b8 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b9 = p4 * (b8 * xi_0 - p1 * xi_0) * sf * V * alpha * w;
+    const double b10 = p4 * (b8 * xi_1 - p1 * xi_1) * sf * V * alpha * w;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane1[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane2[lane] += b7;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b9;
+    lane3[lane] += b9;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b10;
+    lane4[lane] += b10;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // lps_plane_strain_damaged_energy: per bond 7 add, 17 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -612,6 +682,74 @@ void lps_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// lps_plane_strain_intact_sensitivity: per bond 9 add, 29 mul, 1 div, 0 call; per family 0 add, 5 mul, 2 div, 0 call
+void lps_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p1 = 2.0 * s_theta;
+  const double p2 = 1.0 / s_m;
+  const double p3 = p1 * p2 * V0;
+  const double p4 = p2 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b5 = p3 * sf * V * w;
+    const double b6 = b5 * xi_0;
+    const double b7 = b5 * xi_1;
+    const double b8 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b9 = p4 * (b8 * xi_0 - p1 * xi_0) * sf * V * w;
+    const double b10 = p4 * (b8 * xi_1 - p1 * xi_1) * sf * V * w;
+    dfdp[(k + 1) * 2 + 0] = -b6;
+    lane1[lane] += b6;
+    dfdp[(k + 1) * 2 + 1] = -b7;
+    lane2[lane] += b7;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b9;
+    lane3[lane] += b9;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b10;
+    lane4[lane] += b10;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // lps_plane_strain_intact_energy: per bond 7 add, 15 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -815,6 +953,8 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.damaged.tangent_ops = {10, 50, 1, 0};
   d.damaged.jvp = &lps_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {7, 42, 1, 0};
+  d.damaged.sensitivity = &lps_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {9, 33, 1, 0};
   d.damaged.energy = &lps_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_plane_strain_damaged_outputs;
   d.damaged.form = &lps_plane_strain_damaged_form;
@@ -825,6 +965,8 @@ pd::abi::LawDescriptor lps_plane_strain_descriptor() {
   d.intact.tangent_ops = {10, 44, 1, 0};
   d.intact.jvp = &lps_plane_strain_intact_jvp;
   d.intact.jvp_ops = {7, 37, 1, 0};
+  d.intact.sensitivity = &lps_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {9, 29, 1, 0};
   d.intact.energy = &lps_plane_strain_intact_energy;
   d.intact.outputs = &lps_plane_strain_intact_outputs;
   d.intact.form = &lps_plane_strain_intact_form;
@@ -1094,6 +1236,90 @@ void lps_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_3d_damaged_sensitivity: per bond 15 add, 44 mul, 1 div, 0 call; per family 0 add, 5 mul, 2 div, 0 call
+void lps_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p1 = 3.0 * s_theta;
+  const double p2 = 1.0 / s_m;
+  const double p3 = p1 * p2 * V0;
+  const double p4 = p2 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b5 = p3 * sf * V * alpha * w;
+    const double b6 = b5 * xi_0;
+    const double b7 = b5 * xi_1;
+    const double b8 = b5 * xi_2;
+    const double b9 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b10 = p4 * (b9 * xi_0 - p1 * xi_0) * sf * V * alpha * w;
+    const double b11 = p4 * (b9 * xi_1 - p1 * xi_1) * sf * V * alpha * w;
+    const double b12 = p4 * (b9 * xi_2 - p1 * xi_2) * sf * V * alpha * w;
+    dfdp[(k + 1) * 3 + 0] = -b6;
+    lane1[lane] += b6;
+    dfdp[(k + 1) * 3 + 1] = -b7;
+    lane2[lane] += b7;
+    dfdp[(k + 1) * 3 + 2] = -b8;
+    lane3[lane] += b8;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b10;
+    lane4[lane] += b10;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b11;
+    lane5[lane] += b11;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b12;
+    lane6[lane] += b12;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // lps_3d_damaged_energy: per bond 12 add, 20 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
@@ -1594,6 +1820,88 @@ void lps_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df)
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// lps_3d_intact_sensitivity: per bond 15 add, 39 mul, 1 div, 0 call; per family 0 add, 5 mul, 2 div, 0 call
+void lps_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p1 = 3.0 * s_theta;
+  const double p2 = 1.0 / s_m;
+  const double p3 = p1 * p2 * V0;
+  const double p4 = p2 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b5 = p3 * sf * V * w;
+    const double b6 = b5 * xi_0;
+    const double b7 = b5 * xi_1;
+    const double b8 = b5 * xi_2;
+    const double b9 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b10 = p4 * (b9 * xi_0 - p1 * xi_0) * sf * V * w;
+    const double b11 = p4 * (b9 * xi_1 - p1 * xi_1) * sf * V * w;
+    const double b12 = p4 * (b9 * xi_2 - p1 * xi_2) * sf * V * w;
+    dfdp[(k + 1) * 3 + 0] = -b6;
+    lane1[lane] += b6;
+    dfdp[(k + 1) * 3 + 1] = -b7;
+    lane2[lane] += b7;
+    dfdp[(k + 1) * 3 + 2] = -b8;
+    lane3[lane] += b8;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b10;
+    lane4[lane] += b10;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b11;
+    lane5[lane] += b11;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b12;
+    lane6[lane] += b12;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // lps_3d_intact_energy: per bond 12 add, 18 mul, 1 div, 0 call; per family 2 add, 6 mul, 2 div, 0 call
 double lps_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -1871,6 +2179,8 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.damaged.tangent_ops = {16, 66, 1, 0};
   d.damaged.jvp = &lps_3d_damaged_jvp;
   d.damaged.jvp_ops = {14, 66, 1, 0};
+  d.damaged.sensitivity = &lps_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {15, 44, 1, 0};
   d.damaged.energy = &lps_3d_damaged_energy;
   d.damaged.outputs = &lps_3d_damaged_outputs;
   d.damaged.form = &lps_3d_damaged_form;
@@ -1881,6 +2191,8 @@ pd::abi::LawDescriptor lps_3d_descriptor() {
   d.intact.tangent_ops = {16, 59, 1, 0};
   d.intact.jvp = &lps_3d_intact_jvp;
   d.intact.jvp_ops = {14, 59, 1, 0};
+  d.intact.sensitivity = &lps_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {15, 39, 1, 0};
   d.intact.energy = &lps_3d_intact_energy;
   d.intact.outputs = &lps_3d_intact_outputs;
   d.intact.form = &lps_3d_intact_form;
@@ -2204,6 +2516,97 @@ void lps_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, const do
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_corrected_plane_strain_damaged_sensitivity: per bond 13 add, 45 mul, 1 div, 0 call; per family 12 add, 28 mul, 3 div, 0 call
+void lps_corrected_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p17 = 2.0 * s_theta;
+  const double p18 = 1.0 / s_m;
+  const double p19 = p17 * p18 * V0;
+  const double p20 = p18 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b21 = p11 * xi_0 + p14 * xi_1;
+    const double b22 = p19 * b21 * sf * V * alpha * w;
+    const double b23 = p15 * xi_0 + p16 * xi_1;
+    const double b24 = p19 * b23 * sf * V * alpha * w;
+    const double b25 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b26 = p20 * (b25 * xi_0 - p17 * b21) * sf * V * alpha * w;
+    const double b27 = p20 * (b25 * xi_1 - p17 * b23) * sf * V * alpha * w;
+    dfdp[(k + 1) * 2 + 0] = -b22;
+    lane1[lane] += b22;
+    dfdp[(k + 1) * 2 + 1] = -b24;
+    lane2[lane] += b24;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b26;
+    lane3[lane] += b26;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b27;
+    lane4[lane] += b27;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // lps_corrected_plane_strain_damaged_energy: per bond 9 add, 21 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
@@ -2723,6 +3126,95 @@ void lps_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, const dou
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// lps_corrected_plane_strain_intact_sensitivity: per bond 13 add, 40 mul, 1 div, 0 call; per family 12 add, 28 mul, 3 div, 0 call
+void lps_corrected_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p2 = 1.0000000000000001e-16 * (p1 * p1);
+  const double p3 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p4 = p2 + p3 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p5 = p2 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p3;
+  const double p6 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p7 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p8 = 1.0 / (p4 * p5 - p6 * p7);
+  const double p9 = p8 * p4;
+  const double p10 = p8 * p6;
+  const double p11 = p9 * s_dilatation_moment_0_0 - p10 * s_dilatation_moment_0_1;
+  const double p12 = p8 * p5;
+  const double p13 = p8 * p7;
+  const double p14 = p12 * s_dilatation_moment_0_1 - p13 * s_dilatation_moment_0_0;
+  const double p15 = p9 * s_dilatation_moment_1_0 - p10 * s_dilatation_moment_1_1;
+  const double p16 = p12 * s_dilatation_moment_1_1 - p13 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((p11 * xi_0 + p14 * xi_1) * (Y_0 - xi_0) + (p15 * xi_0 + p16 * xi_1) * (Y_1 - xi_1)) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p17 = 2.0 * s_theta;
+  const double p18 = 1.0 / s_m;
+  const double p19 = p17 * p18 * V0;
+  const double p20 = p18 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b21 = p11 * xi_0 + p14 * xi_1;
+    const double b22 = p19 * b21 * sf * V * w;
+    const double b23 = p15 * xi_0 + p16 * xi_1;
+    const double b24 = p19 * b23 * sf * V * w;
+    const double b25 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b26 = p20 * (b25 * xi_0 - p17 * b21) * sf * V * w;
+    const double b27 = p20 * (b25 * xi_1 - p17 * b23) * sf * V * w;
+    dfdp[(k + 1) * 2 + 0] = -b22;
+    lane1[lane] += b22;
+    dfdp[(k + 1) * 2 + 1] = -b24;
+    lane2[lane] += b24;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b26;
+    lane3[lane] += b26;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b27;
+    lane4[lane] += b27;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // lps_corrected_plane_strain_intact_energy: per bond 9 add, 19 mul, 1 div, 0 call; per family 14 add, 29 mul, 3 div, 0 call
 double lps_corrected_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -2966,6 +3458,8 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.damaged.tangent_ops = {14, 65, 1, 0};
   d.damaged.jvp = &lps_corrected_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {11, 53, 1, 0};
+  d.damaged.sensitivity = &lps_corrected_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {13, 45, 1, 0};
   d.damaged.energy = &lps_corrected_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_corrected_plane_strain_damaged_form;
@@ -2976,6 +3470,8 @@ pd::abi::LawDescriptor lps_corrected_plane_strain_descriptor() {
   d.intact.tangent_ops = {14, 57, 1, 0};
   d.intact.jvp = &lps_corrected_plane_strain_intact_jvp;
   d.intact.jvp_ops = {11, 47, 1, 0};
+  d.intact.sensitivity = &lps_corrected_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {13, 40, 1, 0};
   d.intact.energy = &lps_corrected_plane_strain_intact_energy;
   d.intact.outputs = &lps_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_corrected_plane_strain_intact_form;
@@ -3449,6 +3945,138 @@ void lps_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, 
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_corrected_3d_damaged_sensitivity: per bond 27 add, 70 mul, 1 div, 0 call; per family 53 add, 88 mul, 3 div, 0 call
+void lps_corrected_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p38 = 3.0 * s_theta;
+  const double p39 = 1.0 / s_m;
+  const double p40 = p38 * p39 * V0;
+  const double p41 = p39 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b42 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b43 = p40 * b42 * sf * V * alpha * w;
+    const double b44 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b45 = p40 * b44 * sf * V * alpha * w;
+    const double b46 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b47 = p40 * b46 * sf * V * alpha * w;
+    const double b48 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b49 = p41 * (b48 * xi_0 - p38 * b42) * sf * V * alpha * w;
+    const double b50 = p41 * (b48 * xi_1 - p38 * b44) * sf * V * alpha * w;
+    const double b51 = p41 * (b48 * xi_2 - p38 * b46) * sf * V * alpha * w;
+    dfdp[(k + 1) * 3 + 0] = -b43;
+    lane1[lane] += b43;
+    dfdp[(k + 1) * 3 + 1] = -b45;
+    lane2[lane] += b45;
+    dfdp[(k + 1) * 3 + 2] = -b47;
+    lane3[lane] += b47;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b49;
+    lane4[lane] += b49;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b50;
+    lane5[lane] += b50;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b51;
+    lane6[lane] += b51;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // lps_corrected_3d_damaged_energy: per bond 18 add, 29 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
@@ -4244,6 +4872,136 @@ void lps_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, d
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// lps_corrected_3d_intact_sensitivity: per bond 27 add, 63 mul, 1 div, 0 call; per family 53 add, 88 mul, 3 div, 0 call
+void lps_corrected_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double s_dilatation_moment_2_0 = fam.moments[7];
+  const double s_dilatation_moment_0_1 = fam.moments[2];
+  const double s_dilatation_moment_2_1 = fam.moments[8];
+  const double s_dilatation_moment_1_1 = fam.moments[5];
+  const double s_dilatation_moment_2_2 = fam.moments[9];
+  const double s_dilatation_moment_1_0 = fam.moments[4];
+  const double s_dilatation_moment_0_0 = fam.moments[1];
+  const double s_dilatation_moment_1_2 = fam.moments[6];
+  const double s_dilatation_moment_0_2 = fam.moments[3];
+  const double V0 = fam.V0;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  const double p1 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p2 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p3 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p4 = 1.0000000000000001e-16 * (p3 * p3);
+  const double p5 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p6 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p7 = p4 + p5 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p6;
+  const double p8 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p9 = p1 * p2 - p7 * p8;
+  const double p10 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p11 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p12 = p4 + p11 + p6 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p13 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p14 = p12 * p7 - p1 * p13;
+  const double p15 = p4 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p5 + p11;
+  const double p16 = p12 * p2;
+  const double p17 = p8 * p13;
+  const double p18 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p19 = 1.0 / (p9 * p10 + p14 * p15 - (p16 - p17) * p18);
+  const double p20 = p19 * p14;
+  const double p21 = (p17 - p16) * p19;
+  const double p22 = p19 * p9;
+  const double p23 = p20 * s_dilatation_moment_0_0 + p21 * s_dilatation_moment_0_1 + p22 * s_dilatation_moment_0_2;
+  const double p24 = (p1 * p10 - p12 * p18) * p19;
+  const double p25 = (p12 * p15 - p8 * p10) * p19;
+  const double p26 = (p8 * p18 - p15 * p1) * p19;
+  const double p27 = p24 * s_dilatation_moment_0_0 + p25 * s_dilatation_moment_0_1 + p26 * s_dilatation_moment_0_2;
+  const double p28 = (p13 * p18 - p7 * p10) * p19;
+  const double p29 = (p2 * p10 - p15 * p13) * p19;
+  const double p30 = (p7 * p15 - p2 * p18) * p19;
+  const double p31 = p28 * s_dilatation_moment_0_0 + p29 * s_dilatation_moment_0_1 + p30 * s_dilatation_moment_0_2;
+  const double p32 = p20 * s_dilatation_moment_1_0 + p21 * s_dilatation_moment_1_1 + p22 * s_dilatation_moment_1_2;
+  const double p33 = p24 * s_dilatation_moment_1_0 + p25 * s_dilatation_moment_1_1 + p26 * s_dilatation_moment_1_2;
+  const double p34 = p28 * s_dilatation_moment_1_0 + p29 * s_dilatation_moment_1_1 + p30 * s_dilatation_moment_1_2;
+  const double p35 = p20 * s_dilatation_moment_2_0 + p21 * s_dilatation_moment_2_1 + p22 * s_dilatation_moment_2_2;
+  const double p36 = p24 * s_dilatation_moment_2_0 + p25 * s_dilatation_moment_2_1 + p26 * s_dilatation_moment_2_2;
+  const double p37 = p28 * s_dilatation_moment_2_0 + p29 * s_dilatation_moment_2_1 + p30 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    lane0[lane] += p0 * ((p23 * xi_0 + p27 * xi_1 + p31 * xi_2) * (Y_0 - xi_0) + (p32 * xi_0 + p33 * xi_1 + p34 * xi_2) * (Y_1 - xi_1) + (p35 * xi_0 + p36 * xi_1 + p37 * xi_2) * (Y_2 - xi_2)) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p38 = 3.0 * s_theta;
+  const double p39 = 1.0 / s_m;
+  const double p40 = p38 * p39 * V0;
+  const double p41 = p39 * V0;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b42 = p23 * xi_0 + p27 * xi_1 + p31 * xi_2;
+    const double b43 = p40 * b42 * sf * V * w;
+    const double b44 = p32 * xi_0 + p33 * xi_1 + p34 * xi_2;
+    const double b45 = p40 * b44 * sf * V * w;
+    const double b46 = p35 * xi_0 + p36 * xi_1 + p37 * xi_2;
+    const double b47 = p40 * b46 * sf * V * w;
+    const double b48 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b49 = p41 * (b48 * xi_0 - p38 * b42) * sf * V * w;
+    const double b50 = p41 * (b48 * xi_1 - p38 * b44) * sf * V * w;
+    const double b51 = p41 * (b48 * xi_2 - p38 * b46) * sf * V * w;
+    dfdp[(k + 1) * 3 + 0] = -b43;
+    lane1[lane] += b43;
+    dfdp[(k + 1) * 3 + 1] = -b45;
+    lane2[lane] += b45;
+    dfdp[(k + 1) * 3 + 2] = -b47;
+    lane3[lane] += b47;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b49;
+    lane4[lane] += b49;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b50;
+    lane5[lane] += b50;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b51;
+    lane6[lane] += b51;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // lps_corrected_3d_intact_energy: per bond 18 add, 27 mul, 1 div, 0 call; per family 55 add, 89 mul, 3 div, 0 call
 double lps_corrected_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -4613,6 +5371,8 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.damaged.tangent_ops = {28, 98, 1, 0};
   d.damaged.jvp = &lps_corrected_3d_damaged_jvp;
   d.damaged.jvp_ops = {26, 90, 1, 0};
+  d.damaged.sensitivity = &lps_corrected_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {27, 70, 1, 0};
   d.damaged.energy = &lps_corrected_3d_damaged_energy;
   d.damaged.outputs = &lps_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_corrected_3d_damaged_form;
@@ -4623,6 +5383,8 @@ pd::abi::LawDescriptor lps_corrected_3d_descriptor() {
   d.intact.tangent_ops = {28, 87, 1, 0};
   d.intact.jvp = &lps_corrected_3d_intact_jvp;
   d.intact.jvp_ops = {26, 81, 1, 0};
+  d.intact.sensitivity = &lps_corrected_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {27, 63, 1, 0};
   d.intact.energy = &lps_corrected_3d_intact_energy;
   d.intact.outputs = &lps_corrected_3d_intact_outputs;
   d.intact.form = &lps_corrected_3d_intact_form;
@@ -4847,6 +5609,80 @@ void lps_paper_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_plane_strain_damaged_sensitivity: per bond 10 add, 35 mul, 3 div, 1 call; per family 0 add, 11 mul, 1 div, 0 call
+void lps_paper_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = p0 * p0 * p0;
+  const double p4 = 0.9549296585513721 * s_theta * p3 * V0;
+  const double p5 = 0.47746482927568606 * p3 * V0;
+  const double p6 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b8 = 1.0 / b7;
+    const double b9 = p4 * b8 * sf * V * alpha;
+    const double b10 = b9 * xi_0;
+    const double b11 = b9 * xi_1;
+    const double b12 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b13 = p5 * (b12 * xi_0 - p6 * xi_0) * b8 * sf * V * alpha;
+    const double b14 = p5 * (b12 * xi_1 - p6 * xi_1) * b8 * sf * V * alpha;
+    dfdp[(k + 1) * 2 + 0] = -b10;
+    lane1[lane] += b10;
+    dfdp[(k + 1) * 2 + 1] = -b11;
+    lane2[lane] += b11;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b13;
+    lane3[lane] += b13;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b14;
+    lane4[lane] += b14;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // lps_paper_plane_strain_damaged_energy: per bond 4 add, 15 mul, 2 div, 1 call; per family 2 add, 10 mul, 1 div, 0 call
@@ -5219,6 +6055,78 @@ void lps_paper_plane_strain_intact_jvp(const pd::abi::Family& fam, const double*
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// lps_paper_plane_strain_intact_sensitivity: per bond 10 add, 31 mul, 3 div, 1 call; per family 0 add, 11 mul, 1 div, 0 call
+void lps_paper_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b2;
+    lane0[lane] += p1 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / b2) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p3 = p0 * p0 * p0;
+  const double p4 = 0.9549296585513721 * s_theta * p3 * V0;
+  const double p5 = 0.47746482927568606 * p3 * V0;
+  const double p6 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b7 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b8 = 1.0 / b7;
+    const double b9 = p4 * b8 * sf * V;
+    const double b10 = b9 * xi_0;
+    const double b11 = b9 * xi_1;
+    const double b12 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b13 = p5 * (b12 * xi_0 - p6 * xi_0) * b8 * sf * V;
+    const double b14 = p5 * (b12 * xi_1 - p6 * xi_1) * b8 * sf * V;
+    dfdp[(k + 1) * 2 + 0] = -b10;
+    lane1[lane] += b10;
+    dfdp[(k + 1) * 2 + 1] = -b11;
+    lane2[lane] += b11;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b13;
+    lane3[lane] += b13;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b14;
+    lane4[lane] += b14;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // lps_paper_plane_strain_intact_energy: per bond 4 add, 13 mul, 2 div, 1 call; per family 2 add, 10 mul, 1 div, 0 call
 double lps_paper_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -5418,6 +6326,8 @@ pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   d.damaged.tangent_ops = {11, 52, 3, 1};
   d.damaged.jvp = &lps_paper_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {8, 43, 3, 1};
+  d.damaged.sensitivity = &lps_paper_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {10, 35, 3, 1};
   d.damaged.energy = &lps_paper_plane_strain_damaged_energy;
   d.damaged.outputs = &lps_paper_plane_strain_damaged_outputs;
   d.damaged.form = &lps_paper_plane_strain_damaged_form;
@@ -5428,6 +6338,8 @@ pd::abi::LawDescriptor lps_paper_plane_strain_descriptor() {
   d.intact.tangent_ops = {11, 46, 3, 1};
   d.intact.jvp = &lps_paper_plane_strain_intact_jvp;
   d.intact.jvp_ops = {8, 38, 3, 1};
+  d.intact.sensitivity = &lps_paper_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {10, 31, 3, 1};
   d.intact.energy = &lps_paper_plane_strain_intact_energy;
   d.intact.outputs = &lps_paper_plane_strain_intact_outputs;
   d.intact.form = &lps_paper_plane_strain_intact_form;
@@ -5696,6 +6608,95 @@ void lps_paper_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, doub
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_3d_damaged_sensitivity: per bond 17 add, 47 mul, 3 div, 1 call; per family 0 add, 10 mul, 1 div, 0 call
+void lps_paper_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = p1 * p1;
+  const double p5 = 0.954929658551372 * s_theta * p4 * V0;
+  const double p6 = 0.3183098861837907 * p4 * V0;
+  const double p7 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b9 = 1.0 / b8;
+    const double b10 = p5 * b9 * sf * V * alpha;
+    const double b11 = b10 * xi_0;
+    const double b12 = b10 * xi_1;
+    const double b13 = b10 * xi_2;
+    const double b14 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b15 = p6 * (b14 * xi_0 - p7 * xi_0) * b9 * sf * V * alpha;
+    const double b16 = p6 * (b14 * xi_1 - p7 * xi_1) * b9 * sf * V * alpha;
+    const double b17 = p6 * (b14 * xi_2 - p7 * xi_2) * b9 * sf * V * alpha;
+    dfdp[(k + 1) * 3 + 0] = -b11;
+    lane1[lane] += b11;
+    dfdp[(k + 1) * 3 + 1] = -b12;
+    lane2[lane] += b12;
+    dfdp[(k + 1) * 3 + 2] = -b13;
+    lane3[lane] += b13;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b15;
+    lane4[lane] += b15;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b16;
+    lane5[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b17;
+    lane6[lane] += b17;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // lps_paper_3d_damaged_energy: per bond 7 add, 17 mul, 2 div, 1 call; per family 2 add, 9 mul, 1 div, 0 call
@@ -6186,6 +7187,93 @@ void lps_paper_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, doubl
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// lps_paper_3d_intact_sensitivity: per bond 17 add, 42 mul, 3 div, 1 call; per family 0 add, 10 mul, 1 div, 0 call
+void lps_paper_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b3 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b3;
+    lane0[lane] += p2 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / b3) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = p1 * p1;
+  const double p5 = 0.954929658551372 * s_theta * p4 * V0;
+  const double p6 = 0.3183098861837907 * p4 * V0;
+  const double p7 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b9 = 1.0 / b8;
+    const double b10 = p5 * b9 * sf * V;
+    const double b11 = b10 * xi_0;
+    const double b12 = b10 * xi_1;
+    const double b13 = b10 * xi_2;
+    const double b14 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b15 = p6 * (b14 * xi_0 - p7 * xi_0) * b9 * sf * V;
+    const double b16 = p6 * (b14 * xi_1 - p7 * xi_1) * b9 * sf * V;
+    const double b17 = p6 * (b14 * xi_2 - p7 * xi_2) * b9 * sf * V;
+    dfdp[(k + 1) * 3 + 0] = -b11;
+    lane1[lane] += b11;
+    dfdp[(k + 1) * 3 + 1] = -b12;
+    lane2[lane] += b12;
+    dfdp[(k + 1) * 3 + 2] = -b13;
+    lane3[lane] += b13;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b15;
+    lane4[lane] += b15;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b16;
+    lane5[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b17;
+    lane6[lane] += b17;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // lps_paper_3d_intact_energy: per bond 7 add, 15 mul, 2 div, 1 call; per family 2 add, 9 mul, 1 div, 0 call
 double lps_paper_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -6459,6 +7547,8 @@ pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   d.damaged.tangent_ops = {18, 69, 3, 1};
   d.damaged.jvp = &lps_paper_3d_damaged_jvp;
   d.damaged.jvp_ops = {16, 67, 3, 1};
+  d.damaged.sensitivity = &lps_paper_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {17, 47, 3, 1};
   d.damaged.energy = &lps_paper_3d_damaged_energy;
   d.damaged.outputs = &lps_paper_3d_damaged_outputs;
   d.damaged.form = &lps_paper_3d_damaged_form;
@@ -6469,6 +7559,8 @@ pd::abi::LawDescriptor lps_paper_3d_descriptor() {
   d.intact.tangent_ops = {18, 62, 3, 1};
   d.intact.jvp = &lps_paper_3d_intact_jvp;
   d.intact.jvp_ops = {16, 60, 3, 1};
+  d.intact.sensitivity = &lps_paper_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {17, 42, 3, 1};
   d.intact.energy = &lps_paper_3d_intact_energy;
   d.intact.outputs = &lps_paper_3d_intact_outputs;
   d.intact.form = &lps_paper_3d_intact_form;
@@ -6790,6 +7882,100 @@ void lps_paper_corrected_plane_strain_damaged_jvp(const pd::abi::Family& fam, co
   }
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// lps_paper_corrected_plane_strain_damaged_sensitivity: per bond 12 add, 39 mul, 3 div, 1 call; per family 12 add, 34 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p19 = p0 * p0 * p0;
+  const double p20 = 0.9549296585513721 * s_theta * p19 * V0;
+  const double p21 = 0.47746482927568606 * p19 * V0;
+  const double p22 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b24 = 1.0 / b23;
+    const double b25 = p20 * b24 * sf * V * alpha;
+    const double b26 = b25 * xi_0;
+    const double b27 = b25 * xi_1;
+    const double b28 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b29 = p21 * (b28 * xi_0 - p22 * xi_0) * b24 * sf * V * alpha;
+    const double b30 = p21 * (b28 * xi_1 - p22 * xi_1) * b24 * sf * V * alpha;
+    dfdp[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    dfdp[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b29;
+    lane3[lane] += b29;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b30;
+    lane4[lane] += b30;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // lps_paper_corrected_plane_strain_damaged_outputs: per bond 6 add, 13 mul, 1 div, 1 call; per family 12 add, 26 mul, 2 div, 0 call
@@ -7239,6 +8425,98 @@ void lps_paper_corrected_plane_strain_intact_jvp(const pd::abi::Family& fam, con
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
 }
 
+// lps_paper_corrected_plane_strain_intact_sensitivity: per bond 12 add, 35 mul, 3 div, 1 call; per family 12 add, 34 mul, 2 div, 0 call
+void lps_paper_corrected_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_1 = fam.moments[3];
+  const double s_dilatation_moment_1_0 = fam.moments[2];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.9549296585513721 * (p0 * p0 * p0);
+  const double p2 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1;
+  const double p3 = 1.0000000000000001e-16 * (p2 * p2);
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p5 = p3 + p4 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1;
+  const double p6 = p3 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p4;
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0;
+  const double p8 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1;
+  const double p9 = 1.0 / (p5 * p6 - p7 * p8);
+  const double p10 = p9 * p5;
+  const double p11 = p9 * p7;
+  const double p12 = p10 * s_dilatation_moment_0_0 - p11 * s_dilatation_moment_0_1;
+  const double p13 = p9 * p6;
+  const double p14 = p9 * p8;
+  const double p15 = p13 * s_dilatation_moment_0_1 - p14 * s_dilatation_moment_0_0;
+  const double p16 = p10 * s_dilatation_moment_1_0 - p11 * s_dilatation_moment_1_1;
+  const double p17 = p13 * s_dilatation_moment_1_1 - p14 * s_dilatation_moment_1_0;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b18 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b18;
+    lane0[lane] += p1 * ((p12 * xi_0 + p15 * xi_1) * (Y_0 - xi_0) + (p16 * xi_0 + p17 * xi_1) * (Y_1 - xi_1)) * (1.0 / b18) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p19 = p0 * p0 * p0;
+  const double p20 = 0.9549296585513721 * s_theta * p19 * V0;
+  const double p21 = 0.47746482927568606 * p19 * V0;
+  const double p22 = 2.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b23 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b24 = 1.0 / b23;
+    const double b25 = p20 * b24 * sf * V;
+    const double b26 = b25 * xi_0;
+    const double b27 = b25 * xi_1;
+    const double b28 = 8.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1));
+    const double b29 = p21 * (b28 * xi_0 - p22 * xi_0) * b24 * sf * V;
+    const double b30 = p21 * (b28 * xi_1 - p22 * xi_1) * b24 * sf * V;
+    dfdp[(k + 1) * 2 + 0] = -b26;
+    lane1[lane] += b26;
+    dfdp[(k + 1) * 2 + 1] = -b27;
+    lane2[lane] += b27;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b29;
+    lane3[lane] += b29;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b30;
+    lane4[lane] += b30;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // lps_paper_corrected_plane_strain_intact_outputs: per bond 6 add, 12 mul, 1 div, 1 call; per family 12 add, 26 mul, 2 div, 0 call
 void lps_paper_corrected_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -7420,6 +8698,8 @@ pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   d.damaged.tangent_ops = {15, 64, 3, 1};
   d.damaged.jvp = &lps_paper_corrected_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {10, 47, 3, 1};
+  d.damaged.sensitivity = &lps_paper_corrected_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {12, 39, 3, 1};
   d.damaged.outputs = &lps_paper_corrected_plane_strain_damaged_outputs;
   d.damaged.form = &lps_paper_corrected_plane_strain_damaged_form;
   d.intact.moments = &lps_paper_corrected_plane_strain_intact_moments;
@@ -7429,6 +8709,8 @@ pd::abi::LawDescriptor lps_paper_corrected_plane_strain_descriptor() {
   d.intact.tangent_ops = {15, 57, 3, 1};
   d.intact.jvp = &lps_paper_corrected_plane_strain_intact_jvp;
   d.intact.jvp_ops = {10, 42, 3, 1};
+  d.intact.sensitivity = &lps_paper_corrected_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {12, 35, 3, 1};
   d.intact.outputs = &lps_paper_corrected_plane_strain_intact_outputs;
   d.intact.form = &lps_paper_corrected_plane_strain_intact_form;
   return d;
@@ -7902,6 +9184,141 @@ void lps_paper_corrected_3d_damaged_jvp(const pd::abi::Family& fam, const double
   df[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
   df[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// lps_paper_corrected_3d_damaged_sensitivity: per bond 23 add, 56 mul, 3 div, 1 call; per family 53 add, 93 mul, 2 div, 0 call
+void lps_paper_corrected_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p41 = p1 * p1;
+  const double p42 = 0.954929658551372 * s_theta * p41 * V0;
+  const double p43 = 0.3183098861837907 * p41 * V0;
+  const double p44 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b46 = 1.0 / b45;
+    const double b47 = p42 * b46 * sf * V * alpha;
+    const double b48 = b47 * xi_0;
+    const double b49 = b47 * xi_1;
+    const double b50 = b47 * xi_2;
+    const double b51 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b52 = p43 * (b51 * xi_0 - p44 * xi_0) * b46 * sf * V * alpha;
+    const double b53 = p43 * (b51 * xi_1 - p44 * xi_1) * b46 * sf * V * alpha;
+    const double b54 = p43 * (b51 * xi_2 - p44 * xi_2) * b46 * sf * V * alpha;
+    dfdp[(k + 1) * 3 + 0] = -b48;
+    lane1[lane] += b48;
+    dfdp[(k + 1) * 3 + 1] = -b49;
+    lane2[lane] += b49;
+    dfdp[(k + 1) * 3 + 2] = -b50;
+    lane3[lane] += b50;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b52;
+    lane4[lane] += b52;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b53;
+    lane5[lane] += b53;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b54;
+    lane6[lane] += b54;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // lps_paper_corrected_3d_damaged_outputs: per bond 13 add, 20 mul, 1 div, 1 call; per family 53 add, 86 mul, 2 div, 0 call
@@ -8601,6 +10018,139 @@ void lps_paper_corrected_3d_intact_jvp(const pd::abi::Family& fam, const double*
   df[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// lps_paper_corrected_3d_intact_sensitivity: per bond 23 add, 51 mul, 3 div, 1 call; per family 53 add, 93 mul, 2 div, 0 call
+void lps_paper_corrected_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double s_dilatation_moment_2_0 = fam.moments[6];
+  const double s_dilatation_moment_0_1 = fam.moments[1];
+  const double s_dilatation_moment_2_1 = fam.moments[7];
+  const double s_dilatation_moment_1_1 = fam.moments[4];
+  const double s_dilatation_moment_2_2 = fam.moments[8];
+  const double s_dilatation_moment_1_0 = fam.moments[3];
+  const double s_dilatation_moment_0_0 = fam.moments[0];
+  const double s_dilatation_moment_1_2 = fam.moments[5];
+  const double s_dilatation_moment_0_2 = fam.moments[2];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = p0 * p0;
+  const double p2 = 0.954929658551372 * (p1 * p1);
+  const double p3 = s_dilatation_moment_2_0 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_2_1;
+  const double p4 = s_dilatation_moment_1_0 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_0 * s_dilatation_moment_1_2;
+  const double p5 = s_dilatation_moment_0_0 + s_dilatation_moment_1_1 + s_dilatation_moment_2_2;
+  const double p6 = 1.0000000000000001e-16 * (p5 * p5);
+  const double p7 = s_dilatation_moment_1_0 * s_dilatation_moment_0_1;
+  const double p8 = s_dilatation_moment_2_1 * s_dilatation_moment_1_2;
+  const double p9 = p6 + p7 + s_dilatation_moment_1_1 * s_dilatation_moment_1_1 + p8;
+  const double p10 = s_dilatation_moment_2_0 * s_dilatation_moment_0_0 + s_dilatation_moment_2_1 * s_dilatation_moment_1_0 + s_dilatation_moment_2_2 * s_dilatation_moment_2_0;
+  const double p11 = p3 * p4 - p9 * p10;
+  const double p12 = s_dilatation_moment_0_2 * s_dilatation_moment_0_0 + s_dilatation_moment_1_2 * s_dilatation_moment_0_1 + s_dilatation_moment_2_2 * s_dilatation_moment_0_2;
+  const double p13 = s_dilatation_moment_2_0 * s_dilatation_moment_0_2;
+  const double p14 = p6 + p13 + p8 + s_dilatation_moment_2_2 * s_dilatation_moment_2_2;
+  const double p15 = s_dilatation_moment_1_0 * s_dilatation_moment_0_2 + s_dilatation_moment_1_2 * s_dilatation_moment_1_1 + s_dilatation_moment_2_2 * s_dilatation_moment_1_2;
+  const double p16 = p14 * p9 - p3 * p15;
+  const double p17 = p6 + s_dilatation_moment_0_0 * s_dilatation_moment_0_0 + p7 + p13;
+  const double p18 = p14 * p4;
+  const double p19 = p10 * p15;
+  const double p20 = s_dilatation_moment_0_1 * s_dilatation_moment_0_0 + s_dilatation_moment_1_1 * s_dilatation_moment_0_1 + s_dilatation_moment_2_1 * s_dilatation_moment_0_2;
+  const double p21 = 1.0 / (p11 * p12 + p16 * p17 - (p18 - p19) * p20);
+  const double p22 = p21 * p16;
+  const double p23 = (p19 - p18) * p21;
+  const double p24 = p21 * p11;
+  const double p25 = p22 * s_dilatation_moment_0_0 + p23 * s_dilatation_moment_0_1 + p24 * s_dilatation_moment_0_2;
+  const double p26 = (p3 * p12 - p14 * p20) * p21;
+  const double p27 = (p14 * p17 - p10 * p12) * p21;
+  const double p28 = (p10 * p20 - p17 * p3) * p21;
+  const double p29 = p26 * s_dilatation_moment_0_0 + p27 * s_dilatation_moment_0_1 + p28 * s_dilatation_moment_0_2;
+  const double p30 = (p15 * p20 - p9 * p12) * p21;
+  const double p31 = (p4 * p12 - p17 * p15) * p21;
+  const double p32 = (p9 * p17 - p4 * p20) * p21;
+  const double p33 = p30 * s_dilatation_moment_0_0 + p31 * s_dilatation_moment_0_1 + p32 * s_dilatation_moment_0_2;
+  const double p34 = p22 * s_dilatation_moment_1_0 + p23 * s_dilatation_moment_1_1 + p24 * s_dilatation_moment_1_2;
+  const double p35 = p26 * s_dilatation_moment_1_0 + p27 * s_dilatation_moment_1_1 + p28 * s_dilatation_moment_1_2;
+  const double p36 = p30 * s_dilatation_moment_1_0 + p31 * s_dilatation_moment_1_1 + p32 * s_dilatation_moment_1_2;
+  const double p37 = p22 * s_dilatation_moment_2_0 + p23 * s_dilatation_moment_2_1 + p24 * s_dilatation_moment_2_2;
+  const double p38 = p26 * s_dilatation_moment_2_0 + p27 * s_dilatation_moment_2_1 + p28 * s_dilatation_moment_2_2;
+  const double p39 = p30 * s_dilatation_moment_2_0 + p31 * s_dilatation_moment_2_1 + p32 * s_dilatation_moment_2_2;
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b40 = std::sqrt(xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2);
+    cache[static_cast<std::size_t>(k) * 1 + 0] = b40;
+    lane0[lane] += p2 * ((p25 * xi_0 + p29 * xi_1 + p33 * xi_2) * (Y_0 - xi_0) + (p34 * xi_0 + p35 * xi_1 + p36 * xi_2) * (Y_1 - xi_1) + (p37 * xi_0 + p38 * xi_1 + p39 * xi_2) * (Y_2 - xi_2)) * (1.0 / b40) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p41 = p1 * p1;
+  const double p42 = 0.954929658551372 * s_theta * p41 * V0;
+  const double p43 = 0.3183098861837907 * p41 * V0;
+  const double p44 = 3.0 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b45 = cache[static_cast<std::size_t>(k) * 1 + 0];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b46 = 1.0 / b45;
+    const double b47 = p42 * b46 * sf * V;
+    const double b48 = b47 * xi_0;
+    const double b49 = b47 * xi_1;
+    const double b50 = b47 * xi_2;
+    const double b51 = 15.0 * ((Y_0 - xi_0) * xi_0 + (Y_1 - xi_1) * xi_1 + (Y_2 - xi_2) * xi_2) * (1.0 / (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2));
+    const double b52 = p43 * (b51 * xi_0 - p44 * xi_0) * b46 * sf * V;
+    const double b53 = p43 * (b51 * xi_1 - p44 * xi_1) * b46 * sf * V;
+    const double b54 = p43 * (b51 * xi_2 - p44 * xi_2) * b46 * sf * V;
+    dfdp[(k + 1) * 3 + 0] = -b48;
+    lane1[lane] += b48;
+    dfdp[(k + 1) * 3 + 1] = -b49;
+    lane2[lane] += b49;
+    dfdp[(k + 1) * 3 + 2] = -b50;
+    lane3[lane] += b50;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b52;
+    lane4[lane] += b52;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b53;
+    lane5[lane] += b53;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b54;
+    lane6[lane] += b54;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // lps_paper_corrected_3d_intact_outputs: per bond 13 add, 19 mul, 1 div, 1 call; per family 53 add, 86 mul, 2 div, 0 call
 void lps_paper_corrected_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -8879,6 +10429,8 @@ pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   d.damaged.tangent_ops = {30, 95, 3, 1};
   d.damaged.jvp = &lps_paper_corrected_3d_damaged_jvp;
   d.damaged.jvp_ops = {22, 76, 3, 1};
+  d.damaged.sensitivity = &lps_paper_corrected_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {23, 56, 3, 1};
   d.damaged.outputs = &lps_paper_corrected_3d_damaged_outputs;
   d.damaged.form = &lps_paper_corrected_3d_damaged_form;
   d.intact.moments = &lps_paper_corrected_3d_intact_moments;
@@ -8888,6 +10440,8 @@ pd::abi::LawDescriptor lps_paper_corrected_3d_descriptor() {
   d.intact.tangent_ops = {30, 86, 3, 1};
   d.intact.jvp = &lps_paper_corrected_3d_intact_jvp;
   d.intact.jvp_ops = {22, 69, 3, 1};
+  d.intact.sensitivity = &lps_paper_corrected_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {23, 51, 3, 1};
   d.intact.outputs = &lps_paper_corrected_3d_intact_outputs;
   d.intact.form = &lps_paper_corrected_3d_intact_form;
   return d;

@@ -327,6 +327,91 @@ void oterkus_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// oterkus_plane_strain_damaged_sensitivity: per bond 11 add, 43 mul, 5 div, 2 call; per family 0 add, 10 mul, 3 div, 0 call
+void oterkus_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m1;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = 2.0 * V0;
+  const double p7 = 1.0 / s_mx;
+  const double p8 = 0.5 * p7;
+  const double p9 = 0.25 * s_theta * p7 * s_m2 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b13 = 1.0 / b10;
+    const double b14 = p5 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b13 * sf * V * alpha * w;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = 1.0 / b11;
+    const double b18 = p6 * (p8 * (b11 - b10) - p9 * b12 * b17 * b13) * b17 * sf * V * alpha * w;
+    const double b19 = b18 * Y_0;
+    const double b20 = b18 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b19;
+    lane3[lane] += b19;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b20;
+    lane4[lane] += b20;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // oterkus_plane_strain_damaged_outputs: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -759,6 +844,89 @@ void oterkus_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// oterkus_plane_strain_intact_sensitivity: per bond 11 add, 40 mul, 5 div, 2 call; per family 0 add, 10 mul, 3 div, 0 call
+void oterkus_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m1;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = 2.0 * V0;
+  const double p7 = 1.0 / s_mx;
+  const double p8 = 0.5 * p7;
+  const double p9 = 0.25 * s_theta * p7 * s_m2 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b13 = 1.0 / b10;
+    const double b14 = p5 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b13 * sf * V * w;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = 1.0 / b11;
+    const double b18 = p6 * (p8 * (b11 - b10) - p9 * b12 * b17 * b13) * b17 * sf * V * w;
+    const double b19 = b18 * Y_0;
+    const double b20 = b18 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b19;
+    lane3[lane] += b19;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b20;
+    lane4[lane] += b20;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // oterkus_plane_strain_intact_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -917,6 +1085,8 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.damaged.tangent_ops = {25, 108, 5, 2};
   d.damaged.jvp = &oterkus_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {30, 109, 6, 2};
+  d.damaged.sensitivity = &oterkus_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {11, 43, 5, 2};
   d.damaged.outputs = &oterkus_plane_strain_damaged_outputs;
   d.damaged.form = &oterkus_plane_strain_damaged_form;
   d.intact.moments = &oterkus_plane_strain_intact_moments;
@@ -926,6 +1096,8 @@ pd::abi::LawDescriptor oterkus_plane_strain_descriptor() {
   d.intact.tangent_ops = {25, 98, 5, 2};
   d.intact.jvp = &oterkus_plane_strain_intact_jvp;
   d.intact.jvp_ops = {30, 100, 6, 2};
+  d.intact.sensitivity = &oterkus_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {11, 40, 5, 2};
   d.intact.outputs = &oterkus_plane_strain_intact_outputs;
   d.intact.form = &oterkus_plane_strain_intact_form;
   return d;
@@ -1296,6 +1468,105 @@ void oterkus_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
+// oterkus_3d_damaged_sensitivity: per bond 17 add, 51 mul, 5 div, 2 call; per family 0 add, 10 mul, 3 div, 0 call
+void oterkus_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m1;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 2.0 * V0;
+  const double p7 = 1.0 / s_mx;
+  const double p8 = 0.5 * p7;
+  const double p9 = 0.16666666666666666 * s_theta * p7 * s_m2 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b13 = 1.0 / b10;
+    const double b14 = p5 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2)) * b13 * sf * V * alpha * w;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = b14 * Y_2;
+    const double b18 = 1.0 / b11;
+    const double b19 = p6 * (p8 * (b11 - b10) - p9 * b12 * b18 * b13) * b18 * sf * V * alpha * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 3 + 1] = -b16;
+    lane2[lane] += b16;
+    dfdp[(k + 1) * 3 + 2] = -b17;
+    lane3[lane] += b17;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b20;
+    lane4[lane] += b20;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b21;
+    lane5[lane] += b21;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b22;
+    lane6[lane] += b22;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // oterkus_3d_damaged_outputs: per bond 8 add, 18 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -1847,6 +2118,103 @@ void oterkus_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
+// oterkus_3d_intact_sensitivity: per bond 17 add, 48 mul, 5 div, 2 call; per family 0 add, 10 mul, 3 div, 0 call
+void oterkus_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m1 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[2];
+  const double s_m2 = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m1);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m1;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 2.0 * V0;
+  const double p7 = 1.0 / s_mx;
+  const double p8 = 0.5 * p7;
+  const double p9 = 0.16666666666666666 * s_theta * p7 * s_m2 * p4;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1 + Y_2 * xi_2;
+    const double b13 = 1.0 / b10;
+    const double b14 = p5 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2) + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2)) * b13 * sf * V * w;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = b14 * Y_2;
+    const double b18 = 1.0 / b11;
+    const double b19 = p6 * (p8 * (b11 - b10) - p9 * b12 * b18 * b13) * b18 * sf * V * w;
+    const double b20 = b19 * Y_0;
+    const double b21 = b19 * Y_1;
+    const double b22 = b19 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 3 + 1] = -b16;
+    lane2[lane] += b16;
+    dfdp[(k + 1) * 3 + 2] = -b17;
+    lane3[lane] += b17;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b20;
+    lane4[lane] += b20;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b21;
+    lane5[lane] += b21;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b22;
+    lane6[lane] += b22;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // oterkus_3d_intact_outputs: per bond 8 add, 17 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -2075,6 +2443,8 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.damaged.tangent_ops = {41, 136, 5, 2};
   d.damaged.jvp = &oterkus_3d_damaged_jvp;
   d.damaged.jvp_ops = {52, 144, 6, 2};
+  d.damaged.sensitivity = &oterkus_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {17, 51, 5, 2};
   d.damaged.outputs = &oterkus_3d_damaged_outputs;
   d.damaged.form = &oterkus_3d_damaged_form;
   d.intact.moments = &oterkus_3d_intact_moments;
@@ -2084,6 +2454,8 @@ pd::abi::LawDescriptor oterkus_3d_descriptor() {
   d.intact.tangent_ops = {41, 125, 5, 2};
   d.intact.jvp = &oterkus_3d_intact_jvp;
   d.intact.jvp_ops = {52, 134, 6, 2};
+  d.intact.sensitivity = &oterkus_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {17, 48, 5, 2};
   d.intact.outputs = &oterkus_3d_intact_outputs;
   d.intact.form = &oterkus_3d_intact_form;
   return d;
@@ -2398,6 +2770,89 @@ void oterkus_paper_d_plane_strain_damaged_jvp(const pd::abi::Family& fam, const 
   }
   df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// oterkus_paper_d_plane_strain_damaged_sensitivity: per bond 11 add, 43 mul, 5 div, 2 call; per family 0 add, 8 mul, 3 div, 0 call
+void oterkus_paper_d_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m2 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 2.0 * s_theta * (1.0 / s_m2) * V0;
+  const double p5 = 2.0 * V0;
+  const double p6 = 1.0 / s_mx;
+  const double p7 = 0.5 * p6;
+  const double p8 = 0.25 * s_theta * p6;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b11 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b12 = 1.0 / b9;
+    const double b13 = p4 * b11 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b12 * sf * V * alpha * w;
+    const double b14 = b13 * Y_0;
+    const double b15 = b13 * Y_1;
+    const double b16 = 1.0 / b10;
+    const double b17 = p5 * (p7 * (b10 - b9) - p8 * b11 * b16 * b12) * b16 * sf * V * alpha * w;
+    const double b18 = b17 * Y_0;
+    const double b19 = b17 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b14;
+    lane1[lane] += b14;
+    dfdp[(k + 1) * 2 + 1] = -b15;
+    lane2[lane] += b15;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b18;
+    lane3[lane] += b18;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b19;
+    lane4[lane] += b19;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
 // oterkus_paper_d_plane_strain_damaged_outputs: per bond 5 add, 15 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
@@ -2823,6 +3278,87 @@ void oterkus_paper_d_plane_strain_intact_jvp(const pd::abi::Family& fam, const d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// oterkus_paper_d_plane_strain_intact_sensitivity: per bond 11 add, 40 mul, 5 div, 2 call; per family 0 add, 8 mul, 3 div, 0 call
+void oterkus_paper_d_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m2 = fam.moments[0];
+  const double V0 = fam.V0;
+  const double s_mx = fam.moments[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m2);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (Y_0 * xi_0 + Y_1 * xi_1) * (b2 - b3) * (1.0 / b2) * (1.0 / b3) * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 2.0 * s_theta * (1.0 / s_m2) * V0;
+  const double p5 = 2.0 * V0;
+  const double p6 = 1.0 / s_mx;
+  const double p7 = 0.5 * p6;
+  const double p8 = 0.25 * s_theta * p6;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b11 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b12 = 1.0 / b9;
+    const double b13 = p4 * b11 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b12 * sf * V * w;
+    const double b14 = b13 * Y_0;
+    const double b15 = b13 * Y_1;
+    const double b16 = 1.0 / b10;
+    const double b17 = p5 * (p7 * (b10 - b9) - p8 * b11 * b16 * b12) * b16 * sf * V * w;
+    const double b18 = b17 * Y_0;
+    const double b19 = b17 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b14;
+    lane1[lane] += b14;
+    dfdp[(k + 1) * 2 + 1] = -b15;
+    lane2[lane] += b15;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b18;
+    lane3[lane] += b18;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b19;
+    lane4[lane] += b19;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // oterkus_paper_d_plane_strain_intact_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 1 mul, 1 div, 0 call
 void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -2981,6 +3517,8 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.damaged.tangent_ops = {25, 108, 5, 2};
   d.damaged.jvp = &oterkus_paper_d_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {30, 109, 6, 2};
+  d.damaged.sensitivity = &oterkus_paper_d_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {11, 43, 5, 2};
   d.damaged.outputs = &oterkus_paper_d_plane_strain_damaged_outputs;
   d.damaged.form = &oterkus_paper_d_plane_strain_damaged_form;
   d.intact.moments = &oterkus_paper_d_plane_strain_intact_moments;
@@ -2990,6 +3528,8 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   d.intact.tangent_ops = {25, 98, 5, 2};
   d.intact.jvp = &oterkus_paper_d_plane_strain_intact_jvp;
   d.intact.jvp_ops = {30, 100, 6, 2};
+  d.intact.sensitivity = &oterkus_paper_d_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {11, 40, 5, 2};
   d.intact.outputs = &oterkus_paper_d_plane_strain_intact_outputs;
   d.intact.form = &oterkus_paper_d_plane_strain_intact_form;
   return d;

@@ -278,6 +278,84 @@ void silling_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* 
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// silling_plane_strain_damaged_sensitivity: per bond 7 add, 30 mul, 1 div, 2 call; per family 0 add, 7 mul, 2 div, 0 call
+void silling_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = p4 * V0;
+  const double p7 = 0.6666666666666666 * s_theta;
+  const double p8 = 0.5 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b11 = 1.0 / b10;
+    const double b12 = p5 * b11 * b9 * sf * V * alpha * w;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    const double b15 = p6 * (p7 * b9 + 8.0 * (b10 - b9 - p8 * b9)) * b11 * sf * V * alpha * w;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b13;
+    lane1[lane] += b13;
+    dfdp[(k + 1) * 2 + 1] = -b14;
+    lane2[lane] += b14;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b16;
+    lane3[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b17;
+    lane4[lane] += b17;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // silling_plane_strain_damaged_energy: per bond 6 add, 16 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_damaged_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -715,6 +793,82 @@ void silling_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* d
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// silling_plane_strain_intact_sensitivity: per bond 7 add, 27 mul, 1 div, 2 call; per family 0 add, 7 mul, 2 div, 0 call
+void silling_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = p4 * V0;
+  const double p7 = 0.6666666666666666 * s_theta;
+  const double p8 = 0.5 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double b11 = 1.0 / b10;
+    const double b12 = p5 * b11 * b9 * sf * V * w;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    const double b15 = p6 * (p7 * b9 + 8.0 * (b10 - b9 - p8 * b9)) * b11 * sf * V * w;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b13;
+    lane1[lane] += b13;
+    dfdp[(k + 1) * 2 + 1] = -b14;
+    lane2[lane] += b14;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b16;
+    lane3[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b17;
+    lane4[lane] += b17;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
 // silling_plane_strain_intact_energy: per bond 6 add, 14 mul, 0 div, 2 call; per family 2 add, 9 mul, 2 div, 0 call
 double silling_plane_strain_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -925,6 +1079,8 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.damaged.tangent_ops = {16, 66, 2, 2};
   d.damaged.jvp = &silling_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {21, 74, 3, 2};
+  d.damaged.sensitivity = &silling_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {7, 30, 1, 2};
   d.damaged.energy = &silling_plane_strain_damaged_energy;
   d.damaged.outputs = &silling_plane_strain_damaged_outputs;
   d.damaged.form = &silling_plane_strain_damaged_form;
@@ -935,6 +1091,8 @@ pd::abi::LawDescriptor silling_plane_strain_descriptor() {
   d.intact.tangent_ops = {16, 59, 2, 2};
   d.intact.jvp = &silling_plane_strain_intact_jvp;
   d.intact.jvp_ops = {21, 67, 3, 2};
+  d.intact.sensitivity = &silling_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {7, 27, 1, 2};
   d.intact.energy = &silling_plane_strain_intact_energy;
   d.intact.outputs = &silling_plane_strain_intact_outputs;
   d.intact.form = &silling_plane_strain_intact_form;
@@ -1256,6 +1414,96 @@ void silling_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, double
   df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
+// silling_3d_damaged_sensitivity: per bond 8 add, 32 mul, 1 div, 2 call; per family 0 add, 7 mul, 2 div, 0 call
+void silling_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 15.0 * p4 * V0;
+  const double p7 = 0.3333333333333333 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b10 = 1.0 / b9;
+    const double b11 = p5 * b10 * b8 * sf * V * alpha * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    const double b15 = p6 * (b9 - b8 - p7 * b8) * b10 * sf * V * alpha * w;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    const double b18 = b15 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    dfdp[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    dfdp[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b16;
+    lane4[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b17;
+    lane5[lane] += b17;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b18;
+    lane6[lane] += b18;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
 }
 
 // silling_3d_damaged_energy: per bond 8 add, 18 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
@@ -1813,6 +2061,94 @@ void silling_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, double*
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
+// silling_3d_intact_sensitivity: per bond 8 add, 29 mul, 1 div, 2 call; per family 0 add, 7 mul, 2 div, 0 call
+void silling_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 15.0 * p4 * V0;
+  const double p7 = 0.3333333333333333 * s_theta;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b8 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double b10 = 1.0 / b9;
+    const double b11 = p5 * b10 * b8 * sf * V * w;
+    const double b12 = b11 * Y_0;
+    const double b13 = b11 * Y_1;
+    const double b14 = b11 * Y_2;
+    const double b15 = p6 * (b9 - b8 - p7 * b8) * b10 * sf * V * w;
+    const double b16 = b15 * Y_0;
+    const double b17 = b15 * Y_1;
+    const double b18 = b15 * Y_2;
+    dfdp[(k + 1) * 3 + 0] = -b12;
+    lane1[lane] += b12;
+    dfdp[(k + 1) * 3 + 1] = -b13;
+    lane2[lane] += b13;
+    dfdp[(k + 1) * 3 + 2] = -b14;
+    lane3[lane] += b14;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b16;
+    lane4[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b17;
+    lane5[lane] += b17;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b18;
+    lane6[lane] += b18;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+}
+
 // silling_3d_intact_energy: per bond 8 add, 16 mul, 0 div, 2 call; per family 1 add, 8 mul, 2 div, 0 call
 double silling_3d_intact_energy(const pd::abi::Family& fam) {
   const int L = fam.n_bonds;
@@ -2095,6 +2431,8 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.damaged.tangent_ops = {24, 81, 2, 2};
   d.damaged.jvp = &silling_3d_damaged_jvp;
   d.damaged.jvp_ops = {35, 102, 3, 2};
+  d.damaged.sensitivity = &silling_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {8, 32, 1, 2};
   d.damaged.energy = &silling_3d_damaged_energy;
   d.damaged.outputs = &silling_3d_damaged_outputs;
   d.damaged.form = &silling_3d_damaged_form;
@@ -2105,6 +2443,8 @@ pd::abi::LawDescriptor silling_3d_descriptor() {
   d.intact.tangent_ops = {24, 74, 2, 2};
   d.intact.jvp = &silling_3d_intact_jvp;
   d.intact.jvp_ops = {35, 94, 3, 2};
+  d.intact.sensitivity = &silling_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {8, 29, 1, 2};
   d.intact.energy = &silling_3d_intact_energy;
   d.intact.outputs = &silling_3d_intact_outputs;
   d.intact.form = &silling_3d_intact_form;

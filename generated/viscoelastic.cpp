@@ -324,6 +324,132 @@ void viscoelastic_plane_strain_damaged_jvp(const pd::abi::Family& fam, const dou
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// viscoelastic_plane_strain_damaged_sensitivity: per bond 17 add, 55 mul, 1 div, 2 call; per family 11 add, 37 mul, 4 div, 1 call
+void viscoelastic_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_lambda_i = fam.params[2];
+  const double P_tau_b = fam.params[3];
+  const double dt = fam.time_step;
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = 0.6666666666666666 * s_theta * p4;
+  const double p7 = 8.0 * p4;
+  const double p8 = 0.5 * s_theta;
+  const double p9 = 1.0 / P_tau_b;
+  const double p10 = p9 * dt;
+  const double p11 = p10 - 1e-04;
+  const double p12 = std::exp(-p10);
+  const double p13 = 1.0 - p12;
+  const double p14 = 1.0 / dt;
+  const double p15 = p9 * p9;
+  const double p16 = p15 * p9;
+  const double p17 = dt * dt;
+  const double p18 = p17 * dt;
+  const double p19 = (p11 > 0.0 ? 1.0 - p13 * P_tau_b * p14 : 0.5 * p9 * dt + 0.041666666666666664 * p16 * p18 - 0.16666666666666666 * p15 * p17);
+  const double p20 = p7 * P_G * V0;
+  const double p21 = p7 * P_lambda_i * P_G * V0;
+  const double p22 = (p11 > 0.0 ? p12 * p9 - p13 * p14 : 0.3333333333333333 * p16 * p17 - 0.5 * p15 * dt - 0.125 * (p15 * p15) * p18);
+  const double p23 = p12 * p15 * dt;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b24 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b25 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_deviatoric_extension = (fam.history != nullptr ? fam.history[k * 2 + 1] : 0.0);
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double b26 = 1.0 / b25;
+    const double b27 = p5 * b26 * b24 * sf * V * alpha * w;
+    const double b28 = b27 * Y_0;
+    const double b29 = b27 * Y_1;
+    const double b30 = b25 - b24 - p8 * b24;
+    const double b31 = b30 - H_deviatoric_extension;
+    const double b32 = p19 * b31 + p13 * H_deviatoric_extension + p12 * H_back_extension;
+    const double b33 = V0 * (p6 * b24 * alpha * w + p7 * (b30 - P_lambda_i * b32) * alpha * w) * b26 * sf * V;
+    const double b34 = b33 * Y_0;
+    const double b35 = b33 * Y_1;
+    const double b36 = p20 * b32 * b26 * sf * V * alpha * w;
+    const double b37 = -(b36 * Y_0);
+    const double b38 = -(b36 * Y_1);
+    const double b39 = p21 * (p22 * b31 + p23 * H_back_extension - p23 * H_deviatoric_extension) * b26 * sf * V * alpha * w;
+    const double b40 = -(b39 * Y_0);
+    const double b41 = -(b39 * Y_1);
+    dfdp[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    dfdp[(k + 1) * 2 + 1] = -b29;
+    lane2[lane] += b29;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b34;
+    lane3[lane] += b34;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b35;
+    lane4[lane] += b35;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b37;
+    lane5[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b38;
+    lane6[lane] += b38;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b40;
+    lane7[lane] += b40;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b41;
+    lane8[lane] += b41;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+}
+
 // viscoelastic_plane_strain_damaged_outputs: per bond 4 add, 15 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -823,6 +949,130 @@ void viscoelastic_plane_strain_intact_jvp(const pd::abi::Family& fam, const doub
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
 }
 
+// viscoelastic_plane_strain_intact_sensitivity: per bond 17 add, 49 mul, 1 div, 2 call; per family 11 add, 37 mul, 4 div, 1 call
+void viscoelastic_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_lambda_i = fam.params[2];
+  const double P_tau_b = fam.params[3];
+  const double dt = fam.time_step;
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 2.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 2.0 * s_theta * p4 * V0;
+  const double p6 = 0.6666666666666666 * s_theta * p4;
+  const double p7 = 8.0 * p4;
+  const double p8 = 0.5 * s_theta;
+  const double p9 = 1.0 / P_tau_b;
+  const double p10 = p9 * dt;
+  const double p11 = p10 - 1e-04;
+  const double p12 = std::exp(-p10);
+  const double p13 = 1.0 - p12;
+  const double p14 = 1.0 / dt;
+  const double p15 = p9 * p9;
+  const double p16 = p15 * p9;
+  const double p17 = dt * dt;
+  const double p18 = p17 * dt;
+  const double p19 = (p11 > 0.0 ? 1.0 - p13 * P_tau_b * p14 : 0.5 * p9 * dt + 0.041666666666666664 * p16 * p18 - 0.16666666666666666 * p15 * p17);
+  const double p20 = p7 * P_G * V0;
+  const double p21 = p7 * P_lambda_i * P_G * V0;
+  const double p22 = (p11 > 0.0 ? p12 * p9 - p13 * p14 : 0.3333333333333333 * p16 * p17 - 0.5 * p15 * dt - 0.125 * (p15 * p15) * p18);
+  const double p23 = p12 * p15 * dt;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b24 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b25 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double H_deviatoric_extension = (fam.history != nullptr ? fam.history[k * 2 + 1] : 0.0);
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double b26 = 1.0 / b25;
+    const double b27 = p5 * b26 * b24 * sf * V * w;
+    const double b28 = b27 * Y_0;
+    const double b29 = b27 * Y_1;
+    const double b30 = b25 - b24 - p8 * b24;
+    const double b31 = b30 - H_deviatoric_extension;
+    const double b32 = p19 * b31 + p13 * H_deviatoric_extension + p12 * H_back_extension;
+    const double b33 = V0 * (p6 * b24 * w + p7 * (b30 - P_lambda_i * b32) * w) * b26 * sf * V;
+    const double b34 = b33 * Y_0;
+    const double b35 = b33 * Y_1;
+    const double b36 = p20 * b32 * b26 * sf * V * w;
+    const double b37 = -(b36 * Y_0);
+    const double b38 = -(b36 * Y_1);
+    const double b39 = p21 * (p22 * b31 + p23 * H_back_extension - p23 * H_deviatoric_extension) * b26 * sf * V * w;
+    const double b40 = -(b39 * Y_0);
+    const double b41 = -(b39 * Y_1);
+    dfdp[(k + 1) * 2 + 0] = -b28;
+    lane1[lane] += b28;
+    dfdp[(k + 1) * 2 + 1] = -b29;
+    lane2[lane] += b29;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b34;
+    lane3[lane] += b34;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b35;
+    lane4[lane] += b35;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b37;
+    lane5[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b38;
+    lane6[lane] += b38;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b40;
+    lane7[lane] += b40;
+    (dfdp + 3 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b41;
+    lane8[lane] += b41;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[0] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 2)[1] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 2)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+}
+
 // viscoelastic_plane_strain_intact_outputs: per bond 4 add, 13 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -1050,6 +1300,8 @@ pd::abi::LawDescriptor viscoelastic_plane_strain_descriptor() {
   d.damaged.tangent_ops = {24, 81, 2, 2};
   d.damaged.jvp = &viscoelastic_plane_strain_damaged_jvp;
   d.damaged.jvp_ops = {29, 92, 3, 2};
+  d.damaged.sensitivity = &viscoelastic_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {17, 55, 1, 2};
   d.damaged.outputs = &viscoelastic_plane_strain_damaged_outputs;
   d.damaged.update = &viscoelastic_plane_strain_damaged_update;
   d.damaged.form = &viscoelastic_plane_strain_damaged_form;
@@ -1060,6 +1312,8 @@ pd::abi::LawDescriptor viscoelastic_plane_strain_descriptor() {
   d.intact.tangent_ops = {24, 73, 2, 2};
   d.intact.jvp = &viscoelastic_plane_strain_intact_jvp;
   d.intact.jvp_ops = {29, 83, 3, 2};
+  d.intact.sensitivity = &viscoelastic_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {17, 49, 1, 2};
   d.intact.outputs = &viscoelastic_plane_strain_intact_outputs;
   d.intact.update = &viscoelastic_plane_strain_intact_update;
   d.intact.form = &viscoelastic_plane_strain_intact_form;
@@ -1425,6 +1679,155 @@ void viscoelastic_3d_damaged_jvp(const pd::abi::Family& fam, const double* dy, d
   df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
   df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
+// viscoelastic_3d_damaged_sensitivity: per bond 20 add, 57 mul, 1 div, 2 call; per family 11 add, 36 mul, 4 div, 1 call
+void viscoelastic_3d_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_lambda_i = fam.params[2];
+  const double P_tau_b = fam.params[3];
+  const double dt = fam.time_step;
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * alpha * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 15.0 * p4;
+  const double p7 = p6 * V0;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 1.0 / P_tau_b;
+  const double p10 = p9 * dt;
+  const double p11 = p10 - 1e-04;
+  const double p12 = std::exp(-p10);
+  const double p13 = 1.0 - p12;
+  const double p14 = 1.0 / dt;
+  const double p15 = p9 * p9;
+  const double p16 = p15 * p9;
+  const double p17 = dt * dt;
+  const double p18 = p17 * dt;
+  const double p19 = (p11 > 0.0 ? 1.0 - p13 * P_tau_b * p14 : 0.5 * p9 * dt + 0.041666666666666664 * p16 * p18 - 0.16666666666666666 * p15 * p17);
+  const double p20 = p6 * P_G * V0;
+  const double p21 = p6 * P_lambda_i * P_G * V0;
+  const double p22 = (p11 > 0.0 ? p12 * p9 - p13 * p14 : 0.3333333333333333 * p16 * p17 - 0.5 * p15 * dt - 0.125 * (p15 * p15) * p18);
+  const double p23 = p12 * p15 * dt;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b24 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b25 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_deviatoric_extension = (fam.history != nullptr ? fam.history[k * 2 + 1] : 0.0);
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double b26 = 1.0 / b25;
+    const double b27 = p5 * b26 * b24 * sf * V * alpha * w;
+    const double b28 = b27 * Y_0;
+    const double b29 = b27 * Y_1;
+    const double b30 = b27 * Y_2;
+    const double b31 = b25 - b24 - p8 * b24;
+    const double b32 = b31 - H_deviatoric_extension;
+    const double b33 = p19 * b32 + p13 * H_deviatoric_extension + p12 * H_back_extension;
+    const double b34 = p7 * (b31 - P_lambda_i * b33) * b26 * sf * V * alpha * w;
+    const double b35 = b34 * Y_0;
+    const double b36 = b34 * Y_1;
+    const double b37 = b34 * Y_2;
+    const double b38 = p20 * b33 * b26 * sf * V * alpha * w;
+    const double b39 = -(b38 * Y_0);
+    const double b40 = -(b38 * Y_1);
+    const double b41 = -(b38 * Y_2);
+    const double b42 = p21 * (p22 * b32 + p23 * H_back_extension - p23 * H_deviatoric_extension) * b26 * sf * V * alpha * w;
+    const double b43 = -(b42 * Y_0);
+    const double b44 = -(b42 * Y_1);
+    const double b45 = -(b42 * Y_2);
+    dfdp[(k + 1) * 3 + 0] = -b28;
+    lane1[lane] += b28;
+    dfdp[(k + 1) * 3 + 1] = -b29;
+    lane2[lane] += b29;
+    dfdp[(k + 1) * 3 + 2] = -b30;
+    lane3[lane] += b30;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b35;
+    lane4[lane] += b35;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b36;
+    lane5[lane] += b36;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b37;
+    lane6[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b39;
+    lane7[lane] += b39;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b40;
+    lane8[lane] += b40;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b41;
+    lane9[lane] += b41;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b43;
+    lane10[lane] += b43;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b44;
+    lane11[lane] += b44;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b45;
+    lane12[lane] += b45;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
 }
 
 // viscoelastic_3d_damaged_outputs: per bond 6 add, 17 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
@@ -2042,6 +2445,153 @@ void viscoelastic_3d_intact_jvp(const pd::abi::Family& fam, const double* dy, do
   df[2] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
 }
 
+// viscoelastic_3d_intact_sensitivity: per bond 20 add, 52 mul, 1 div, 2 call; per family 11 add, 36 mul, 4 div, 1 call
+void viscoelastic_3d_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double s_m = fam.moments[0];
+  const double V0 = fam.V0;
+  const double P_lambda_i = fam.params[2];
+  const double P_tau_b = fam.params[3];
+  const double dt = fam.time_step;
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 3.0 * (1.0 / s_m);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double xi_0 = fam.xi[k * 3 + 0];
+    const double xi_1 = fam.xi[k * 3 + 1];
+    const double xi_2 = fam.xi[k * 3 + 2];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double b1 = xi_0 * xi_0 + xi_1 * xi_1 + xi_2 * xi_2;
+    const double b2 = std::sqrt(1e-16 * b1 + Y_0 * Y_0 + Y_1 * Y_1 + Y_2 * Y_2);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b2;
+    const double b3 = std::sqrt(b1);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b3;
+    lane0[lane] += p0 * (b2 - b3) * b3 * sd * V * w;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; dfdp[2] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] = 0.0; (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] = 0.0; 
+  const double p4 = 1.0 / s_m;
+  const double p5 = 3.0 * s_theta * p4 * V0;
+  const double p6 = 15.0 * p4;
+  const double p7 = p6 * V0;
+  const double p8 = 0.3333333333333333 * s_theta;
+  const double p9 = 1.0 / P_tau_b;
+  const double p10 = p9 * dt;
+  const double p11 = p10 - 1e-04;
+  const double p12 = std::exp(-p10);
+  const double p13 = 1.0 - p12;
+  const double p14 = 1.0 / dt;
+  const double p15 = p9 * p9;
+  const double p16 = p15 * p9;
+  const double p17 = dt * dt;
+  const double p18 = p17 * dt;
+  const double p19 = (p11 > 0.0 ? 1.0 - p13 * P_tau_b * p14 : 0.5 * p9 * dt + 0.041666666666666664 * p16 * p18 - 0.16666666666666666 * p15 * p17);
+  const double p20 = p6 * P_G * V0;
+  const double p21 = p6 * P_lambda_i * P_G * V0;
+  const double p22 = (p11 > 0.0 ? p12 * p9 - p13 * p14 : 0.3333333333333333 * p16 * p17 - 0.5 * p15 * dt - 0.125 * (p15 * p15) * p18);
+  const double p23 = p12 * p15 * dt;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  double lane5[4] = {};
+  double lane6[4] = {};
+  double lane7[4] = {};
+  double lane8[4] = {};
+  double lane9[4] = {};
+  double lane10[4] = {};
+  double lane11[4] = {};
+  double lane12[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b24 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b25 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double w = fam.w[k];
+    const double Y_0 = fam.Y[k * 3 + 0];
+    const double Y_1 = fam.Y[k * 3 + 1];
+    const double Y_2 = fam.Y[k * 3 + 2];
+    const double H_deviatoric_extension = (fam.history != nullptr ? fam.history[k * 2 + 1] : 0.0);
+    const double H_back_extension = (fam.history != nullptr ? fam.history[k * 2 + 0] : 0.0);
+    const double b26 = 1.0 / b25;
+    const double b27 = p5 * b26 * b24 * sf * V * w;
+    const double b28 = b27 * Y_0;
+    const double b29 = b27 * Y_1;
+    const double b30 = b27 * Y_2;
+    const double b31 = b25 - b24 - p8 * b24;
+    const double b32 = b31 - H_deviatoric_extension;
+    const double b33 = p19 * b32 + p13 * H_deviatoric_extension + p12 * H_back_extension;
+    const double b34 = p7 * (b31 - P_lambda_i * b33) * b26 * sf * V * w;
+    const double b35 = b34 * Y_0;
+    const double b36 = b34 * Y_1;
+    const double b37 = b34 * Y_2;
+    const double b38 = p20 * b33 * b26 * sf * V * w;
+    const double b39 = -(b38 * Y_0);
+    const double b40 = -(b38 * Y_1);
+    const double b41 = -(b38 * Y_2);
+    const double b42 = p21 * (p22 * b32 + p23 * H_back_extension - p23 * H_deviatoric_extension) * b26 * sf * V * w;
+    const double b43 = -(b42 * Y_0);
+    const double b44 = -(b42 * Y_1);
+    const double b45 = -(b42 * Y_2);
+    dfdp[(k + 1) * 3 + 0] = -b28;
+    lane1[lane] += b28;
+    dfdp[(k + 1) * 3 + 1] = -b29;
+    lane2[lane] += b29;
+    dfdp[(k + 1) * 3 + 2] = -b30;
+    lane3[lane] += b30;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b35;
+    lane4[lane] += b35;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b36;
+    lane5[lane] += b36;
+    (dfdp + 1 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b37;
+    lane6[lane] += b37;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b39;
+    lane7[lane] += b39;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b40;
+    lane8[lane] += b40;
+    (dfdp + 2 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b41;
+    lane9[lane] += b41;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 0] = -b43;
+    lane10[lane] += b43;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 1] = -b44;
+    lane11[lane] += b44;
+    (dfdp + 3 * (fam.n_bonds + 1) * 3)[(k + 1) * 3 + 2] = -b45;
+    lane12[lane] += b45;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  dfdp[2] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[0] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[1] += (lane5[0] + lane5[1]) + (lane5[2] + lane5[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 3)[2] += (lane6[0] + lane6[1]) + (lane6[2] + lane6[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[0] += (lane7[0] + lane7[1]) + (lane7[2] + lane7[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[1] += (lane8[0] + lane8[1]) + (lane8[2] + lane8[3]);
+  (dfdp + 2 * (fam.n_bonds + 1) * 3)[2] += (lane9[0] + lane9[1]) + (lane9[2] + lane9[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[0] += (lane10[0] + lane10[1]) + (lane10[2] + lane10[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[1] += (lane11[0] + lane11[1]) + (lane11[2] + lane11[3]);
+  (dfdp + 3 * (fam.n_bonds + 1) * 3)[2] += (lane12[0] + lane12[1]) + (lane12[2] + lane12[3]);
+}
+
 // viscoelastic_3d_intact_outputs: per bond 6 add, 15 mul, 0 div, 2 call; per family 0 add, 2 mul, 2 div, 1 call
 void viscoelastic_3d_intact_outputs(const pd::abi::Family& fam, double* outputs) {
   const int L = fam.n_bonds;
@@ -2341,6 +2891,8 @@ pd::abi::LawDescriptor viscoelastic_3d_descriptor() {
   d.damaged.tangent_ops = {35, 104, 2, 2};
   d.damaged.jvp = &viscoelastic_3d_damaged_jvp;
   d.damaged.jvp_ops = {46, 128, 3, 2};
+  d.damaged.sensitivity = &viscoelastic_3d_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {20, 57, 1, 2};
   d.damaged.outputs = &viscoelastic_3d_damaged_outputs;
   d.damaged.update = &viscoelastic_3d_damaged_update;
   d.damaged.form = &viscoelastic_3d_damaged_form;
@@ -2351,6 +2903,8 @@ pd::abi::LawDescriptor viscoelastic_3d_descriptor() {
   d.intact.tangent_ops = {35, 95, 2, 2};
   d.intact.jvp = &viscoelastic_3d_intact_jvp;
   d.intact.jvp_ops = {46, 117, 3, 2};
+  d.intact.sensitivity = &viscoelastic_3d_intact_sensitivity;
+  d.intact.sensitivity_ops = {20, 52, 1, 2};
   d.intact.outputs = &viscoelastic_3d_intact_outputs;
   d.intact.update = &viscoelastic_3d_intact_update;
   d.intact.form = &viscoelastic_3d_intact_form;

@@ -86,6 +86,15 @@ using TangentKernel = void (*)(const Family&, double* forces, const TangentFacto
 // Directional derivative of the nodal forces along a local increment dy of the
 // positions of particles 0..L: df = (d f / d y) dy. Cost linear in L.
 using JvpKernel = void (*)(const Family&, const double* dy, double* df);
+// The derivative of the nodal forces with respect to each material parameter, dense:
+// dfdp [n_params * (L+1)*dim], parameter-major (parameter i's nodal vector, laid out as
+// `forces`, at [i*(L+1)*dim]), overwritten. The parameter is varied for the whole family
+// at once (the center's value and every neighbour's, so a pair mean of equal values moves
+// with it), the deformation and the committed history held fixed: for a law with memory
+// it is the sensitivity of the incremental residual. A body of one material (or a law
+// without pair parameters, whose family reads only its center's values) gets the exact
+// d(forces)/d(material parameter) by summing these over the families of that material.
+using SensitivityKernel = void (*)(const Family&, double* dfdp);
 // The family's dense local matrix M = d f / d y, (L+1)*dim square, row-major, from the
 // factors of the tangent kernel: the formula of runtime/local_matrix.hpp, emitted per law
 // with the factor entries that are structurally zero for that law left out of every sum
@@ -113,11 +122,12 @@ struct KernelVariant {
   ResidualKernel residual = nullptr;
   TangentKernel tangent = nullptr;
   JvpKernel jvp = nullptr;
+  SensitivityKernel sensitivity = nullptr;      // may be null (hand-written laws)
   FormKernel form = nullptr;                    // may be null (hand-written laws)
   EnergyKernel energy = nullptr;                // may be null
   OutputsKernel outputs = nullptr;              // may be null when n_outputs == 0
   UpdateKernel update = nullptr;                // null when the law has no history
-  OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
+  OpCounts residual_ops, tangent_ops, jvp_ops, sensitivity_ops;  // per bond-loop body, as emitted
 };
 
 // The bond monomials xi^b / |xi|^inverse_r_power with lowest_degree <= |b| <= highest_degree

@@ -24,6 +24,8 @@ Signature signature(Kernel k) {
               {"fam", "forces", "factors"}};
     case Kernel::Jvp:
       return {"void", {kFamily, "const double* dy", "double* df"}, {"fam", "dy", "df"}};
+    case Kernel::Sensitivity:
+      return {"void", {kFamily, "double* dfdp"}, {"fam", "dfdp"}};
     case Kernel::Form:
       return {
           "void", {kFamily, "const pd::abi::TangentFactors& factors", "double* M"}, {"fam", "factors", "M"}};
@@ -76,6 +78,9 @@ std::string neighbour_component(const std::string& array, int dim, int c) {
 }
 std::string bond_increment(int dim, int c) {
   return neighbour_component("dy", dim, c) + " - " + center_component("dy", c);
+}
+std::string sensitivity_column(int dim, int i) {
+  return i == 0 ? "dfdp" : "(dfdp + " + str(i) + " * (" + bond_count() + " + 1) * " + str(dim) + ")";
 }
 std::string forces_requested() { return "forces != nullptr"; }
 std::string factor_direct(int dim, int r, int c) {

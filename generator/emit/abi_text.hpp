@@ -13,7 +13,7 @@ struct Signature {
   std::string return_type;
   std::vector<std::string> params, names;
 };
-enum class Kernel { Moments, Residual, Tangent, Jvp, Form, Energy, Outputs, Update, Influence };
+enum class Kernel { Moments, Residual, Tangent, Jvp, Sensitivity, Form, Energy, Outputs, Update, Influence };
 Signature signature(Kernel k);
 
 // Family inputs. Per bond k: component c of a vector field (xi, Y), a scalar field
@@ -44,6 +44,8 @@ std::string scratch();     // the per-bond cache's storage
 std::string center_component(const std::string& array, int c);
 std::string neighbour_component(const std::string& array, int dim, int c);
 std::string bond_increment(int dim, int c);
+// The sensitivity kernel's column of parameter i: a nodal vector like `forces`.
+std::string sensitivity_column(int dim, int i);
 std::string forces_requested();  // the tangent writes forces only when given them
 std::string factor_direct(int dim, int r, int c);
 std::string factor_left(int dim, int n_states, int s, int r);

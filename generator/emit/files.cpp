@@ -135,7 +135,7 @@ void GeneratedFiles::add_law(const std::string& file_stem, const Law& law,
       decl << k.emitted.declaration << "\n";
       code << "\n" << k.emitted.code;
       desc << "  d." << v.name << "." << k.kind << " = &" << k.function << ";\n";
-      if (k.kind == "residual" || k.kind == "tangent" || k.kind == "jvp")
+      if (k.kind == "residual" || k.kind == "tangent" || k.kind == "jvp" || k.kind == "sensitivity")
         desc << "  d." << v.name << "." << k.kind << "_ops = " << counts_init(k.emitted.per_bond) << ";\n";
     }
   }

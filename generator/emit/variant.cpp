@@ -13,8 +13,11 @@ namespace pdgen {
 EmittedVariant emit_variant(const Law& law, const std::string& variant) {
   const LawKernelSet k = build_kernels(law, law.name() + "_" + variant);
   EmittedVariant v{variant, k.n_moments, k.n_states, {}};
-  std::vector<std::pair<std::string, const KernelProgram*>> programs{
-      {"moments", &k.moments}, {"residual", &k.residual}, {"tangent", &k.tangent}, {"jvp", &k.jvp}};
+  std::vector<std::pair<std::string, const KernelProgram*>> programs{{"moments", &k.moments},
+                                                                     {"residual", &k.residual},
+                                                                     {"tangent", &k.tangent},
+                                                                     {"jvp", &k.jvp},
+                                                                     {"sensitivity", &k.sensitivity}};
   if (k.has_energy) programs.push_back({"energy", &k.energy});
   if (k.has_outputs) programs.push_back({"outputs", &k.outputs});
   if (k.has_update) programs.push_back({"update", &k.update});

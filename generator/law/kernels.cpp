@@ -39,6 +39,7 @@ class Builder {
     out.residual = prune(residual_kernel());
     out.tangent = prune(tangent_kernel(out.factor_structure));
     out.jvp = prune(jvp_kernel());
+    out.sensitivity = prune(sensitivity_kernel());
     out.has_energy = law_.has_energy();
     if (out.has_energy)
       out.energy =
@@ -279,6 +280,60 @@ class Builder {
     std::vector<Expr> dt;
     for (Expr t : force_roots()) dt.push_back(directional(t));
     force_stores(seg, dt, "df", "");
+    p.segments.push_back(seg);
+    return p;
+  }
+
+  // df/dp_i for every material parameter p_i: the whole family's value varied together (the
+  // center's and every neighbour's, so a pair mean of equal values moves with it: d mean/dp =
+  // 1), the committed history and the deformation held fixed. Forward mode through the sums:
+  // a sum S = sum_j g(...) has dS/dp = sum_j [dg/dp + sum_S' dg/dS' dS'/dp], one more horizon
+  // sum per (sum, parameter) whose derivative is not structurally zero. Moments that read a
+  // parameter get theirs in loops of their own first: the states' loops read them.
+  KernelProgram sensitivity_kernel() const {
+    KernelProgram p = program("sensitivity", abi_text::Kernel::Sensitivity, true);
+    const int NP = static_cast<int>(law_.params().size());
+    // Per parameter: (symbol, d symbol / d p_i) for every symbol that moves with p_i.
+    std::vector<std::vector<std::pair<Expr, Expr>>> d(static_cast<std::size_t>(NP));
+    for (int i = 0; i < NP; ++i) d[i].push_back({law_.params()[static_cast<std::size_t>(i)], Expr(1.0)});
+    for (const PairParamDef& q : law_.pair_params()) d[q.param].push_back({q.symbol, Expr(1.0)});
+    auto directional = [](Expr e, const std::vector<std::pair<Expr, Expr>>& di) {
+      std::vector<Expr> terms;
+      for (const auto& [sym, dsym] : di) terms.push_back(diff(e, sym) * dsym);
+      return add(terms);
+    };
+    // Declares d S / d p_i when not zero; returns its store.
+    auto derivative_sum = [&](const SumDef& sd, int i, std::vector<Store>& stores, std::vector<int>& acc) {
+      const Expr body = directional(sd.body, d[i]);
+      if (body.is_const(0.0)) return;
+      const Expr sym = symbol("dp" + str(i) + "_" + sd.name, SymbolKind::Sum);
+      const int idx = symbol_index(sym);
+      p.bindings[idx] = {"dp" + str(i) + "_" + sd.name, "", false};
+      acc.push_back(idx);
+      stores.push_back({p.bindings.at(idx).var, body, StoreMode::Accumulate, "", idx});
+      d[i].push_back({sd.symbol, sym});
+    };
+    int max_level = -1;
+    for (const SumDef* m : moments_) max_level = std::max(max_level, m->level);
+    for (int level = 0; level <= max_level; ++level) {
+      Segment seg;
+      seg.loop = true;
+      for (const SumDef* m : moments_)
+        if (m->level == level)
+          for (int i = 0; i < NP; ++i) derivative_sum(*m, i, seg.stores, seg.accumulators);
+      if (!seg.stores.empty()) p.segments.push_back(seg);
+    }
+    sum_loops(p, force_states_, [&](const SumDef& sd, Segment& seg) {
+      for (int i = 0; i < NP; ++i) derivative_sum(sd, i, seg.stores, seg.accumulators);
+    });
+    Segment seg;
+    seg.loop = true;
+    const std::vector<Expr> t = force_roots();
+    for (int i = 0; i < NP; ++i) {
+      std::vector<Expr> dt;
+      for (Expr tc : t) dt.push_back(directional(tc, d[i]));
+      force_stores(seg, dt, abi_text::sensitivity_column(D_, i), "");
+    }
     p.segments.push_back(seg);
     return p;
   }

@@ -30,6 +30,7 @@ int list_laws(bool verbose) {
       print_ops("residual", law.intact.residual_ops);
       print_ops("tangent", law.intact.tangent_ops);
       print_ops("jvp", law.intact.jvp_ops);
+      print_ops("sensitivity", law.intact.sensitivity_ops);
     }
   }
   fmt::print("Influence functions ({}):\n", abi::all_influences().size());

@@ -3,9 +3,10 @@
 // sums level by level, the force state per bond, the energy density, the outputs and the
 // history updates -- are evaluated in plain double arithmetic on random families, with no
 // lowering, CSE, hoisting or scheduling. The generated moments, residual, energy, outputs
-// and update kernels must agree to rounding, and so must the JVP kernel and the dense
-// tangent formed from the tangent kernel's factors, against the chain rule through the
-// horizon sums written out here with pdgen::diff's derivatives. A bug in emit/ (a wrong common subexpression,
+// and update kernels must agree to rounding, and so must the JVP kernel, the dense
+// tangent formed from the tangent kernel's factors and the parameter-sensitivity kernel,
+// against the chain rule through the horizon sums written out here with pdgen::diff's
+// derivatives. A bug in emit/ (a wrong common subexpression,
 // a sum accumulated in the wrong loop, a dropped term) fails here even where a finite-
 // difference check of the tangent is too loose to see it, since both sides of that check
 // would share the wrong residual.
@@ -105,6 +106,44 @@ class Oracle {
     }
     return out;
   }
+  // d forces() / d parameter `p`, the whole family's value moved together (kernel_abi.hpp
+  // SensitivityKernel), by forward mode written out here: each sum's derivative level by
+  // level, moments before states (their bodies through p, its pair mean and the sums already
+  // differentiated), then each bond's force state. pdgen::diff's derivatives, interpreted.
+  std::vector<double> sensitivity(int p) const {
+    const int d = f_.dim;
+    std::vector<std::pair<pdgen::Expr, double>> moving{{law_.params()[static_cast<std::size_t>(p)], 1.0}};
+    for (const pdgen::PairParamDef& q : law_.pair_params())
+      if (q.param == p) moving.push_back({q.symbol, 1.0});
+    const auto along = [&](const pdgen::Expr& e, const Values& v) {
+      double total = 0;
+      for (const auto& [sym, rate] : moving) total += pdgen::evaluate(pdgen::diff(e, sym), v) * rate;
+      return total;
+    };
+    int top = 0;
+    for (const pdgen::SumDef& s : law_.sums()) top = std::max(top, s.level);
+    for (bool states : {false, true})
+      for (int level = 0; level <= top; ++level) {
+        std::vector<std::pair<pdgen::Expr, double>> done;
+        for (const pdgen::SumDef& s : law_.sums()) {
+          if (s.is_state != states || s.level != level) continue;
+          double total = 0;
+          for (int k = 0; k < f_.bonds(); ++k) total += along(s.body, bond_values(k));
+          done.push_back({s.symbol, total});
+        }
+        moving.insert(moving.end(), done.begin(), done.end());
+      }
+    std::vector<double> out(static_cast<std::size_t>(f_.dofs()), 0.0);
+    for (int k = 0; k < f_.bonds(); ++k) {
+      const Values v = bond_values(k);
+      for (int c = 0; c < d; ++c) {
+        const double dt = f_.V0 * f_.V[k] * along(law_.force_state()[c], v);
+        out[c] += dt;
+        out[(k + 1) * d + c] = -dt;
+      }
+    }
+    return out;
+  }
   double energy() const { return pdgen::evaluate(law_.energy_density(), family_); }
   std::vector<double> outputs() const {
     std::vector<double> out;
@@ -173,11 +212,12 @@ class Oracle {
 };
 
 // Element by element to 1e-12 of the vector's largest entry (the two evaluations differ only
-// in the order of their operations).
+// in the order of their operations), or of `floor` when that is larger (a column that is zero
+// up to rounding, as d forces / d G of a family at yield in perfect plasticity).
 void expect_same(const std::vector<double>& generated, const std::vector<double>& interpreted,
-                 const std::string& what) {
+                 const std::string& what, double floor = 0.0) {
   ASSERT_EQ(generated.size(), interpreted.size()) << what;
-  double scale = 0;
+  double scale = floor;
   for (const double v : interpreted) scale = std::max(scale, std::fabs(v));
   for (std::size_t i = 0; i < generated.size(); ++i) {
     ASSERT_TRUE(std::isfinite(interpreted[i])) << what << " [" << i << "]";
@@ -249,6 +289,18 @@ TEST(GeneratedVsInterpreted, EveryLawsKernelsEvaluateItsExpressions) {
         for (std::size_t i = 0; i < dy.size(); ++i)
           for (std::size_t j = 0; j < dy.size(); ++j) Mdy[i] += M[i * dy.size() + j] * dy[j];
         expect_same(Mdy, expected, "tangent (formed) times dy");
+        // The parameter sensitivities, where their contract holds (one material in the family).
+        if (f.nbr_params.empty()) {
+          const int n = f.dofs(), np = descriptor->n_params;
+          std::vector<double> dfdp(static_cast<std::size_t>(n * np));
+          variant.kernels.sensitivity(f.view(), dfdp.data());
+          double force_scale = 0;
+          for (const double v : oracle.forces()) force_scale = std::max(force_scale, std::fabs(v));
+          for (int p = 0; p < np; ++p)
+            expect_same(std::vector<double>(dfdp.begin() + p * n, dfdp.begin() + (p + 1) * n),
+                        oracle.sensitivity(p), std::string("sensitivity to ") + descriptor->param_names[p],
+                        force_scale / std::max(std::fabs(f.params[static_cast<std::size_t>(p)]), 1e-3));
+        }
         if (law.has_energy()) {
           ASSERT_NE(variant.kernels.energy, nullptr);
           expect_same({variant.kernels.energy(f.view())}, {oracle.energy()}, "energy");
@@ -265,5 +317,5 @@ TEST(GeneratedVsInterpreted, EveryLawsKernelsEvaluateItsExpressions) {
         }
       }
   }
-  EXPECT_GE(laws, 20);  // every law file's laws (31 generated laws, less any hand-written)
+  EXPECT_EQ(laws, static_cast<int>(pd::abi::all_laws().size()));  // every generated law was checked
 }

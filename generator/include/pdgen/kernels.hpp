@@ -16,6 +16,9 @@ struct LawKernelSet {
   int n_states = 0;  // scalar states the force state depends on (the tangent's s index)
   std::vector<std::string> moment_names, state_names;
   KernelProgram moments, residual, tangent, jvp;
+  // d(nodal forces)/d(material parameter i), one nodal-vector column per parameter, at fixed
+  // history: the sensitivities a gradient or a calibration needs.
+  KernelProgram sensitivity;
   FactorStructure factor_structure;  // which tangent factor entries the tangent kernel can make nonzero
   bool has_energy = false;
   KernelProgram energy;
