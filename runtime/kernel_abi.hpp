@@ -127,7 +127,8 @@ struct KernelVariant {
   EnergyKernel energy = nullptr;                // may be null
   OutputsKernel outputs = nullptr;              // may be null when n_outputs == 0
   UpdateKernel update = nullptr;                // null when the law has no history
-  OpCounts residual_ops, tangent_ops, jvp_ops, sensitivity_ops;  // per bond-loop body, as emitted
+  OpCounts residual_ops, tangent_ops, jvp_ops;  // per bond-loop body, as emitted
+  OpCounts sensitivity_ops;
 };
 
 // The bond monomials xi^b / |xi|^inverse_r_power with lowest_degree <= |b| <= highest_degree

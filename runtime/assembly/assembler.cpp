@@ -209,6 +209,45 @@ void FamilyAssembler::assemble(const double* u, double* forces, SparseMatrix* K)
   });
 }
 
+Eigen::MatrixXd FamilyAssembler::parameter_sensitivities(const double* u) const {
+  const int d = inputs_.dim(), np = law_.n_params;
+  const auto n_materials = static_cast<int>(inputs_.params.size());
+  if (!variant_.sensitivity)
+    throw std::invalid_argument("parameter sensitivities: law " + std::string(law_.name) +
+                                " has no sensitivity kernel");
+  if (pair_jump_)
+    throw std::invalid_argument("parameter sensitivities: law " + std::string(law_.name) +
+                                " reads pair means of its parameters and the body's materials differ; "
+                                "the sensitivity kernel holds for one material per family only");
+  if (surface_corrected())
+    throw std::invalid_argument(
+        "parameter sensitivities: domain.surface_correction computes its bond factors from the "
+        "material's parameters, which the sensitivities do not differentiate; run without it");
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(dofs(), static_cast<Eigen::Index>(n_materials) * np);
+  // Families of one colour share no particle, so the scatter into out needs no lock.
+  for_each_family("parameter sensitivities", [&](ThreadScratch& s, int p) -> const char* {
+    const abi::Family fam = s.gather.gather(p, u);
+    if (!has_intact_bond(fam)) return nullptr;
+    const int L = fam.n_bonds, m = (L + 1) * d;
+    thread_local std::vector<double> local;
+    local.resize(static_cast<std::size_t>(m) * np);
+    variant_.sensitivity(fam, local.data());
+    if (!all_finite(local.data(), local.size())) return "sensitivity";
+    const int material = inputs_.particles->material[static_cast<std::size_t>(p)];
+    for (int i = 0; i < np; ++i) {
+      double* column = local.data() + static_cast<std::ptrdiff_t>(i) * m;
+      if (options_.collocation) scale_neighbour_rows(*options_.collocation, *inputs_.bonds, p, 1, column);
+      double* target = out.col(static_cast<Eigen::Index>(material) * np + i).data();
+      for (int a = 0; a <= L; ++a) {
+        double* f = target + static_cast<std::ptrdiff_t>(s.gather.particle(p, a)) * d;
+        for (int c = 0; c < d; ++c) f[c] += column[a * d + c];
+      }
+    }
+    return nullptr;
+  });
+  return out;
+}
+
 void FamilyAssembler::stiffness_product(const double* u, const double* v, double* Kv) const {
   const int d = inputs_.dim();
   std::fill(Kv, Kv + dofs(), 0.0);

@@ -1,6 +1,7 @@
 // The bond-family force operator: one law over all families, each integrated over its bonds.
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -98,6 +99,15 @@ class FamilyAssembler final : public ForceOperator {
   // result once the step has converged. Throws std::runtime_error naming the particle when
   // the update gives a NaN or Inf; empty for a law without history.
   LawHistory updated_history(const double* u) const;
+  // d forces / d (material m's parameter i) at displacement u, the committed history held
+  // fixed: column m * law.n_params + i of the [dofs x materials * n_params] column-major
+  // result, from the law's sensitivity kernel on every family (each family's parameters are
+  // its center's: a family feeds the columns of its center's material), scaled and scattered
+  // as the forces are. Throws std::invalid_argument when the law has no sensitivity kernel,
+  // when it reads pair parameters across a material jump (a bond's pair mean then moves
+  // with both materials' values, which the kernel's contract does not cover), and with
+  // surface correction (its factors are computed from the parameters and not differentiated).
+  Eigen::MatrixXd parameter_sensitivities(const double* u) const;
 
   // Throws if options.matrix was false.
   const SparsityPattern& pattern() const override;

@@ -81,6 +81,54 @@ std::vector<double> law_parameters(const abi::LawDescriptor& law, const Isotropi
   return out;
 }
 
+std::vector<double> law_parameter_derivative(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
+                                             PlaneAssumption plane,
+                                             const std::map<std::string, double>& extra,
+                                             const std::string& key) {
+  std::vector<double> out(static_cast<std::size_t>(law.n_params), 0.0);
+  bool moved = false;
+  if (key != "E" && key != "nu") {
+    require(extra.count(key) > 0, "material parameter '" + key + "' is not given in the material, so it " +
+                                      "cannot be differentiated (E, nu, or a name under its parameters)");
+    for (int i = 0; i < law.n_params; ++i)
+      if (law.param_names[i] == key) out[static_cast<std::size_t>(i)] = 1.0, moved = true;
+    require(moved, "law " + std::string(law.name) + " has no parameter '" + key + "'");
+    return out;
+  }
+  // The material the law sees, (E', nu'), and d(E', nu')/d key.
+  const double E = elastic.E, nu = elastic.nu;
+  double Es = E, nus = nu, dE = key == "E" ? 1.0 : 0.0, dnu = key == "nu" ? 1.0 : 0.0;
+  if (law.dim == 2 && plane == PlaneAssumption::Stress) {  // E' = E (1 + 2nu)/(1 + nu)^2, nu' = nu/(1 + nu)
+    const double a = 1 + nu;
+    Es = E * (1 + 2 * nu) / (a * a);
+    nus = nu / a;
+    dE = key == "E" ? (1 + 2 * nu) / (a * a) : -2 * E * nu / (a * a * a);
+    dnu = key == "E" ? 0.0 : 1 / (a * a);
+  }
+  // d/dE' and d/dnu' of each derived constant, times the chain.
+  const double b = 1 + nus, c = 1 - 2 * nus;
+  const double dG = dE / (2 * b) - Es * dnu / (2 * b * b);
+  const double dK = dE / (3 * c) + 2 * Es * dnu / (3 * c * c);
+  const double dlambda = dE * nus / (b * c) + Es * dnu * (1 + 2 * nus * nus) / (b * b * c * c);
+  const std::map<std::string, double> derived{{"E", dE},
+                                              {"nu", dnu},
+                                              {"K", dK},
+                                              {"G", dG},
+                                              {"mu", dG},
+                                              {"lambda", dlambda},
+                                              {"kappa2", dlambda + dG}};
+  for (int i = 0; i < law.n_params; ++i) {
+    const std::string name = law.param_names[i];
+    if (extra.count(name)) continue;  // given directly: not moved by the elastic pair
+    if (auto d = derived.find(name); d != derived.end()) {
+      out[static_cast<std::size_t>(i)] = d->second;
+      moved = moved || d->second != 0.0;
+    }
+  }
+  require(moved, "law " + std::string(law.name) + " reads no parameter that '" + key + "' moves");
+  return out;
+}
+
 std::string parameter_range_violation(const abi::LawDescriptor& law, int index, double value) {
   const abi::ParamRange range = law.param_ranges ? law.param_ranges[index] : abi::ParamRange::any;
   const bool inside = range == abi::ParamRange::any || (range == abi::ParamRange::positive && value > 0) ||

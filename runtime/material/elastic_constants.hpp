@@ -35,6 +35,16 @@ std::vector<std::string> unused_parameters(const abi::LawDescriptor& law,
 std::vector<double> law_parameters(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
                                    PlaneAssumption plane, const std::map<std::string, double>& extra);
 
+// d law_parameters(law, elastic, plane, extra) / d key, in closed form: key "E" or "nu" moves
+// the material's elastic pair (through the plane-stress substitution when it applies) and
+// every elastic name derived from it; any other key must be in `extra` and moves only the
+// law's parameter of that name. Throws std::invalid_argument when the law reads nothing
+// the key moves (a parameter it does not have).
+std::vector<double> law_parameter_derivative(const abi::LawDescriptor& law, const IsotropicElastic& elastic,
+                                             PlaneAssumption plane,
+                                             const std::map<std::string, double>& extra,
+                                             const std::string& key);
+
 // Why `value` lies outside the range the law declares for its parameter `index`
 // (LawDescriptor::param_ranges), or empty when it lies inside.
 std::string parameter_range_violation(const abi::LawDescriptor& law, int index, double value);

@@ -38,6 +38,7 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const SolverPlan& solver_plan() const { return run_.plan; }
   const ForceOperator& assembler() const { return *model_.assembler; }
+  const Model& model() const { return model_; }
   const CriticalStretchDamage* damage() const { return model_.damage; }
   // Paper 000 eq. (48) of a displacement field (one value per particle and component)
   // against the scene's `reference`; throws std::logic_error when the scene has none.
