@@ -23,5 +23,6 @@ Command add_laws_command(CLI::App& pd);       // pd laws: the generated laws and
 Command add_check_law_command(CLI::App& pd);  // pd check-law NAME: tangent vs finite differences
 Command add_run_command(CLI::App& pd);        // pd run SCENE.yaml: solve a scene, write results
 Command add_study_command(CLI::App& pd);      // pd study STUDY.yaml: convergence and cost study
+Command add_calibrate_command(CLI::App& pd);  // pd calibrate SCENE.yaml: fit parameters to a field
 
 }  // namespace pd::cli

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   std::map<const CLI::App*, pd::cli::Command> commands;
   for (auto add : {pd::cli::add_laws_command, pd::cli::add_check_law_command, pd::cli::add_run_command,
-                   pd::cli::add_study_command}) {
+                   pd::cli::add_study_command, pd::cli::add_calibrate_command}) {
     pd::cli::Command run = add(app);
     commands[app.get_subcommands({}).back()] = std::move(run);
   }

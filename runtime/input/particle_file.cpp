@@ -12,32 +12,15 @@
 #include <set>
 #include <sstream>
 
+#include "input/csv_text.hpp"
 #include "input/particle_vtu.hpp"
 
 namespace pd {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
-// A finite double, the whole field (strtod would accept "1.5abc" and "nan").
-bool parse_number(const std::string& s, double& v) {
-  const char* end = s.data() + s.size();
-  const auto r = std::from_chars(s.data(), end, v);
-  return r.ec == std::errc() && r.ptr == end && std::isfinite(v);
-}
+using csv::parse_number;
+using csv::split;
+using csv::trim;
 
 bool is_vtu_path(const std::string& path) {
   return path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
