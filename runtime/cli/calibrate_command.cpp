@@ -26,6 +26,7 @@ struct CalibrateOptions {
   std::string scene, data, out = "out/calibration";
   std::vector<std::string> fits;
   int max_iterations = 50;
+  std::string jacobian = "exact";
 };
 
 // "KEY", "KEY=LO:HI", "MATERIAL.KEY=LO:HI"; either bound may be empty (unbounded).
@@ -91,6 +92,7 @@ int run_calibration(const CalibrateOptions& o) {
   CalibrationResult r;
   CalibrationOptions options;
   options.max_iterations = o.max_iterations;
+  if (o.jacobian == "central_differences") options.jacobian = JacobianMethod::central_differences;
   try {
     r = calibrate(scene, fits, data, options, [](const std::string& l) { fmt::print("{}\n", l); });
   } catch (const SceneError& e) {
@@ -151,6 +153,10 @@ Command add_calibrate_command(CLI::App& pd) {
   cmd->add_option("--max-iterations", options->max_iterations, "Levenberg-Marquardt iterations at most")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--jacobian", options->jacobian,
+                  "exact (the sensitivities) or central_differences (2 solves per parameter per Jacobian)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "central_differences"}));
   return [options] { return run_calibration(*options); };
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -58,95 +59,112 @@ std::vector<int> match_dofs(const Particles& particles, double h, const Measured
   return dofs;
 }
 
-// The misfit of one static solve at parameters p, and its exact Jacobian.
-class StaticMisfit final : public ceres::CostFunction {
+// CalibrationProblem to Ceres, with its exact Jacobian.
+class ExactMisfit final : public ceres::CostFunction {
  public:
-  StaticMisfit(const Scene& scene, const std::vector<FitParameter>& params, std::vector<int> dofs,
-               std::vector<double> measured, CalibrationResult& counts)
-      : scene_(scene),
-        params_(params),
-        dofs_(std::move(dofs)),
-        measured_(std::move(measured)),
-        counts_(counts) {
-    set_num_residuals(static_cast<int>(dofs_.size()));
-    mutable_parameter_block_sizes()->push_back(static_cast<int>(params_.size()));
-    for (const FitParameter& f : params_) names_.push_back(f.parameter);
+  explicit ExactMisfit(CalibrationProblem& problem) : problem_(problem) {
+    set_num_residuals(problem.residual_count());
+    mutable_parameter_block_sizes()->push_back(problem.parameter_count());
   }
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    Scene s = scene_;
-    try {
-      for (std::size_t j = 0; j < params_.size(); ++j)
-        s = with_parameter(s, params_[j].parameter, parameters[0][j]);
-    } catch (const std::invalid_argument&) {
-      return false;  // a value the material refuses (nu >= 1/2): Ceres shrinks the step
-    }
-    Simulation sim(s, [](const std::string&) {});
-    ++counts_.forward_solves;
-    if (!sim.run(false).newton.converged) return false;
-    const std::vector<double>& u = sim.displacement();
-    for (std::size_t k = 0; k < dofs_.size(); ++k)
-      residuals[k] = u[static_cast<std::size_t>(dofs_[k])] - measured_[k];
-    if (jacobians && jacobians[0]) {
-      EquilibriumSensitivity sens(sim.model(), s, names_, u);
-      const Eigen::MatrixXd dudp = sens.displacement_sensitivity();
-      counts_.linear_solves += sens.solves();
-      const std::size_t np = params_.size();
-      for (std::size_t k = 0; k < dofs_.size(); ++k)
-        for (std::size_t j = 0; j < np; ++j)
-          jacobians[0][k * np + j] = dudp(dofs_[k], static_cast<Eigen::Index>(j));
-    }
-    return true;
+  bool Evaluate(double const* const* p, double* r, double** J) const override {
+    return problem_.evaluate(p[0], r, J ? J[0] : nullptr);
   }
 
  private:
-  const Scene& scene_;
-  const std::vector<FitParameter>& params_;
-  std::vector<SceneParameter> names_;
-  std::vector<int> dofs_;
-  std::vector<double> measured_;
-  CalibrationResult& counts_;
+  CalibrationProblem& problem_;
+};
+
+// The residuals alone, for Ceres' central differences.
+struct ResidualsOnly {
+  CalibrationProblem* problem;
+  bool operator()(double const* const* p, double* r) const { return problem->evaluate(p[0], r, nullptr); }
 };
 }  // namespace
 
-CalibrationResult calibrate(const Scene& scene, const std::vector<FitParameter>& parameters,
-                            const MeasuredField& data, const CalibrationOptions& options,
-                            const std::function<void(const std::string&)>& log) {
-  if (parameters.empty()) throw std::invalid_argument("calibration: no parameter to fit");
+CalibrationProblem::CalibrationProblem(const Scene& scene, std::vector<FitParameter> parameters,
+                                       const MeasuredField& data)
+    : scene_(scene), parameters_(std::move(parameters)) {
+  if (parameters_.empty()) throw std::invalid_argument("calibration: no parameter to fit");
   if (data.dim != scene.dim)
     throw std::invalid_argument("calibration: the measured field's dimension is not the scene's");
-  CalibrationResult result;
-  result.parameters = parameters;
-  for (const FitParameter& f : parameters) {
+  for (const FitParameter& f : parameters_) {
     const double v = parameter_value(scene, f.parameter);
     if (!(f.lower <= v && v <= f.upper))
       throw std::invalid_argument(
           fmt::format("calibration: {} starts at {:g}, outside its bounds [{:g}, {:g}]", f.parameter.label(),
                       v, f.lower, f.upper));
-    result.initial.push_back(v);
+    start_.push_back(v);
+    names_.push_back(f.parameter);
   }
-  // The particles, from the scene as it is (the parameters do not move them).
-  std::vector<int> dofs;
-  {
+  {  // the particles, from the scene as it is (the parameters do not move them)
     const DiscretizedBody body(scene);
-    dofs = match_dofs(body.particles, scene.h, data);
+    dofs_ = match_dofs(body.particles, scene.h, data);
   }
-  std::vector<double> measured;
   for (int k = 0; k < data.size(); ++k)
     for (int c = 0; c < data.dim; ++c)
       if (data.measured[static_cast<std::size_t>(c)])
-        measured.push_back(data.value[static_cast<std::size_t>(k) * data.dim + c]);
-  result.residuals = static_cast<int>(dofs.size());
-  if (result.residuals < static_cast<int>(parameters.size()))
+        measured_.push_back(data.value[static_cast<std::size_t>(k) * data.dim + c]);
+  if (residual_count() < parameter_count())
     throw std::invalid_argument(fmt::format("calibration: {} measured values cannot determine {} parameters",
-                                            result.residuals, parameters.size()));
+                                            residual_count(), parameter_count()));
+}
 
+bool CalibrationProblem::evaluate(const double* p, double* r, double* J) {
+  // Ceres asks for the residuals at a trial point, then for the Jacobian at the same point
+  // once the step is accepted: the last solve is kept, so that costs no second solve.
+  if (!last_ || !std::equal(p, p + parameter_count(), last_p_.begin())) {
+    last_.reset();
+    try {
+      last_scene_ = scene_;
+      for (std::size_t j = 0; j < parameters_.size(); ++j)
+        last_scene_ = with_parameter(last_scene_, parameters_[j].parameter, p[j]);
+    } catch (const std::invalid_argument&) {
+      return false;  // a value the material refuses (nu >= 1/2): the optimiser shrinks its step
+    }
+    auto sim = std::make_unique<Simulation>(last_scene_, [](const std::string&) {});
+    ++forward_solves;
+    if (!sim->run(false).newton.converged) return false;
+    last_ = std::move(sim);
+    last_p_.assign(p, p + parameter_count());
+    last_J_.clear();
+  }
+  const std::vector<double>& u = last_->displacement();
+  for (std::size_t k = 0; k < dofs_.size(); ++k) r[k] = u[static_cast<std::size_t>(dofs_[k])] - measured_[k];
+  if (J && last_J_.empty()) {
+    EquilibriumSensitivity sens(last_->model(), last_scene_, names_, u);
+    const Eigen::MatrixXd dudp = sens.displacement_sensitivity();
+    linear_solves += sens.solves();
+    const std::size_t np = parameters_.size();
+    last_J_.resize(dofs_.size() * np);
+    for (std::size_t k = 0; k < dofs_.size(); ++k)
+      for (std::size_t j = 0; j < np; ++j) last_J_[k * np + j] = dudp(dofs_[k], static_cast<Eigen::Index>(j));
+  }
+  if (J) std::copy(last_J_.begin(), last_J_.end(), J);
+  return true;
+}
+
+CalibrationProblem::~CalibrationProblem() = default;
+
+CalibrationResult calibrate(const Scene& scene, const std::vector<FitParameter>& parameters,
+                            const MeasuredField& data, const CalibrationOptions& options,
+                            const std::function<void(const std::string&)>& log) {
+  CalibrationProblem misfit(scene, parameters, data);
+  CalibrationResult result;
+  result.parameters = parameters;
+  result.initial = misfit.start();
+  result.residuals = misfit.residual_count();
   std::vector<double> p = result.initial;
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  StaticMisfit cost(scene, parameters, dofs, measured, result);
-  problem.AddResidualBlock(&cost, nullptr, p.data());
+  ExactMisfit exact(misfit);
+  ceres::DynamicNumericDiffCostFunction<ResidualsOnly, ceres::CENTRAL> differences(
+      new ResidualsOnly{&misfit});
+  differences.AddParameterBlock(misfit.parameter_count());
+  differences.SetNumResiduals(misfit.residual_count());
+  problem.AddResidualBlock(
+      options.jacobian == JacobianMethod::exact ? static_cast<ceres::CostFunction*>(&exact) : &differences,
+      nullptr, p.data());
   for (std::size_t j = 0; j < parameters.size(); ++j) {
     if (std::isfinite(parameters[j].lower))
       problem.SetParameterLowerBound(p.data(), static_cast<int>(j), parameters[j].lower);
@@ -174,11 +192,11 @@ CalibrationResult calibrate(const Scene& scene, const std::vector<FitParameter>&
 
   // The covariance at the fit, from its exact Jacobian.
   const int m = result.residuals, n = static_cast<int>(p.size());
+  result.forward_solves = misfit.forward_solves;  // the fit's, not the covariance's below
+  result.linear_solves = misfit.linear_solves;
   std::vector<double> r(static_cast<std::size_t>(m)), J(static_cast<std::size_t>(m) * n);
-  double* jac[] = {J.data()};
-  const double* params[] = {p.data()};
   result.standard_error.assign(p.size(), std::numeric_limits<double>::quiet_NaN());
-  if (cost.Evaluate(params, r.data(), jac) && m > n) {
+  if (misfit.evaluate(p.data(), r.data(), J.data()) && m > n) {
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Jm(
         J.data(), m, n);
     const double s2 = Eigen::Map<const Eigen::VectorXd>(r.data(), m).squaredNorm() / (m - n);

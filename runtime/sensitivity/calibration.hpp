@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,15 +21,56 @@
 
 namespace pd {
 
+class Simulation;
+
 struct FitParameter {
   SceneParameter parameter;
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();
 };
 
+// How the Levenberg-Marquardt steps get their Jacobian: exact (the sensitivities), or
+// central differences of the whole solve (Ceres' numeric differentiation: 2 solves per
+// parameter per Jacobian), the route without this toolkit's sensitivities, for comparison.
+enum class JacobianMethod { exact, central_differences };
+
 struct CalibrationOptions {
   int max_iterations = 50;
   double tolerance = 1e-12;  // Ceres' function, gradient and parameter tolerances
+  JacobianMethod jacobian = JacobianMethod::exact;
+};
+
+// The least-squares problem: the residuals u_c(x_k; p) - m_kc of one static solve at p and
+// their exact Jacobian. calibrate() hands it to Ceres; the calibration study
+// (bench/calibration_study.cpp) to other methods as well. Throws as calibrate() does.
+class CalibrationProblem {
+ public:
+  CalibrationProblem(const Scene& scene, std::vector<FitParameter> parameters, const MeasuredField& data);
+  ~CalibrationProblem();
+  CalibrationProblem(const CalibrationProblem&) = delete;
+  CalibrationProblem& operator=(const CalibrationProblem&) = delete;
+  int residual_count() const { return static_cast<int>(dofs_.size()); }
+  int parameter_count() const { return static_cast<int>(parameters_.size()); }
+  const std::vector<FitParameter>& parameters() const { return parameters_; }
+  const std::vector<double>& start() const { return start_; }
+  // r [residuals] at p; J (null: not wanted) row-major [residuals x parameters]. False when
+  // the material refuses a value (nu >= 1/2) or Newton does not converge.
+  bool evaluate(const double* p, double* r, double* J);
+  int forward_solves = 0;  // nonlinear static solves
+  int linear_solves = 0;   // sensitivity solves
+  const Scene& scene() const { return scene_; }
+
+ private:
+  const Scene& scene_;
+  std::vector<FitParameter> parameters_;
+  std::vector<SceneParameter> names_;
+  std::vector<double> start_;
+  std::vector<int> dofs_;  // the global dof of each residual
+  std::vector<double> measured_;
+  // The last solve, kept for a Jacobian asked at the same point.
+  std::unique_ptr<Simulation> last_;
+  std::vector<double> last_p_, last_J_;
+  Scene last_scene_;
 };
 
 struct CalibrationResult {
