@@ -9,6 +9,7 @@ packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev lib
           libtrilinos-sacado-dev libtrilinos-kokkos-dev libtrilinos-teuchos-dev  # Sacado: kernel_bench's forward-AD reference (Peridigm's AD); Debian's headers need Kokkos, Teuchos and mpi.h
           libopenblas0-pthread  # OpenBLAS: CHOLMOD's supernodal factorisation is 4x faster than with reference BLAS
           libceres-dev  # Ceres: the bounded Levenberg-Marquardt of pd calibrate (runtime/sensitivity/calibration.cpp)
+          libgsl-dev  # GSL: the derivative-free simplex the calibration study compares with (bench/calibration_study.cpp)
           petsc-dev openmpi-bin libopenmpi-dev libxml2-dev zlib1g-dev)  # python3-vtk9: tests/output reads every output with VTK. petsc-dev (3.18, hypre) + OpenMPI: the distributed backend (runtime/petsc/, `mpirun -n N pd run`). libxml2-dev, zlib1g-dev: .vtu point clouds (domain.particles)
 if [ "${1:-}" = "--profile" ]; then packages+=(linux-perf valgrind); fi
 missing=()
