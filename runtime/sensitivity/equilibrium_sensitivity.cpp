@@ -71,6 +71,10 @@ EquilibriumSensitivity::EquilibriumSensitivity(const Model& model, const Scene& 
          "differentiable in the parameters");
   refuse(model.dofs.tied_count() > 0, "tied dofs (a fictitious layer) are not covered");
   const FamilyAssembler& families = bond_families(*model.assembler, "parameter sensitivities");
+  refuse(!families.options().matrix,
+         "the run's solver plan is matrix-free (the body is above solver.direct_max_nonzeros, or "
+         "solver.linear: matrix_free): the sensitivities solve with the assembled tangent; give "
+         "solver.linear: cholmod or umfpack");
   refuse(static_cast<int>(u.size()) != model.assembler->dofs(), "u has the wrong size");
   // d f / d (law parameter), chained to each scene parameter.
   const Eigen::MatrixXd dfdq = families.parameter_sensitivities(u.data());

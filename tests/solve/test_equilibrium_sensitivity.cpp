@@ -181,6 +181,17 @@ TEST(EquilibriumSensitivity, RefusesWhatTheDerivationDoesNotCover) {
   }
   {
     std::string yaml = kPlate;
+    yaml.replace(yaml.find("solver: {"), 9, "solver: {linear: matrix_free, ");
+    const pd::Scene matrix_free = pd::parse_scene(yaml, "matrix_free.yaml");
+    pd::Simulation sim(matrix_free, [](const std::string&) {});
+    sim.run(false);
+    EXPECT_THROW(
+        pd::EquilibriumSensitivity(sim.model(), matrix_free, {pd::parse_scene_parameter(matrix_free, "E")},
+                                   sim.displacement()),
+        std::invalid_argument);
+  }
+  {
+    std::string yaml = kPlate;
     yaml.replace(yaml.find("silling_plane_strain"), 20, "elastic_plastic_plane_strain");
     yaml.replace(yaml.find("plane: stress}"), 14, "plane: strain, parameters: {sigma_y: 1.0}}");
     const pd::Scene plastic = pd::parse_scene(yaml, "plastic.yaml");
