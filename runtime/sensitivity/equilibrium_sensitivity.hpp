@@ -30,8 +30,8 @@ struct SceneParameter {
   std::string label() const { return material + "." + key; }
 };
 
-// "name.key", or "key" for the body's material (the scene's first). Throws SceneError-free
-// std::invalid_argument naming `text` when the material does not exist.
+// "name.key", or "key" for the body's material (the scene's first). Throws
+// std::invalid_argument naming the material when the scene has none of that name.
 SceneParameter parse_scene_parameter(const Scene& scene, const std::string& text);
 
 // The value of a scene parameter, and a copy of the scene with it set (E or nu rebuild the
