@@ -23,6 +23,7 @@ struct Variant {
   double lo = 0, hi = 1;  // the square
   double layer = 1;       // Dirichlet layer in horizons
   bool outside = false;   // the layer as a collar outside the square
+  bool whole = false;     // the layer inside, its families whole (whole_layer_families)
 };
 }  // namespace
 
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
                                       {"[0,2pi]^2", 1, 0, 2 * M_PI},
                                       {"layer 2 delta", 1, 0, 1, 2},
                                       {"collar outside", 1, 0, 1, 1, true},
+                                      {"whole layer fam.", 1, 0, 1, 1, false, true},
+                                      {"k=pi, whole layer", M_PI, 0, 1, 1, false, true},
                                       {"k=pi, outside", M_PI, 0, 1, 1, true},
                                       {"k=4", 4},
                                       {"k=4, outside", 4, 0, 1, 1, true},
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
         s.lo = v.lo, s.hi = v.hi;
         s.layer_horizons = v.layer;
         s.collar_outside = v.outside;
+        s.whole_layer_families = v.whole;
         s.lambda = c == 0 ? 0.5 : inc[0];
         s.mu = c == 0 ? 0.5 : inc[1];
         const pd::ManufacturedResult r = pd::solve_manufactured(pd::paper001_u2_wavenumber(v.k), s);

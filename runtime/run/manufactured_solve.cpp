@@ -34,6 +34,28 @@ Particles square_cloud(const ManufacturedSetup& s, double collar) {
   return discretize(scene);
 }
 
+// Distance of a point from the boundary of the square (negative in an outside collar).
+double depth_in_square(const ManufacturedSetup& s, const double* x) {
+  return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]});
+}
+
+// The square's own cloud (the one square_cloud(s, 0) makes, the same perturbed
+// positions) and around it `collar` more rows, perturbed as the lattice of the larger
+// square perturbs them: the square's particles do not move when the collar is added.
+Particles square_cloud_with_collar(const ManufacturedSetup& s, double collar) {
+  Particles P = square_cloud(s, 0);
+  ManufacturedSetup lattice = s;
+  lattice.perturbation = 0;
+  const Particles grid = square_cloud(lattice, collar), perturbed = square_cloud(s, collar);
+  for (int p = 0; p < grid.size(); ++p) {
+    if (depth_in_square(s, grid.position(p)) > 0) continue;  // a lattice site of the square
+    for (int c = 0; c < 2; ++c) P.x.push_back(perturbed.position(p)[c]);
+    P.volume.push_back(perturbed.volume[p]);
+    P.material.push_back(perturbed.material[p]);
+  }
+  return P;
+}
+
 // The families whose forces reach a solved particle: the solved ones and their neighbours.
 std::vector<char> families_reaching(const Bonds& bonds, const std::vector<char>& solved) {
   std::vector<char> needed = solved;
@@ -95,11 +117,6 @@ std::vector<double> law_parameters(const abi::LawDescriptor& law, double lambda,
   std::vector<double> v(2);
   for (int i = 0; i < 2; ++i) v[i] = std::string(law.param_names[i]) == "lambda" ? lambda : mu;
   return v;
-}
-
-// Distance of a point from the boundary of the square (negative in an outside collar).
-double depth_in_square(const ManufacturedSetup& s, const double* x) {
-  return std::min({x[0] - s.lo, s.hi - x[0], x[1] - s.lo, s.hi - x[1]});
 }
 
 // The particles inside the inclusion take material 1, the others 0 (none without an inclusion).
@@ -241,9 +258,11 @@ ManufacturedResult solve_manufactured(const ManufacturedField& field, const Manu
   if (s.inclusion_radius > 0) params.push_back(law_parameters(*law, s.inclusion_lambda, s.inclusion_mu));
 
   const double h = (s.hi - s.lo) / s.n, delta = s.horizon_ratio * h;
-  const double collar = s.collar_outside ? std::ceil(s.layer_horizons * delta / h - 1e-9) * h : 0;
+  const bool add_collar = s.collar_outside || s.whole_layer_families;
+  const double collar = add_collar ? std::ceil(s.layer_horizons * delta / h - 1e-9) * h : 0;
   const double layer = s.collar_outside ? 0 : s.layer_horizons * delta;
-  Particles P = square_cloud(s, collar);
+  Particles P =
+      s.collar_outside || !add_collar ? square_cloud(s, collar) : square_cloud_with_collar(s, collar);
   mark_inclusion(P, s);
   Bonds B = find_bonds(P, delta, influence->weight);
   const int n = P.size();

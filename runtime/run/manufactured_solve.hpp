@@ -24,6 +24,13 @@ struct ManufacturedSetup {
   // around the boundary of Omega", read as inside); true: a collar of ceil(layer / h)
   // lattice rows is added outside the square and every particle of the square is solved.
   bool collar_outside = false;
+  // With the layer inside (collar_outside false): also add the collar outside, so that the
+  // layer's families are whole balls. The solved particles are the same as without it;
+  // what changes is the layer's own families -- their OBQ weights and the dilatation
+  // theta they give, which enters the solved particles' LPS forces -- computed over a
+  // whole neighbourhood instead of one cut by the square's edge. A test of what the cut
+  // layer families cost (docs/paper001.md, Table 1).
+  bool whole_layer_families = false;
   double lambda = 0.5, mu = 0.5;
   std::string law = "lps_plane_strain";  // takes (lambda, mu)
   std::string influence = "inv";         // K = 1/r up to a constant (the law divides by m)
