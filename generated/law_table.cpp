@@ -45,12 +45,13 @@ std::span<const LawDescriptor> all_laws() {
       pd::generated::oterkus_plane_strain_descriptor(),
       pd::generated::oterkus_3d_descriptor(),
       pd::generated::oterkus_paper_d_plane_strain_descriptor(),
+      pd::generated::oterkus_continuum_plane_strain_descriptor(),
       pd::generated::silling_plane_strain_descriptor(),
       pd::generated::silling_3d_descriptor(),
       pd::generated::viscoelastic_plane_strain_descriptor(),
       pd::generated::viscoelastic_3d_descriptor(),
   };
-  return std::span<const LawDescriptor>(table, 31);
+  return std::span<const LawDescriptor>(table, 32);
 }
 
 std::span<const InfluenceDescriptor> all_influences() {

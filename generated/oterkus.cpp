@@ -3535,4 +3535,1020 @@ pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor() {
   return d;
 }
 
+// oterkus_continuum_plane_strain_damaged_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_continuum_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// oterkus_continuum_plane_strain_damaged_residual: per bond 8 add, 27 mul, 4 div, 2 call; per family 1 add, 13 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p5 = 2.0 * V0;
+  const double p6 = p0 * p0;
+  const double p7 = 0.477464829275686 * s_theta * (P_kappa2 - 2.0 * P_G) * (p6 * p0);
+  const double p8 = 2.5464790894703255 * P_G * (p6 * p6);
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b11 = 1.0 / b10;
+    const double b12 = p5 * (p7 * (Y_0 * xi_0 + Y_1 * xi_1) * b11 * (1.0 / b9) + p8 * (b10 - b9)) * b11 * sf * V * alpha;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b13;
+    lane1[lane] += b13;
+    forces[(k + 1) * 2 + 1] = -b14;
+    lane2[lane] += b14;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// oterkus_continuum_plane_strain_damaged_tangent: per bond 25 add, 98 mul, 5 div, 2 call; per family 1 add, 15 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p5 = 2.0 * V0;
+  const double p6 = P_kappa2 - 2.0 * P_G;
+  const double p7 = p0 * p0;
+  const double p8 = p7 * p0;
+  const double p9 = 0.477464829275686 * s_theta * p6 * p8;
+  const double p10 = 2.5464790894703255 * P_G * (p7 * p7);
+  const double p11 = 0.954929658551372 * p6 * p8;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b14 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b15 = p9 * b14;
+    const double b16 = 1.0 / b13;
+    const double b17 = 1.0 / b12;
+    const double b18 = b13 - b12;
+    const double b19 = b15 * b16 * b17 + p10 * b18;
+    const double b20 = p5 * b19 * b16 * sf * V * alpha;
+    const double b21 = b20 * Y_0;
+    const double b22 = b20 * Y_1;
+    const double b23 = 2.0 * b19;
+    const double b24 = b23 * b16 * sf * alpha;
+    const double b25 = p9 * b16 * b17;
+    const double b26 = p10 * b16;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b27 + b28);
+    const double b30 = b29 * b16;
+    const double b31 = b15 * b30 * b17;
+    const double b32 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b31 * Y_0) * b16 * sf * alpha;
+    const double b33 = b23 * b30 * sf * alpha;
+    const double b34 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b31 * Y_1) * b16 * sf * alpha;
+    const double b35 = b33 * Y_1 * Y_0;
+    const double b36 = p1 * b14;
+    const double b37 = b36 * b29 * b17 * sd * V * alpha;
+    const double b38 = p1 * b18 * b16 * b17 * sd * V * alpha;
+    const double b39 = b36 * b18 * b30 * b17 * sd * V * alpha;
+    const double b40 = p11 * b14 * b29 * b17 * sf * alpha;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b21;
+    lane1[lane] += b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b22;
+    lane2[lane] += b22;
+    factors.direct[k * 4 + 0] = b24 + b32 * Y_0 - b33 * b27;
+    factors.direct[k * 4 + 1] = b34 * Y_0 - b35;
+    factors.direct[k * 4 + 2] = b32 * Y_1 - b35;
+    factors.direct[k * 4 + 3] = b24 + b34 * Y_1 - b33 * b28;
+    factors.right[(k * 1 + 0) * 2 + 0] = b37 * Y_0 + b38 * xi_0 - b39 * Y_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b37 * Y_1 + b38 * xi_1 - b39 * Y_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b40 * Y_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b40 * Y_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// oterkus_continuum_plane_strain_damaged_jvp: per bond 30 add, 100 mul, 6 div, 2 call; per family 1 add, 15 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b2 = p1 * (Y_0 * xi_0 + Y_1 * xi_1);
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b4 = 1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1;
+    const double b5 = std::sqrt(b4);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b5;
+    const double b6 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b6;
+    const double b7 = b5 - b6;
+    const double b8 = b2 * b7;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b6;
+    const double b11 = 1.0 / b4;
+    const double b12 = b2 * b11 * b10 * sd * V * alpha;
+    const double b13 = p1 * b7 * b9 * b10 * sd * V * alpha;
+    const double b14 = b8 * (b11 * b9) * b10 * sd * V * alpha;
+    lane0[lane] += b8 * b9 * b10 * sd * V * alpha;
+    lane1[lane] += dY_0 * (b12 * Y_0 + b13 * xi_0 - b14 * Y_0) + dY_1 * (b12 * Y_1 + b13 * xi_1 - b14 * Y_1);
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p15 = P_kappa2 - 2.0 * P_G;
+  const double p16 = p0 * p0;
+  const double p17 = p16 * p0;
+  const double p18 = 0.477464829275686 * s_theta * p15 * p17;
+  const double p19 = 2.5464790894703255 * P_G * (p16 * p16);
+  const double p20 = 0.954929658551372 * ds_theta * p15 * p17;
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b22 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double alpha = fam.alpha[k];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double V = fam.V[k];
+    const double b23 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b24 = p18 * b23;
+    const double b25 = 1.0 / b22;
+    const double b26 = 1.0 / b21;
+    const double b27 = 2.0 * (b24 * b25 * b26 + p19 * (b22 - b21));
+    const double b28 = b27 * b25 * sf * alpha;
+    const double b29 = p18 * b25 * b26;
+    const double b30 = p19 * b25;
+    const double b31 = Y_0 * Y_0;
+    const double b32 = Y_1 * Y_1;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b31 + b32);
+    const double b34 = b33 * b25;
+    const double b35 = b24 * b34 * b26;
+    const double b36 = 2.0 * (b29 * xi_0 + b30 * Y_0 - b35 * Y_0) * b25 * sf * alpha;
+    const double b37 = b27 * b34 * sf * alpha;
+    const double b38 = 2.0 * (b29 * xi_1 + b30 * Y_1 - b35 * Y_1) * b25 * sf * alpha;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = p20 * b23 * b33 * b26 * sf * alpha;
+    const double b41 = V0 * (dY_0 * (b28 + b36 * Y_0 - b37 * b31) + dY_1 * (b38 * Y_0 - b39) + b40 * Y_0) * V;
+    const double b42 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b28 + b38 * Y_1 - b37 * b32) + b40 * Y_1) * V;
+    df[(k + 1) * 2 + 0] = -b41;
+    lane2[lane] += b41;
+    df[(k + 1) * 2 + 1] = -b42;
+    lane3[lane] += b42;
+    }
+  }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// oterkus_continuum_plane_strain_damaged_sensitivity: per bond 11 add, 40 mul, 5 div, 2 call; per family 0 add, 11 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p5 = p0 * p0;
+  const double p6 = 0.954929658551372 * s_theta * (p5 * p0);
+  const double p7 = p6 * V0;
+  const double p8 = 2.0 * V0;
+  const double p9 = 2.5464790894703255 * (p5 * p5);
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b13 = 1.0 / b10;
+    const double b14 = p7 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b13 * sf * V * alpha;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = 1.0 / b11;
+    const double b18 = p8 * (p9 * (b11 - b10) - p6 * b12 * b17 * b13) * b17 * sf * V * alpha;
+    const double b19 = b18 * Y_0;
+    const double b20 = b18 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b19;
+    lane3[lane] += b19;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b20;
+    lane4[lane] += b20;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
+// oterkus_continuum_plane_strain_damaged_outputs: per bond 5 add, 14 mul, 2 div, 2 call; per family 0 add, 3 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double alpha = fam.alpha[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V * alpha;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// oterkus_continuum_plane_strain_damaged_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_continuum_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+// oterkus_continuum_plane_strain_intact_moments: per bond 0 add, 0 mul, 0 div, 0 call; per family 0 add, 0 mul, 0 div, 0 call
+void oterkus_continuum_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments) {
+  static_cast<void>(fam);
+  static_cast<void>(moments);
+}
+
+// oterkus_continuum_plane_strain_intact_residual: per bond 8 add, 25 mul, 4 div, 2 call; per family 1 add, 13 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  forces[0] = 0.0; forces[1] = 0.0; 
+  const double p5 = 2.0 * V0;
+  const double p6 = p0 * p0;
+  const double p7 = 0.477464829275686 * s_theta * (P_kappa2 - 2.0 * P_G) * (p6 * p0);
+  const double p8 = 2.5464790894703255 * P_G * (p6 * p6);
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b9 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b11 = 1.0 / b10;
+    const double b12 = p5 * (p7 * (Y_0 * xi_0 + Y_1 * xi_1) * b11 * (1.0 / b9) + p8 * (b10 - b9)) * b11 * sf * V;
+    const double b13 = b12 * Y_0;
+    const double b14 = b12 * Y_1;
+    forces[(k + 1) * 2 + 0] = -b13;
+    lane1[lane] += b13;
+    forces[(k + 1) * 2 + 1] = -b14;
+    lane2[lane] += b14;
+    }
+  }
+  forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// oterkus_continuum_plane_strain_intact_tangent: per bond 25 add, 88 mul, 5 div, 2 call; per family 1 add, 15 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  if (forces != nullptr) { forces[0] = 0.0; forces[1] = 0.0; }
+  const double p5 = 2.0 * V0;
+  const double p6 = P_kappa2 - 2.0 * P_G;
+  const double p7 = p0 * p0;
+  const double p8 = p7 * p0;
+  const double p9 = 0.477464829275686 * s_theta * p6 * p8;
+  const double p10 = 2.5464790894703255 * P_G * (p7 * p7);
+  const double p11 = 0.954929658551372 * p6 * p8;
+  double lane1[4] = {};
+  double lane2[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b12 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b13 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double b14 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b15 = p9 * b14;
+    const double b16 = 1.0 / b13;
+    const double b17 = 1.0 / b12;
+    const double b18 = b13 - b12;
+    const double b19 = b15 * b16 * b17 + p10 * b18;
+    const double b20 = p5 * b19 * b16 * sf * V;
+    const double b21 = b20 * Y_0;
+    const double b22 = b20 * Y_1;
+    const double b23 = 2.0 * b19;
+    const double b24 = b23 * b16 * sf;
+    const double b25 = p9 * b16 * b17;
+    const double b26 = p10 * b16;
+    const double b27 = Y_0 * Y_0;
+    const double b28 = Y_1 * Y_1;
+    const double b29 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b27 + b28);
+    const double b30 = b29 * b16;
+    const double b31 = b15 * b30 * b17;
+    const double b32 = 2.0 * (b25 * xi_0 + b26 * Y_0 - b31 * Y_0) * b16 * sf;
+    const double b33 = b23 * b30 * sf;
+    const double b34 = 2.0 * (b25 * xi_1 + b26 * Y_1 - b31 * Y_1) * b16 * sf;
+    const double b35 = b33 * Y_1 * Y_0;
+    const double b36 = p1 * b14;
+    const double b37 = b36 * b29 * b17 * sd * V;
+    const double b38 = p1 * b18 * b16 * b17 * sd * V;
+    const double b39 = b36 * b18 * b30 * b17 * sd * V;
+    const double b40 = p11 * b14 * b29 * b17 * sf;
+    if (forces != nullptr) forces[(k + 1) * 2 + 0] = -b21;
+    lane1[lane] += b21;
+    if (forces != nullptr) forces[(k + 1) * 2 + 1] = -b22;
+    lane2[lane] += b22;
+    factors.direct[k * 4 + 0] = b24 + b32 * Y_0 - b33 * b27;
+    factors.direct[k * 4 + 1] = b34 * Y_0 - b35;
+    factors.direct[k * 4 + 2] = b32 * Y_1 - b35;
+    factors.direct[k * 4 + 3] = b24 + b34 * Y_1 - b33 * b28;
+    factors.right[(k * 1 + 0) * 2 + 0] = b37 * Y_0 + b38 * xi_0 - b39 * Y_0;
+    factors.right[(k * 1 + 0) * 2 + 1] = b37 * Y_1 + b38 * xi_1 - b39 * Y_1;
+    factors.left[(k * 1 + 0) * 2 + 0] = b40 * Y_0;
+    factors.left[(k * 1 + 0) * 2 + 1] = b40 * Y_1;
+    }
+  }
+  if (forces != nullptr) forces[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  if (forces != nullptr) forces[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+}
+
+// oterkus_continuum_plane_strain_intact_jvp: per bond 30 add, 91 mul, 6 div, 2 call; per family 1 add, 15 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  const double P_kappa2 = fam.params[0];
+  const double P_G = fam.params[1];
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  double ds_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  double lane1[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double b2 = p1 * (Y_0 * xi_0 + Y_1 * xi_1);
+    const double b3 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b4 = 1e-16 * b3 + Y_0 * Y_0 + Y_1 * Y_1;
+    const double b5 = std::sqrt(b4);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b5;
+    const double b6 = std::sqrt(b3);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b6;
+    const double b7 = b5 - b6;
+    const double b8 = b2 * b7;
+    const double b9 = 1.0 / b5;
+    const double b10 = 1.0 / b6;
+    const double b11 = 1.0 / b4;
+    const double b12 = b2 * b11 * b10 * sd * V;
+    const double b13 = p1 * b7 * b9 * b10 * sd * V;
+    const double b14 = b8 * (b11 * b9) * b10 * sd * V;
+    lane0[lane] += b8 * b9 * b10 * sd * V;
+    lane1[lane] += dY_0 * (b12 * Y_0 + b13 * xi_0 - b14 * Y_0) + dY_1 * (b12 * Y_1 + b13 * xi_1 - b14 * Y_1);
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  ds_theta += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  df[0] = 0.0; df[1] = 0.0; 
+  const double p15 = P_kappa2 - 2.0 * P_G;
+  const double p16 = p0 * p0;
+  const double p17 = p16 * p0;
+  const double p18 = 0.477464829275686 * s_theta * p15 * p17;
+  const double p19 = 2.5464790894703255 * P_G * (p16 * p16);
+  const double p20 = 0.954929658551372 * ds_theta * p15 * p17;
+  double lane2[4] = {};
+  double lane3[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b21 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b22 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double dY_0 = dy[(k + 1) * 2 + 0] - dy[0];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double dY_1 = dy[(k + 1) * 2 + 1] - dy[1];
+    const double V = fam.V[k];
+    const double b23 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b24 = p18 * b23;
+    const double b25 = 1.0 / b22;
+    const double b26 = 1.0 / b21;
+    const double b27 = 2.0 * (b24 * b25 * b26 + p19 * (b22 - b21));
+    const double b28 = b27 * b25 * sf;
+    const double b29 = p18 * b25 * b26;
+    const double b30 = p19 * b25;
+    const double b31 = Y_0 * Y_0;
+    const double b32 = Y_1 * Y_1;
+    const double b33 = 1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + b31 + b32);
+    const double b34 = b33 * b25;
+    const double b35 = b24 * b34 * b26;
+    const double b36 = 2.0 * (b29 * xi_0 + b30 * Y_0 - b35 * Y_0) * b25 * sf;
+    const double b37 = b27 * b34 * sf;
+    const double b38 = 2.0 * (b29 * xi_1 + b30 * Y_1 - b35 * Y_1) * b25 * sf;
+    const double b39 = b37 * Y_1 * Y_0;
+    const double b40 = p20 * b23 * b33 * b26 * sf;
+    const double b41 = V0 * (dY_0 * (b28 + b36 * Y_0 - b37 * b31) + dY_1 * (b38 * Y_0 - b39) + b40 * Y_0) * V;
+    const double b42 = V0 * (dY_0 * (b36 * Y_1 - b39) + dY_1 * (b28 + b38 * Y_1 - b37 * b32) + b40 * Y_1) * V;
+    df[(k + 1) * 2 + 0] = -b41;
+    lane2[lane] += b41;
+    df[(k + 1) * 2 + 1] = -b42;
+    lane3[lane] += b42;
+    }
+  }
+  df[0] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  df[1] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+}
+
+// oterkus_continuum_plane_strain_intact_sensitivity: per bond 11 add, 37 mul, 5 div, 2 call; per family 0 add, 11 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  const double V0 = fam.V0;
+  double* const cache = fam.scratch;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    cache[static_cast<std::size_t>(k) * 2 + 1] = b3;
+    const double b4 = std::sqrt(b2);
+    cache[static_cast<std::size_t>(k) * 2 + 0] = b4;
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  dfdp[0] = 0.0; dfdp[1] = 0.0; 
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] = 0.0; (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] = 0.0; 
+  const double p5 = p0 * p0;
+  const double p6 = 0.954929658551372 * s_theta * (p5 * p0);
+  const double p7 = p6 * V0;
+  const double p8 = 2.0 * V0;
+  const double p9 = 2.5464790894703255 * (p5 * p5);
+  double lane1[4] = {};
+  double lane2[4] = {};
+  double lane3[4] = {};
+  double lane4[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double b10 = cache[static_cast<std::size_t>(k) * 2 + 0];
+    const double b11 = cache[static_cast<std::size_t>(k) * 2 + 1];
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sf = (fam.force_factor ? fam.force_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b12 = Y_0 * xi_0 + Y_1 * xi_1;
+    const double b13 = 1.0 / b10;
+    const double b14 = p7 * b12 * (1.0 / (1e-16 * (xi_0 * xi_0 + xi_1 * xi_1) + Y_0 * Y_0 + Y_1 * Y_1)) * b13 * sf * V;
+    const double b15 = b14 * Y_0;
+    const double b16 = b14 * Y_1;
+    const double b17 = 1.0 / b11;
+    const double b18 = p8 * (p9 * (b11 - b10) - p6 * b12 * b17 * b13) * b17 * sf * V;
+    const double b19 = b18 * Y_0;
+    const double b20 = b18 * Y_1;
+    dfdp[(k + 1) * 2 + 0] = -b15;
+    lane1[lane] += b15;
+    dfdp[(k + 1) * 2 + 1] = -b16;
+    lane2[lane] += b16;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 0] = -b19;
+    lane3[lane] += b19;
+    (dfdp + 1 * (fam.n_bonds + 1) * 2)[(k + 1) * 2 + 1] = -b20;
+    lane4[lane] += b20;
+    }
+  }
+  dfdp[0] += (lane1[0] + lane1[1]) + (lane1[2] + lane1[3]);
+  dfdp[1] += (lane2[0] + lane2[1]) + (lane2[2] + lane2[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[0] += (lane3[0] + lane3[1]) + (lane3[2] + lane3[3]);
+  (dfdp + 1 * (fam.n_bonds + 1) * 2)[1] += (lane4[0] + lane4[1]) + (lane4[2] + lane4[3]);
+}
+
+// oterkus_continuum_plane_strain_intact_outputs: per bond 5 add, 13 mul, 2 div, 2 call; per family 0 add, 3 mul, 1 div, 0 call
+void oterkus_continuum_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs) {
+  const int L = fam.n_bonds;
+  const double delta = fam.delta;
+  double s_theta = 0.0;
+  const double p0 = 1.0 / delta;
+  const double p1 = 0.954929658551372 * (p0 * p0 * p0);
+  double lane0[4] = {};
+  for (int k_group = 0; k_group < L; k_group += 4) {
+    const int n_lanes = L - k_group < 4 ? L - k_group : 4;
+#pragma omp simd
+    for (int lane = 0; lane < n_lanes; ++lane) {
+      const int k = k_group + lane;
+    const double Y_0 = fam.Y[k * 2 + 0];
+    const double xi_0 = fam.xi[k * 2 + 0];
+    const double Y_1 = fam.Y[k * 2 + 1];
+    const double xi_1 = fam.xi[k * 2 + 1];
+    const double sd = (fam.dilatation_factor ? fam.dilatation_factor[k] : 1.0);
+    const double V = fam.V[k];
+    const double b2 = xi_0 * xi_0 + xi_1 * xi_1;
+    const double b3 = std::sqrt(1e-16 * b2 + Y_0 * Y_0 + Y_1 * Y_1);
+    const double b4 = std::sqrt(b2);
+    lane0[lane] += p1 * (Y_0 * xi_0 + Y_1 * xi_1) * (b3 - b4) * (1.0 / b3) * (1.0 / b4) * sd * V;
+    }
+  }
+  s_theta += (lane0[0] + lane0[1]) + (lane0[2] + lane0[3]);
+  outputs[0] = s_theta;
+}
+
+// oterkus_continuum_plane_strain_intact_form: the dense local matrix from the factors; per neighbour-block entry pair (i, k) 4 multiply-adds per d x d block (4 without the structure); 0 structurally zero factor entries skipped
+void oterkus_continuum_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M) {
+  const int L = fam.n_bonds;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(L + 1) * 2;
+  const double V0 = fam.V0;
+  double rs_0_0 = 0.0;
+  double ls_0_0 = 0.0;
+  double rs_0_1 = 0.0;
+  double ls_0_1 = 0.0;
+  for (int k = 0; k < L; ++k) {
+    const double c = V0 * fam.V[k];
+    rs_0_0 += factors.right[k * 2 + 0];
+    ls_0_0 += c * factors.left[k * 2 + 0];
+    rs_0_1 += factors.right[k * 2 + 1];
+    ls_0_1 += c * factors.left[k * 2 + 1];
+  }
+  double center_0_0 = 0.0;
+  double center_0_1 = 0.0;
+  double center_1_0 = 0.0;
+  double center_1_1 = 0.0;
+  for (int i = 0; i < L; ++i) {
+    const double c = V0 * fam.V[i];
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 0) * n;
+      const double a_0 = -c * factors.left[i * 2 + 0];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 0];
+      {
+        const double v = c * (factors.direct[i * 4 + 0] + factors.left[i * 2 + 0] * rs_0_0);
+        row[0] = v;
+        center_0_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 1];
+      {
+        const double v = c * (factors.direct[i * 4 + 1] + factors.left[i * 2 + 0] * rs_0_1);
+        row[1] = v;
+        center_0_1 -= v;
+      }
+    }
+    {
+      double* __restrict row = M + (static_cast<std::ptrdiff_t>(i + 1) * 2 + 1) * n;
+      const double a_0 = -c * factors.left[i * 2 + 1];
+#pragma omp simd
+      for (int k = 0; k < L; ++k) {
+        row[2 + k * 2 + 0] = a_0 * factors.right[k * 2 + 0];
+        row[2 + k * 2 + 1] = a_0 * factors.right[k * 2 + 1];
+      }
+      row[(i + 1) * 2 + 0] -= c * factors.direct[i * 4 + 2];
+      {
+        const double v = c * (factors.direct[i * 4 + 2] + factors.left[i * 2 + 1] * rs_0_0);
+        row[0] = v;
+        center_1_0 -= v;
+      }
+      row[(i + 1) * 2 + 1] -= c * factors.direct[i * 4 + 3];
+      {
+        const double v = c * (factors.direct[i * 4 + 3] + factors.left[i * 2 + 1] * rs_0_1);
+        row[1] = v;
+        center_1_1 -= v;
+      }
+    }
+  }
+  {
+    double* __restrict row = M + 0 * n;
+    row[0] = center_0_0;
+    row[1] = center_0_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 0] + ls_0_0 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 1] + ls_0_0 * factors.right[k * 2 + 1];
+    }
+  }
+  {
+    double* __restrict row = M + 1 * n;
+    row[0] = center_1_0;
+    row[1] = center_1_1;
+#pragma omp simd
+    for (int k = 0; k < L; ++k) {
+      const double c = V0 * fam.V[k];
+      row[(k + 1) * 2 + 0] = c * factors.direct[k * 4 + 2] + ls_0_1 * factors.right[k * 2 + 0];
+      row[(k + 1) * 2 + 1] = c * factors.direct[k * 4 + 3] + ls_0_1 * factors.right[k * 2 + 1];
+    }
+  }
+}
+
+pd::abi::LawDescriptor oterkus_continuum_plane_strain_descriptor() {
+  static const char* const params[] = {"kappa2", "G", nullptr};
+  static const double test_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), 0.0};
+  static const pd::abi::ParamRange ranges[] = {pd::abi::ParamRange::any, pd::abi::ParamRange::any, pd::abi::ParamRange::any};
+  static const char* const history_names[] = {nullptr};
+  static const double history_initial[] = {0.0};
+  static const char* const particle_history_names[] = {nullptr};
+  static const double particle_history_initial[] = {0.0};
+  static const char* const outputs[] = {"dilatation", nullptr};
+  pd::abi::LawDescriptor d;
+  d.name = "oterkus_continuum_plane_strain";
+  d.summary = "Oterkus dilatation law, plane strain, with paper 003's continuum constants for w = 1 (d = 3/(pi delta^3), b = 8G/(pi delta^4), a = (kappa2 - 2G)/2; the scene's influence is not read); params kappa2, G";
+  d.dim = 2;
+  d.n_params = 2;
+  d.param_names = params;
+  d.param_test_values = test_values;
+  d.param_ranges = ranges;
+  d.n_history = 0;
+  d.history_names = history_names;
+  d.history_initial = history_initial;
+  d.n_particle_history = 0;
+  d.particle_history_names = particle_history_names;
+  d.particle_history_initial = particle_history_initial;
+  d.n_outputs = 1;
+  d.output_names = outputs;
+  d.balances_angular_momentum = true;
+  d.has_dilatation_sum = true;
+  d.ignores_influence = true;
+  static const pd::abi::MonomialGroup reproducing_groups[] = {{3, 4, 2}, {1, 2, 1}, };
+  d.n_reproducing_groups = 2;
+  d.reproducing_groups = reproducing_groups;
+  static const pd::abi::RadialTerm kernel_terms[] = {{1.0, 0}, };
+  d.n_kernel_terms = 1;
+  d.kernel_terms = kernel_terms;
+  d.kernel_description = "constant influence w = 1";
+  d.scratch_per_bond = 2;
+  d.n_moments = 0;
+  d.n_states = 1;
+  d.damaged.moments = &oterkus_continuum_plane_strain_damaged_moments;
+  d.damaged.residual = &oterkus_continuum_plane_strain_damaged_residual;
+  d.damaged.residual_ops = {8, 27, 4, 2};
+  d.damaged.tangent = &oterkus_continuum_plane_strain_damaged_tangent;
+  d.damaged.tangent_ops = {25, 98, 5, 2};
+  d.damaged.jvp = &oterkus_continuum_plane_strain_damaged_jvp;
+  d.damaged.jvp_ops = {30, 100, 6, 2};
+  d.damaged.sensitivity = &oterkus_continuum_plane_strain_damaged_sensitivity;
+  d.damaged.sensitivity_ops = {11, 40, 5, 2};
+  d.damaged.outputs = &oterkus_continuum_plane_strain_damaged_outputs;
+  d.damaged.form = &oterkus_continuum_plane_strain_damaged_form;
+  d.intact.moments = &oterkus_continuum_plane_strain_intact_moments;
+  d.intact.residual = &oterkus_continuum_plane_strain_intact_residual;
+  d.intact.residual_ops = {8, 25, 4, 2};
+  d.intact.tangent = &oterkus_continuum_plane_strain_intact_tangent;
+  d.intact.tangent_ops = {25, 88, 5, 2};
+  d.intact.jvp = &oterkus_continuum_plane_strain_intact_jvp;
+  d.intact.jvp_ops = {30, 91, 6, 2};
+  d.intact.sensitivity = &oterkus_continuum_plane_strain_intact_sensitivity;
+  d.intact.sensitivity_ops = {11, 37, 5, 2};
+  d.intact.outputs = &oterkus_continuum_plane_strain_intact_outputs;
+  d.intact.form = &oterkus_continuum_plane_strain_intact_form;
+  return d;
+}
+
 }  // namespace pd::generated

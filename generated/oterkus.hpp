@@ -50,5 +50,20 @@ void oterkus_paper_d_plane_strain_intact_sensitivity(const pd::abi::Family& fam,
 void oterkus_paper_d_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
 void oterkus_paper_d_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
 pd::abi::LawDescriptor oterkus_paper_d_plane_strain_descriptor();
+void oterkus_continuum_plane_strain_damaged_moments(const pd::abi::Family& fam, double* moments);
+void oterkus_continuum_plane_strain_damaged_residual(const pd::abi::Family& fam, double* forces);
+void oterkus_continuum_plane_strain_damaged_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
+void oterkus_continuum_plane_strain_damaged_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void oterkus_continuum_plane_strain_damaged_sensitivity(const pd::abi::Family& fam, double* dfdp);
+void oterkus_continuum_plane_strain_damaged_outputs(const pd::abi::Family& fam, double* outputs);
+void oterkus_continuum_plane_strain_damaged_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
+void oterkus_continuum_plane_strain_intact_moments(const pd::abi::Family& fam, double* moments);
+void oterkus_continuum_plane_strain_intact_residual(const pd::abi::Family& fam, double* forces);
+void oterkus_continuum_plane_strain_intact_tangent(const pd::abi::Family& fam, double* forces, const pd::abi::TangentFactors& factors);
+void oterkus_continuum_plane_strain_intact_jvp(const pd::abi::Family& fam, const double* dy, double* df);
+void oterkus_continuum_plane_strain_intact_sensitivity(const pd::abi::Family& fam, double* dfdp);
+void oterkus_continuum_plane_strain_intact_outputs(const pd::abi::Family& fam, double* outputs);
+void oterkus_continuum_plane_strain_intact_form(const pd::abi::Family& fam, const pd::abi::TangentFactors& factors, double* M);
+pd::abi::LawDescriptor oterkus_continuum_plane_strain_descriptor();
 
 }  // namespace pd::generated

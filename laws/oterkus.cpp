@@ -17,6 +17,8 @@
 // shear gives the same b = G / (2 sum w a xi_1^2 xi_2^2/|xi|^2 V); W = 9 K s^2 / 2 under
 // isotropic stretch gives a = (9 K / 2 - b sum w a |xi|^2 V) / 9. On a full ball with a
 // constant weight these are the book's constants (sum xi_1^2 xi_2^2/|xi|^2 = m2 / 15).
+#include <cmath>
+
 #include "pdgen/dsl.hpp"
 
 using namespace pdgen;
@@ -71,4 +73,35 @@ PDGEN_LAW(oterkus_paper_d_plane_strain) {
       "Oterkus law with d = 2 / sum w a |xi|^2 V (paper 000 section 3's reading of eq. 12; a study variant, "
       "not dimensionally consistent); params kappa2, G",
       true);
+}
+
+// Paper 003's OSB law with its continuum constants (Madenci & Oterkus's 2D constants for
+// the constant influence w = 1 on a whole disc of radius delta, per unit thickness):
+//   d = 2 / int |xi| dA = 3 / (pi delta^3),   b = G / (2 int xi_1^2 xi_2^2/|xi|^2 dA) = 8 G / (pi delta^4),
+//   a = (2 kappa2 - b int |xi|^2 dA) / 4 = (kappa2 - 2 G) / 2,
+// the same for every particle, instead of oterkus_plane_strain's sums over each particle's
+// own (discrete, possibly truncated) family. Inside a whole lattice family the two differ
+// by the quadrature error of the sums; near a free edge the continuum constants leave the
+// cut family softer (the surface effect the discrete sums partly correct). A study
+// variant for paper 003's horizon sweep (docs/paper003.md). The influence is fixed to
+// w = 1, as the constants assume: the scene's influence function is not read.
+PDGEN_LAW(oterkus_continuum_plane_strain) {
+  Law law(
+      "oterkus_continuum_plane_strain", 2,
+      "Oterkus dilatation law, plane strain, with paper 003's continuum constants for w = 1 "
+      "(d = 3/(pi delta^3), b = 8G/(pi delta^4), a = (kappa2 - 2G)/2; the scene's influence is not read); "
+      "params kappa2, G");
+  const Expr kappa2 = law.param("kappa2"), G = law.param("G"), delta = law.delta();
+  const Expr r = norm(law.xi()), l = law.deformed_length(), e = l - r;
+  const Expr cosine = dot(law.Y(), law.xi()) / (l * r);
+  const Expr d = 3 / (M_PI * pow(delta, 3));
+  const Expr b = 8 * G / (M_PI * pow(delta, 4));
+  const Expr a = (kappa2 - 2 * G) / 2;
+  const Expr theta = law.dilatation_sum("theta", d * law.alpha() * e * cosine * law.V());
+  law.force(2 * law.alpha() * (a * d * cosine * theta + b * e) * law.Y() / l);
+  law.claim_angular_momentum_balance();  // ordinary: t is parallel to Y
+  law.built_in_kernel("constant influence w = 1", {{1.0, 0}});
+  law.reproducing_terms(3, 4, 2);
+  law.reproducing_terms(1, 2, 1);
+  return law;
 }

@@ -26,7 +26,7 @@ def contour_around_tip(half):
 
 
 def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_2d", directory="out/paper004",
-          notch_length=NOTCH, csv=False):
+          notch_length=NOTCH, csv=False, tips=None):
     n = count_for(delta, m)
     h = L / n
     lines = [
@@ -39,7 +39,11 @@ def scene(delta, m, contours, double=False, notch=True, law="bond_based_conical_
         "materials:\n  - {name: aluminium, E: 72.0e9, nu: 0.3333333333333333, plane: stress}",
     ]
     if notch:
-        lines.append(f"cracks:\n  - segment: [[0.0, {L / 2}], [{notch_length!r}, {L / 2}]]")
+        # tips: the rule for a bond through the tip point (cut | kept); None leaves the
+        # scene's default (cut). With the tip halfway between two rows and two columns the
+        # lattice diagonals pass exactly through it, so the choice matters (docs/paper004.md).
+        tip_rule = f"\n    tips: {tips}" if tips else ""
+        lines.append(f"cracks:\n  - segment: [[0.0, {L / 2}], [{notch_length!r}, {L / 2}]]{tip_rule}")
     # one particle each: the boxes are one spacing wide, the particle at their centre
     right = f"{{box: {{min: [{L - h}, {L / 2 - h}], max: [{L}, {L / 2}]}}}}"
     left = f"{{box: {{min: [0, {L / 2 - h}], max: [{h}, {L / 2}]}}}}"

@@ -33,12 +33,12 @@ def three_contours(delta):
     return [ps.contour_around_tip(delta + 1e-9), ps.contour_around_tip(MIDDLE), ps.contour_around_tip(ps.L / 2 - delta)]
 
 
-def run_point(out, name, delta, m, contours, double=False, notch=True, law="bond_based_conical_2d"):
+def run_point(out, name, delta, m, contours, double=False, notch=True, law="bond_based_conical_2d", tips=None):
     d = os.path.join(out, name)
     os.makedirs(d, exist_ok=True)
     path = os.path.join(d, "scene.yaml")
     with open(path, "w") as f:
-        f.write(ps.scene(delta, m, contours, double=double, notch=notch, law=law, directory=d))
+        f.write(ps.scene(delta, m, contours, double=double, notch=notch, law=law, directory=d, tips=tips))
     env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
     t0 = time.time()
     p = subprocess.run(["nice", os.path.join(ROOT, "build/bin/pd"), "run", path], capture_output=True, text=True, env=env)
@@ -65,6 +65,8 @@ def main():
     ap.add_argument("--max-particles", type=int, default=40000)
     ap.add_argument("--only", default="nonotch,table2,table3,table45")
     ap.add_argument("--law", default="bond_based_conical_2d")
+    ap.add_argument("--tips", choices=["cut", "kept"], default=None,
+                    help="the crack-tip rule of every notch (default: the scene default, cut)")
     a = ap.parse_args()
     only = a.only.split(",")
     results = {"max_particles": a.max_particles, "points": [], "skipped": []}
@@ -81,7 +83,8 @@ def main():
         if n > a.max_particles:
             results["skipped"].append({"name": name, "particles": n, "paper": paper})
             return
-        r = run_point(a.out, name, delta, m, **kw)
+        r = run_point(a.out, name, delta, m, tips=a.tips, **kw)
+        r["tips"] = a.tips or "cut"
         r["paper"] = paper
         results["points"].append(r)
         print(f"{name}: J = {r['J']} (paper {paper}), {r['particles']} particles, {r['seconds']:.1f} s", flush=True)
