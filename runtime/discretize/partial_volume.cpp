@@ -1,12 +1,14 @@
-// Volume factors: the linear reduction of eq. (2.16), the exact 2D cell-disc area, and
-// the 3D cell-ball volume by adaptive integration (ai_volume.hpp).
+// Volume factors: the linear reduction of eq. (2.16), and the exact cell-horizon
+// intersection: the 2D cell-disc area here, the 3D cell-ball volume in closed form
+// (cell_ball_volume.hpp; paper 002's adaptive integration, ai_volume.hpp, is kept for
+// studies of it, not used here).
 #include "discretize/partial_volume.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "discretize/ai_volume.hpp"
+#include "discretize/cell_ball_volume.hpp"
 #include "discretize/discretization.hpp"
 
 namespace pd {
@@ -98,7 +100,7 @@ double volume_factor(Quadrature q, const double* xi, int dim, double delta, doub
     case Quadrature::PartialExact:
       if (cell_distance(xi, dim, h) >= delta) return 0.0;
       if (dim == 2) return cell_disc_area(xi[0], xi[1], delta, h) / (h * h);
-      if (dim == 3) return ai_cell_ball_volume(xi, delta, h, kAiEps).volume / (h * h * h);
+      if (dim == 3) return cell_ball_volume(xi, delta, h) / (h * h * h);
       return 1.0;
   }
   return 1.0;

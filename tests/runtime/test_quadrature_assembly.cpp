@@ -21,9 +21,7 @@ std::vector<Case> cases() {
   std::vector<Case> v;
   for (const auto& l : pd::abi::all_laws())
     for (pd::Quadrature q : {pd::Quadrature::PartialLinear, pd::Quadrature::PartialExact})
-      // 3D partial_exact runs the adaptive integration on every cut cell (tens of ms
-      // per family at EPS = 1e-4): too slow here, and its factors reach V[k] by the same path.
-      if (l.dim == 2 || q != pd::Quadrature::PartialExact) v.push_back({&l, q});
+      v.push_back({&l, q});
   return v;
 }
 std::string name(const testing::TestParamInfo<Case>& info) {
