@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_verdict.hpp"
 #include "input/particle_vtu.hpp"
 #include "input/yaml_keys.hpp"
 
@@ -25,6 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!std::isfinite(x)) std::abort();
       for (const double v : f.volume)
         if (!(v > 0) || !std::isfinite(v)) std::abort();
+      pdfuzz::accepted = true;
     } catch (const pd::SceneError&) {
     }
   }
