@@ -34,10 +34,23 @@
 //              dilatation term moves both trials alike: for Silling's and Oterkus's laws
 //              its weight (2 kappa2 - 4 G, plane strain) vanishes at Poisson ratio 1/4, and
 //              factors that are not positive throw.
+//   directions (Madenci and Oterkus's 3D recipe) one pair of factors per axis k from the
+//              uniaxial stretch eps = e_k e_k: s_d,k = theta_full / theta_i, then s_f,k
+//              matches R with the dilatation factors in place. A bond of direction n
+//              carries the ellipsoid's radius (sum_k (n_k / s_k)^2)^(-1/2) -- s_k along
+//              axis k. The summed trials above cannot see a cut family's anisotropy: for
+//              Silling's 3D law, whose constants come from the family's own m, a family cut
+//              through its centre answers the dilatation and the sum over the deviatoric
+//              basis exactly as the full one does (every factor 1, to rounding), yet at a
+//              free face under uniaxial stress its theta is 1.3x the continuum's, because
+//              the bonds in the face plane count in full. Only a trial along each axis sees
+//              that (docs/paper003.md "The 3D cube").
 // A law without a dilatation sum gets s_d = 1 and s_f from the dilatation trial (paper
-// 002's trial, so for a pairwise law s_f equals paper 002's compensation factor).
+// 002's trial, so for a pairwise law s_f equals paper 002's compensation factor); under
+// directions, from each axis' stretch.
 //
-// Per bond, as in the references, the mean of the two ends' factors. With a factor not 1
+// Per bond, as in the references, the mean of the two ends' factors (per axis under
+// directions, before the ellipsoid). With a factor not 1
 // an energy law's force is no longer the derivative of its energy (the references'
 // corrected force is not either): the assembler then reports no energy and a
 // non-symmetric stiffness. The kernels run with alpha folded to 1, so a pre-crack's cut
@@ -47,13 +60,11 @@
 #include <vector>
 
 #include "input/quadrature.hpp"
+#include "input/surface_match.hpp"
 #include "kernel_abi.hpp"
 #include "particles.hpp"
 
 namespace pd {
-
-enum class SurfaceMatch { Terms, Responses };
-const char* surface_match_name(SurfaceMatch m);
 
 struct SurfaceCorrectionInputs {
   const abi::LawDescriptor* law = nullptr;
@@ -64,8 +75,10 @@ struct SurfaceCorrectionInputs {
   SurfaceMatch match = SurfaceMatch::Terms;
 };
 
-// Per particle.
+// Per particle, [n * components]: one factor each (terms, responses) or one per axis
+// (directions: components = dim).
 struct SurfaceFactors {
+  int components = 1;
   std::vector<double> dilatation, force;
 };
 
@@ -82,7 +95,8 @@ SurfaceFactors surface_correction_factors(const Particles& p, const Bonds& b,
                                           const SurfaceCorrectionInputs& in);
 
 // Bonds::surface_dilatation (only for a law with a dilatation sum) and
-// Bonds::surface_force: per bond the mean of its two ends' factors.
+// Bonds::surface_force: per bond the mean of its two ends' factors, and with one factor
+// per axis the ellipsoid's radius along the bond.
 void apply_surface_correction(Bonds& b, const SurfaceFactors& s, bool has_dilatation_sum);
 
 }  // namespace pd

@@ -50,9 +50,9 @@ CheckpointIdentity checkpoint_identity(const Scene& scene, const Particles& part
   // The quadrature sets each bond's volume (the bonds' hash above does not see the factors).
   id["quadrature"] =
       std::string(name_of(scene.quadrature)) + (scene.compensation ? ", compensation" : "") +
-      (scene.surface_correction ? (scene.surface_match_responses ? ", surface correction (responses)"
-                                                                 : ", surface correction (terms)")
-                                : "") +
+      (scene.surface_correction
+           ? fmt::format(", surface correction ({})", surface_match_name(scene.surface_match))
+           : std::string()) +
       (scene.gauss_points > 0 ? fmt::format(", gauss points {} per axis, MLS support {:.17g} h",
                                             scene.gauss_points, scene.gauss_support)
                               : std::string());

@@ -10,15 +10,17 @@
 namespace pd {
 
 namespace {
-// domain.surface_correction's words (paper 003 eq. 19): none, or match the terms or the responses.
-enum class SurfaceCorrection { none, terms, responses };
+// domain.surface_correction's words (paper 003 eq. 19): none, or match the terms, the
+// responses or the axes' directions (input/surface_match.hpp).
+enum class SurfaceCorrection { none, terms, responses, directions };
 }  // namespace
 template <>
 struct enum_names<SurfaceCorrection> {
-  static constexpr std::array<EnumName<SurfaceCorrection>, 3> table{
+  static constexpr std::array<EnumName<SurfaceCorrection>, 4> table{
       {{SurfaceCorrection::none, "none"},
        {SurfaceCorrection::terms, "terms"},
-       {SurfaceCorrection::responses, "responses"}}};
+       {SurfaceCorrection::responses, "responses"},
+       {SurfaceCorrection::directions, "directions"}}};
 };
 
 namespace {
@@ -129,11 +131,14 @@ void read_corrections(MapReader& d, Scene& s) {
   using SC = SurfaceCorrection;
   const SC match = read_word(d.get("surface_correction"), every_value<SC>(), [](const std::string&) {
     return "surface_correction is " + std::string(name_of(SC::none)) + ", " +
-           std::string(name_of(SC::terms)) + " (the references' recipe) or " +
-           std::string(name_of(SC::responses)) + " (both trial responses matched)";
+           std::string(name_of(SC::terms)) + " (the references' recipe), " +
+           std::string(name_of(SC::responses)) + " (both trial responses matched) or " +
+           std::string(name_of(SC::directions)) + " (one factor per axis, combined by the bond's direction)";
   });
   s.surface_correction = match != SC::none;
-  s.surface_match_responses = match == SC::responses;
+  s.surface_match = match == SC::responses    ? SurfaceMatch::Responses
+                    : match == SC::directions ? SurfaceMatch::Directions
+                                              : SurfaceMatch::Terms;
   const YamlAt at = d.get("surface_correction");
   if (s.surface_correction && !quadrature_rule(s.quadrature).scales_volumes)
     at.fail(

@@ -15,6 +15,7 @@
 #include "input/quadrature.hpp"
 #include "input/region.hpp"
 #include "input/solver_spec.hpp"
+#include "input/surface_match.hpp"
 #include "input/time_function.hpp"
 #include "material/elastic_constants.hpp"
 #include "particles.hpp"
@@ -154,7 +155,7 @@ struct Scene {
   bool compensation = false;  // domain.compensation (paper 002 eq. 3.61, assembly/compensation.hpp)
   bool surface_correction =
       false;  // domain.surface_correction (paper 003 eq. 19, assembly/surface_correction.hpp)
-  bool surface_match_responses = false;  // ... : responses (else terms)
+  SurfaceMatch surface_match = SurfaceMatch::Terms;  // ... : terms, responses or directions
   // domain.gauss_points (paper 002 §3.3, discretize/gauss_points.hpp): points per axis of
   // each cell (0: off, the quadrature above) and the MLS support in units of h.
   int gauss_points = 0;

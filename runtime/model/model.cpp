@@ -67,13 +67,7 @@ void correct_surface_bonds(const Scene& scene, const DiscretizedBody& b, Bonds& 
                      ": domain.surface_correction: not with domain.blocks (the factors compare each "
                      "family with the full family of one regular lattice)");
   const SurfaceCorrectionInputs in{
-      b.law,
-      &b.params,
-      scene.delta(),
-      scene.h,
-      scene.quadrature,
-      b.influence->weight,
-      scene.surface_match_responses ? SurfaceMatch::Responses : SurfaceMatch::Terms};
+      b.law, &b.params, scene.delta(), scene.h, scene.quadrature, b.influence->weight, scene.surface_match};
   apply_surface_correction(bonds, surface_correction_factors(b.particles, bonds, in),
                            b.law->has_dilatation_sum);
 }

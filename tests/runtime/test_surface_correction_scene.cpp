@@ -29,8 +29,11 @@ TEST(SurfaceCorrectionScene, ReadsTheKeyAndRefusesWhatItCannotCorrect) {
   EXPECT_FALSE(pd::parse_scene(plate(""), "s.yaml").surface_correction);
   const pd::Scene terms = pd::parse_scene(plate("  surface_correction: terms\n"), "s.yaml");
   EXPECT_TRUE(terms.surface_correction);
-  EXPECT_FALSE(terms.surface_match_responses);
-  EXPECT_TRUE(pd::parse_scene(plate("  surface_correction: responses\n"), "s.yaml").surface_match_responses);
+  EXPECT_EQ(terms.surface_match, pd::SurfaceMatch::Terms);
+  EXPECT_EQ(pd::parse_scene(plate("  surface_correction: responses\n"), "s.yaml").surface_match,
+            pd::SurfaceMatch::Responses);
+  EXPECT_EQ(pd::parse_scene(plate("  surface_correction: directions\n"), "s.yaml").surface_match,
+            pd::SurfaceMatch::Directions);
   EXPECT_NE(error_of(plate("  surface_correction: yes\n"))
                 .find("s.yaml:5: domain.surface_correction: surface_correction is none"),
             std::string::npos)
